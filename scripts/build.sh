@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Configures and builds mpdem (Release) into build/. Usage: scripts/build.sh [extra cmake args]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+gen=()
+command -v ninja >/dev/null 2>&1 && gen=(-G Ninja)
+if [ ! -f build/CMakeCache.txt ]; then
+  cmake -S . -B build "${gen[@]}" -DCMAKE_BUILD_TYPE=Release "$@"
+fi
+cmake --build build -j "$(nproc)"

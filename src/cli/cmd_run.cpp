@@ -1,0 +1,25 @@
+#include <fmt/core.h>
+#include <omp.h>
+
+#include "cli/commands.hpp"
+#include "cli/scene_summary.hpp"
+#include "sim/simulation.hpp"
+
+namespace mpdem::cli {
+
+int run_command(const RunArgs& args) {
+  if (args.threads > 0) omp_set_num_threads(args.threads);
+  Scene scene = load_scene(args.scene);  // InputError propagates to main: exit 2, nothing written
+  warn_about_time_step(scene);
+  RunOptions opt;
+  opt.output_dir = args.output;
+  opt.progress = !args.quiet;
+  Simulation sim(scene, opt);
+  const RunSummary s = sim.run();
+  if (!args.quiet)
+    fmt::print(stderr, "{} steps, {} interaction evaluations, {} particles removed\n", s.steps, s.evaluations,
+               s.removed);
+  return 0;
+}
+
+}  // namespace mpdem::cli

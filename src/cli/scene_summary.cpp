@@ -1,0 +1,94 @@
+#include "cli/scene_summary.hpp"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "physics/time_step_estimate.hpp"
+
+namespace mpdem::cli {
+
+namespace {
+double effective_young(double E1, double nu1, double E2, double nu2) {  // (51)
+  return E1 * E2 / (E2 * (1.0 - nu1 * nu1) + E1 * (1.0 - nu2 * nu2));
+}
+}  // namespace
+
+TimeStepAdvice time_step_advice(const Scene& scene) {
+  const Particles& p = scene.particles;
+  const Barriers& b = scene.barriers;
+  TimeStepAdvice a;
+  double vmax = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) vmax = std::max(vmax, norm(p.v[i]));
+  // Impacts faster than the initial motion arise from falls; 1 m/s is a conservative floor.
+  a.reference_speed = std::max(vmax, 1.0);
+  const double inf = std::numeric_limits<double>::infinity();
+  a.rayleigh = a.hertz_pp = inf;
+  double hertz_pb = inf;
+  double stiffest_barrier = 0.0, stiffest_nu = 0.0;
+  for (std::size_t e = 0; e < b.size(); ++e)
+    if (b.young[e] > stiffest_barrier) { stiffest_barrier = b.young[e]; stiffest_nu = b.poisson[e]; }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    a.rayleigh = std::min(a.rayleigh, rayleigh_time(p.radius[i], p.density[i], p.young[i], p.poisson[i]));
+    const double Epp = effective_young(p.young[i], p.poisson[i], p.young[i], p.poisson[i]);
+    a.hertz_pp = std::min(a.hertz_pp, hertz_contact_time(0.5 * p.mass[i], Epp, 0.5 * p.radius[i], a.reference_speed));
+    if (stiffest_barrier > 0.0) {
+      const double Epb = effective_young(p.young[i], p.poisson[i], stiffest_barrier, stiffest_nu);
+      hertz_pb = std::min(hertz_pb, hertz_contact_time(p.mass[i], Epb, p.radius[i], a.reference_speed));
+    }
+  }
+  a.hertz_pb = std::isfinite(hertz_pb) ? hertz_pb : 0.0;
+  if (p.size() == 0) {
+    a.rayleigh = a.hertz_pp = 0.0;
+    return a;
+  }
+  a.recommended = std::min(0.2 * a.rayleigh, std::min(a.hertz_pp, hertz_pb) / 50.0);
+  return a;
+}
+
+void print_summary(const Scene& scene) {
+  const Particles& p = scene.particles;
+  const Barriers& b = scene.barriers;
+  const Params& prm = scene.model.params;
+  double mass = 0.0, rmin = std::numeric_limits<double>::infinity(), rmax = 0.0, q = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    mass += p.mass[i];
+    rmin = std::min(rmin, p.radius[i]);
+    rmax = std::max(rmax, p.radius[i]);
+    q += p.charge[i];
+  }
+  fmt::print("scene: {}\n", scene.file.string());
+  fmt::print("particles: {}  total mass {:.6g} kg  radius {:.4g} .. {:.4g} m  total charge {:.4g} C\n", p.size(), mass,
+             p.size() ? rmin : 0.0, rmax, q);
+  fmt::print("materials: {}\n", scene.model.materials.size());
+  for (const Material& m : scene.model.materials)
+    fmt::print("  {:<16} density {:.6g} kg/m^3  E {:.6g} Pa  nu {:.4g}\n", m.name, m.density, m.young, m.poisson);
+  fmt::print("barriers: {} triangles in {} groups\n", b.size(), b.group_names.size());
+  for (std::size_t g = 0; g < b.group_names.size(); ++g) {
+    std::size_t n = 0;
+    double area = 0.0;
+    for (std::size_t e = 0; e < b.size(); ++e)
+      if (b.group[e] == static_cast<int>(g)) { ++n; area += b.area[e]; }
+    fmt::print("  {:<16} {} triangles, area {:.6g} m^2\n", b.group_names[g], n, area);
+  }
+  fmt::print("integrator: {}  phi {}  dt {:.4g} s  duration {:.6g} s  ({:.0f} steps)\n",
+             prm.time.integrator == Integrator::Verlet ? "verlet" : "trapezoidal", prm.time.phi, prm.time.dt,
+             prm.time.duration, std::ceil(prm.time.duration / prm.time.dt));
+  const TimeStepAdvice a = time_step_advice(scene);
+  fmt::print("time step: Rayleigh time {:.4g} s; Hertz contact time at {:.3g} m/s: particle-particle {:.4g} s", a.rayleigh,
+             a.reference_speed, a.hertz_pp);
+  if (a.hertz_pb > 0.0) fmt::print(", particle-barrier {:.4g} s", a.hertz_pb);
+  fmt::print("\nrecommended dt <= {:.4g} s (min of 0.2 x Rayleigh time and contact time / 50)\n", a.recommended);
+}
+
+void warn_about_time_step(const Scene& scene) {
+  const TimeStepAdvice a = time_step_advice(scene);
+  if (a.recommended > 0.0 && scene.model.params.time.dt > a.recommended)
+    fmt::print(stderr,
+               "warning: time.dt = {:.4g} s exceeds the recommended {:.4g} s (0.2 x Rayleigh time {:.4g} s, Hertz "
+               "contact time {:.4g} s / 50); contacts may be under-resolved\n",
+               scene.model.params.time.dt, a.recommended, a.rayleigh, std::min(a.hertz_pp, a.hertz_pb > 0 ? a.hertz_pb : a.hertz_pp));
+}
+
+}  // namespace mpdem::cli

@@ -1,0 +1,147 @@
+#include "integrate/trapezoidal.hpp"
+#include "core/parallel.hpp"
+
+#include <cmath>
+
+#include "core/deterministic_sum.hpp"
+
+namespace mpdem {
+
+void TrapezoidalIntegrator::save_start(const Particles& p) {
+  const std::size_t n = p.size();
+  x0_.resize(n); v0_.resize(n); w0_.resize(n); a0_.resize(n); b0_.resize(n);
+  q0_.resize(n); T0_.resize(n); h0_.resize(n); alpha_.resize(n);
+  force0_.resize(n); torque0_.resize(n); heat0_.resize(n);
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::size_t i = 0; i < n; ++i) {
+    x0_[i] = p.x[i]; v0_[i] = p.v[i]; w0_[i] = p.w[i]; q0_[i] = p.q[i]; T0_[i] = p.T[i];
+    force0_[i] = p.force[i]; torque0_[i] = p.torque[i]; heat0_[i] = p.heat[i];
+    a0_[i] = p.force[i] / p.mass[i];
+    b0_[i] = p.torque[i] / p.inertia[i];
+    h0_[i] = p.heat[i] / (p.mass[i] * p.heat_capacity[i]);
+  }
+}
+
+void TrapezoidalIntegrator::restore_start(Particles& p) const {
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::size_t i = 0; i < n; ++i) {
+    p.x[i] = x0_[i]; p.v[i] = v0_[i]; p.w[i] = w0_[i]; p.q[i] = q0_[i]; p.T[i] = T0_[i];
+    p.force[i] = force0_[i]; p.torque[i] = torque0_[i]; p.heat[i] = heat0_[i];
+  }
+}
+
+StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& f, double t, double dt,
+                                       int max_iter) {
+  const double phi = params_.time.phi;
+  const bool rotation = params_.analysis.rotation;
+  const bool thermal = params_.analysis.thermal;
+  const std::size_t n = p.size();
+  save_start(p);
+  StepReport rep;
+
+  // End state from the end-of-step rates (134)-(138), taken from the accumulators, or from the
+  // start rates for the predictor. Returns per field sum |y_new - y_cur|^2 and |y_new - y(t)|^2.
+  auto update = [&](bool predictor) {
+    return deterministic_sums<2 * kFieldCount>(n, [&](std::size_t i, std::array<double, 2 * kFieldCount>& s) {
+      const Vec3 a1 = predictor ? a0_[i] : p.force[i] / p.mass[i];
+      const Vec3 v = v0_[i] + dt * ((1.0 - phi) * a0_[i] + phi * a1);
+      const Vec3 x = x0_[i] + dt * ((1.0 - phi) * v0_[i] + phi * v);
+      s[2 * kPosition] += norm2(x - p.x[i]);
+      s[2 * kPosition + 1] += norm2(x - x0_[i]);
+      s[2 * kVelocity] += norm2(v - p.v[i]);
+      s[2 * kVelocity + 1] += norm2(v - v0_[i]);
+      p.x[i] = x;
+      p.v[i] = v;
+      if (rotation) {
+        const Vec3 b1 = predictor ? b0_[i] : p.torque[i] / p.inertia[i];
+        const Vec3 w = w0_[i] + dt * ((1.0 - phi) * b0_[i] + phi * b1);
+        const Vec3 alpha = dt * ((1.0 - phi) * w0_[i] + phi * w);
+        s[2 * kRotation] += norm2(alpha - alpha_[i]);
+        s[2 * kRotation + 1] += norm2(alpha);
+        s[2 * kAngularVelocity] += norm2(w - p.w[i]);
+        s[2 * kAngularVelocity + 1] += norm2(w - w0_[i]);
+        p.w[i] = w;
+        alpha_[i] = alpha;
+        p.q[i] = rotate_by_increment(q0_[i], alpha);
+      }
+      if (thermal) {
+        const double h1 = predictor ? h0_[i] : p.heat[i] / (p.mass[i] * p.heat_capacity[i]);
+        const double T = T0_[i] + dt * ((1.0 - phi) * h0_[i] + phi * h1);
+        s[2 * kTemperature] += (T - p.T[i]) * (T - p.T[i]);
+        s[2 * kTemperature + 1] += (T - T0_[i]) * (T - T0_[i]);
+        p.T[i] = T;
+      }
+    });
+  };
+
+  // Predictor: the end-of-step rates are guessed equal to the start rates.
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::size_t i = 0; i < n; ++i) alpha_[i] = Vec3{};
+  update(true);
+  EvalRequest req{t + dt, dt, phi, false};
+
+  if (phi > 0.0) {
+    const ToleranceParams& tol = params_.tolerance;
+    const std::array<double, kFieldCount> tols{tol.position, tol.velocity, tol.rotation, tol.angular_velocity,
+                                               tol.temperature};
+    const std::array<double, kFieldCount> floors{tol.position_floor, tol.velocity_floor, tol.rotation_floor,
+                                                 tol.angular_velocity_floor, tol.temperature_floor};
+    const std::array<bool, kFieldCount> active{true, true, rotation, rotation, thermal};
+    const double inv_n = n > 0 ? 1.0 / static_cast<double>(n) : 0.0;
+    rep.converged = false;
+    for (int k = 1; k <= max_iter; ++k) {
+      f.evaluate(p, b, req);
+      ++rep.evaluations;
+      const auto s = update(false);
+      rep.iterations = k;
+      bool all = true;
+      double worst = -1.0;
+      for (int fld = 0; fld < kFieldCount; ++fld) {
+        if (!active[fld]) continue;
+        // eps = rms|y_K - y_K-1| / (rms|y_K - y(t)| + floor / TOL): converged when eps <= TOL.
+        const double diff = std::sqrt(s[2 * fld] * inv_n);
+        const double change = std::sqrt(s[2 * fld + 1] * inv_n);
+        const double eps = diff / (change + floors[fld] / tols[fld]);
+        if (k == 1) rep.first_error[fld] = eps;
+        rep.last_error[fld] = eps;
+        if (!(eps <= tols[fld])) all = false;
+        if (eps / tols[fld] > worst) {
+          worst = eps / tols[fld];
+          rep.worst_field = fld;
+        }
+      }
+      if (all) {
+        rep.converged = true;
+        break;
+      }
+    }
+    if (!rep.converged) {
+      // Name the particle whose worst field still changed most in the last iteration.
+      double biggest = -1.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        double c = 0.0;
+        switch (rep.worst_field) {
+          case kPosition: c = norm2(p.x[i] - x0_[i]); break;
+          case kVelocity: c = norm2(p.v[i] - v0_[i]); break;
+          case kRotation: c = norm2(alpha_[i]); break;
+          case kAngularVelocity: c = norm2(p.w[i] - w0_[i]); break;
+          default: c = (p.T[i] - T0_[i]) * (p.T[i] - T0_[i]); break;
+        }
+        if (!std::isfinite(c)) c = INFINITY;
+        if (c > biggest) {
+          biggest = c;
+          rep.worst_particle = p.id[i];
+        }
+      }
+      restore_start(p);
+      return rep;
+    }
+  }
+  req.commit = true;
+  f.evaluate(p, b, req);
+  ++rep.evaluations;
+  return rep;
+}
+
+}  // namespace mpdem

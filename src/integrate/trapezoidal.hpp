@@ -1,0 +1,39 @@
+#pragma once
+// Generalised trapezoidal rule with fixed-point iterations (physics.md section 9, thesis
+// (128)-(145)):
+//   y(t+dt) = y(t) + dt [(1-phi) r(t) + phi r(t+dt)]  for v, w, T
+//   x(t+dt) = x(t) + dt [(1-phi) v(t) + phi v(t+dt)],   alpha_D = dt [(1-phi) w(t) + phi w(t+dt)]
+// phi = 0 is explicit (one evaluation per step); phi > 0 iterates on the end-of-step rates.
+#include <vector>
+
+#include "integrate/step_report.hpp"
+#include "model/params.hpp"
+#include "sim/interactions.hpp"
+
+namespace mpdem {
+
+class TrapezoidalIntegrator {
+ public:
+  explicit TrapezoidalIntegrator(const Params& params) : params_(params) {}
+
+  // Advances the particles from t to t + dt. On entry force/torque/heat hold the rates at the
+  // current state. On success the arrays hold the accepted end state and its rates (the commit
+  // evaluation stores contact history). When the iteration does not converge within max_iter,
+  // the start state and its rates are restored and the report says converged = false.
+  StepReport step(Particles& p, Barriers& b, Interactions& f, double t, double dt, int max_iter);
+
+ private:
+  void save_start(const Particles& p);
+  void restore_start(Particles& p) const;
+
+  const Params& params_;
+  // Start-of-step state and rates [N]
+  std::vector<Vec3> x0_, v0_, w0_, a0_, b0_;   // m, m/s, rad/s, m/s^2, rad/s^2
+  std::vector<Quat> q0_;
+  std::vector<double> T0_, h0_;                // K, K/s
+  std::vector<Vec3> force0_, torque0_;         // N, N m (to restore the rates on failure)
+  std::vector<double> heat0_;                  // W
+  std::vector<Vec3> alpha_;                    // rad, current rotation increment estimate
+};
+
+}  // namespace mpdem

@@ -1,0 +1,24 @@
+#pragma once
+// Velocity Verlet (kick-drift-kick), one interaction evaluation per step - what LIGGGHTS and
+// LAMMPS use. Velocity-dependent forces (damping, Lorentz) see the half-step velocity, and the
+// tangential spring increment uses the velocity of the evaluated state (phi = 1 in (64)).
+// Temperature is advanced with explicit Euler.
+#include <vector>
+
+#include "integrate/step_report.hpp"
+#include "model/params.hpp"
+#include "sim/interactions.hpp"
+
+namespace mpdem {
+
+class VerletIntegrator {
+ public:
+  explicit VerletIntegrator(const Params& params) : params_(params) {}
+  // On entry force/torque/heat hold the rates at the current state; on exit those of the new one.
+  StepReport step(Particles& p, Barriers& b, Interactions& f, double t, double dt);
+
+ private:
+  const Params& params_;
+};
+
+}  // namespace mpdem

@@ -1,0 +1,95 @@
+// Barrier CSV reader (docs/scene.md "Barrier CSV").
+#include "io/barrier_csv.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string_view>
+#include <unordered_map>
+
+#include "io/csv_table.hpp"
+#include "io/input_error.hpp"
+
+namespace mpdem {
+
+namespace {
+
+constexpr std::array<std::string_view, 25> kColumns = {
+    "id", "x1", "y1", "z1", "x2", "y2", "z2", "x3", "y3", "z3", "group", "young", "poisson",
+    "ax", "ay", "az", "Ax", "Ay", "Az", "w1", "Bx", "By", "Bz", "w2", "temperature"};
+
+// Column index of every name in kColumns, in that order (-1 when absent).
+std::array<int, kColumns.size()> column_indices(const CsvTable& t) {
+  std::array<int, kColumns.size()> c{};
+  for (std::size_t k = 0; k < kColumns.size(); ++k) c[k] = t.column(kColumns[k]);
+  return c;
+}
+enum Col { ID, X1, Y1, Z1, X2, Y2, Z2, X3, Y3, Z3, GROUP, YOUNG, POISSON, AX, AY, AZ, AAX, AAY, AAZ, W1, BX, BY, BZ, W2,
+           TEMPERATURE };
+
+// A Vec3 from three optional columns, each falling back to its own component of `v`.
+Vec3 vec_or(const CsvTable& t, const CsvRow& row, const std::array<int, kColumns.size()>& c, int first, const Vec3& v) {
+  const auto comp = [&](int k, double fallback) { return t.missing(row, c[k]) ? fallback : t.number(row, c[k]); };
+  return {comp(first, v.x), comp(first + 1, v.y), comp(first + 2, v.z)};
+}
+
+}  // namespace
+
+void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& source, const Model& model,
+                      Barriers& out) {
+  const CsvTable t = CsvTable::read(file);
+  t.check_known(kColumns);
+  for (std::string_view req : {"x1", "y1", "z1", "x2", "y2", "z2", "x3", "y3", "z3"}) t.require(req);
+  const auto c = column_indices(t);
+
+  // Element defaults: the source's material, else the first material, else Material's defaults.
+  Material mat;
+  if (const int m = model.material_index(source.material); m >= 0) mat = model.materials[m];
+  else if (!model.materials.empty()) mat = model.materials.front();
+  const std::string default_group = source.group.empty() ? file.stem().string() : source.group;
+  const double default_temperature = source.temperature.value_or(std::numeric_limits<double>::quiet_NaN());
+
+  std::unordered_map<std::int64_t, std::size_t> seen;  // id -> line in this file (0 = earlier file)
+  std::int64_t next_id = 0;
+  for (const std::int64_t bid : out.id) {
+    seen.emplace(bid, 0);
+    next_id = std::max(next_id, bid + 1);
+  }
+
+  for (const CsvRow& row : t.rows()) {
+    std::int64_t bid = next_id;
+    if (!t.missing(row, c[ID])) {
+      bid = t.integer(row, c[ID]);
+      if (const auto it = seen.find(bid); it != seen.end())
+        t.fail(row, c[ID], "duplicate barrier id " + std::to_string(bid) +
+                               (it->second > 0 ? " (first on line " + std::to_string(it->second) + ")"
+                                               : " (already used by an earlier barrier file)"));
+    }
+    seen.emplace(bid, row.line);
+    next_id = std::max(next_id, bid + 1);
+
+    const Vec3 p1{t.number(row, c[X1]), t.number(row, c[Y1]), t.number(row, c[Z1])};
+    const Vec3 p2{t.number(row, c[X2]), t.number(row, c[Y2]), t.number(row, c[Z2])};
+    const Vec3 p3{t.number(row, c[X3]), t.number(row, c[Y3]), t.number(row, c[Z3])};
+    const std::string& group = t.missing(row, c[GROUP]) ? default_group : t.text(row, c[GROUP]);
+    const double E = t.number_or(row, c[YOUNG], mat.young, kPositive, "a Young's modulus");
+    const double nu = t.number_or(row, c[POISSON], mat.poisson, kPoissonRange, "a Poisson ratio");
+    double temp = default_temperature;
+    if (!t.missing(row, c[TEMPERATURE])) temp = t.number(row, c[TEMPERATURE], kNonNegative, "a temperature");
+
+    // Motion columns override the source's law component by component.
+    MotionLaw law = source.motion;
+    law.a = vec_or(t, row, c, AX, law.a);
+    law.A = vec_or(t, row, c, AAX, law.A);
+    law.B = vec_or(t, row, c, BX, law.B);
+    if (!t.missing(row, c[W1])) law.w1 = t.number(row, c[W1]);
+    if (!t.missing(row, c[W2])) law.w2 = t.number(row, c[W2]);
+
+    const int g = out.group_index(group);
+    if (!out.add(bid, p1, p2, p3, g, E, nu, law, source.thickness, temp))
+      throw InputError(t.file(), row.line, "", "degenerate triangle (zero area: its three vertices are collinear)");
+  }
+}
+
+}  // namespace mpdem

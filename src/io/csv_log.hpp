@@ -1,0 +1,55 @@
+#pragma once
+// CSV output for analysis: row-by-row logs (time series) and whole-file particle snapshots.
+// Numbers carry 17 significant digits so they round-trip exactly; integral values below 2^53
+// print as integers (step counts, ids, contact counts read naturally).
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "state/particles.hpp"
+
+namespace mpdem {
+
+// Appends v to out: an integer when v is integral and |v| < 2^53, else "%.17g" (locale free).
+void append_csv_number(std::string& out, double v);
+
+// A time-series log with a fixed header. Rows are buffered and appended as whole lines
+// (io/atomic_file.hpp append_complete_lines) at every flush(), when the buffer grows large,
+// and in the destructor, so a killed run keeps every flushed row intact.
+class CsvLog {
+ public:
+  enum class Open {
+    replace,  // start a new file with the header (default)
+    append,   // continue an existing file with the same header (resume); else start a new one
+  };
+
+  // Column names must be non-empty and free of ',', '"' and line breaks (std::invalid_argument).
+  // Throws std::runtime_error if the file cannot be written, or if Open::append finds a file
+  // whose header differs from `columns`.
+  CsvLog(std::filesystem::path file, std::vector<std::string> columns, Open mode = Open::replace);
+  ~CsvLog();
+  CsvLog(const CsvLog&) = delete;
+  CsvLog& operator=(const CsvLog&) = delete;
+
+  // Buffers one row; throws std::logic_error if values.size() != number of columns.
+  void row(std::span<const double> values);
+  // Writes the buffered rows to the file. Throws std::runtime_error on a write failure.
+  void flush();
+
+  const std::vector<std::string>& columns() const { return columns_; }
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  std::filesystem::path file_;
+  std::vector<std::string> columns_;
+  std::string buffer_;
+};
+
+// Writes all particles at one time as a complete CSV file, atomically. Columns:
+// time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz
+// (s, -, m, m/s, rad/s, m, -, K, C, N).
+void write_particles_csv(const std::filesystem::path& file, const Particles& particles, double time);
+
+}  // namespace mpdem

@@ -1,0 +1,118 @@
+// Particle CSV reader (docs/scene.md "Particle CSV").
+#include "io/particle_csv.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <string_view>
+#include <unordered_map>
+
+#include "io/csv_table.hpp"
+#include "io/input_error.hpp"
+
+namespace mpdem {
+
+namespace {
+
+constexpr std::array<std::string_view, 20> kColumns = {
+    "id",     "x",       "y",       "z",      "vx",          "vy",            "vz",
+    "wx",     "wy",      "wz",      "radius", "material",    "density",       "young",
+    "poisson", "charge", "temperature", "heat_capacity", "conductivity", "emissivity"};
+
+// Column indices (-1 when absent), looked up once per file.
+struct Cols {
+  int id, x, y, z, vx, vy, vz, wx, wy, wz, radius, material, density, young, poisson, charge, temperature,
+      heat_capacity, conductivity, emissivity;
+  explicit Cols(const CsvTable& t)
+      : id(t.column("id")), x(t.column("x")), y(t.column("y")), z(t.column("z")), vx(t.column("vx")),
+        vy(t.column("vy")), vz(t.column("vz")), wx(t.column("wx")), wy(t.column("wy")), wz(t.column("wz")),
+        radius(t.column("radius")), material(t.column("material")), density(t.column("density")),
+        young(t.column("young")), poisson(t.column("poisson")), charge(t.column("charge")),
+        temperature(t.column("temperature")), heat_capacity(t.column("heat_capacity")),
+        conductivity(t.column("conductivity")), emissivity(t.column("emissivity")) {}
+};
+
+// The row's material: a name, or an integer index into the scene's [[material]] list.
+int row_material(const CsvTable& t, const CsvRow& row, int col, const Model& model, int fallback) {
+  if (t.missing(row, col)) return fallback;
+  const std::string& s = t.text(row, col);
+  if (const int m = model.material_index(s); m >= 0) return m;
+  int idx = -1;
+  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), idx);
+  if (ec == std::errc() && ptr == s.data() + s.size() && idx >= 0 && idx < static_cast<int>(model.materials.size()))
+    return idx;
+  std::string known;
+  for (const Material& m : model.materials) known += (known.empty() ? "" : ", ") + m.name;
+  t.fail(row, col, "unknown material '" + s + "' (expected a material name or index; known: " + known + ")");
+}
+
+// Value of an optional numeric column, else `fallback` (velocities default to rest).
+double value_or(const CsvTable& t, const CsvRow& row, int col, double fallback) {
+  return t.missing(row, col) ? fallback : t.number(row, col);
+}
+
+}  // namespace
+
+void read_particle_csv(const std::filesystem::path& file, const Model& model, int default_material,
+                       Particles& out) {
+  const CsvTable t = CsvTable::read(file);
+  t.check_known(kColumns);
+  for (std::string_view req : {"x", "y", "z", "radius"}) t.require(req);
+  if (model.materials.empty())
+    throw InputError(t.file(), 0, "", "no [[material]] is defined, so particles have no default properties");
+  if (default_material < 0 || default_material >= static_cast<int>(model.materials.size())) default_material = 0;
+  const Cols c(t);
+
+  // Ids must be unique across all files; rows without one continue after the largest seen.
+  std::unordered_map<std::int64_t, std::size_t> seen;  // id -> line in this file (0 = earlier file)
+  std::int64_t next_id = 0;
+  for (const std::int64_t pid : out.id) {
+    seen.emplace(pid, 0);
+    next_id = std::max(next_id, pid + 1);
+  }
+
+  for (const CsvRow& row : t.rows()) {
+    const int mat = row_material(t, row, c.material, model, default_material);
+    const Material& m = model.materials[mat];
+    std::int64_t pid = next_id;
+    if (!t.missing(row, c.id)) {
+      pid = t.integer(row, c.id);
+      if (const auto it = seen.find(pid); it != seen.end())
+        t.fail(row, c.id, "duplicate particle id " + std::to_string(pid) +
+                              (it->second > 0 ? " (first on line " + std::to_string(it->second) + ")"
+                                              : " (already used by an earlier particle file)"));
+    }
+    seen.emplace(pid, row.line);
+    next_id = std::max(next_id, pid + 1);
+
+    const double r = t.number(row, c.radius, kPositive, "a radius");
+    const double rho = t.number_or(row, c.density, m.density, kPositive, "a density");
+    const double E = t.number_or(row, c.young, m.young, kPositive, "a Young's modulus");
+    const double nu = t.number_or(row, c.poisson, m.poisson, kPoissonRange, "a Poisson ratio");
+    const double cap = t.number_or(row, c.heat_capacity, m.heat_capacity, kPositive, "a heat capacity");
+    const double k = t.number_or(row, c.conductivity, m.conductivity, kNonNegative, "a conductivity");
+    const double eps = t.number_or(row, c.emissivity, m.emissivity, kUnitInterval, "an emissivity");
+    const double T = t.number_or(row, c.temperature, m.temperature, kNonNegative, "a temperature");
+    const double q = t.number_or(row, c.charge, m.charge, kAnyValue, "a charge");
+
+    const Vec3 pos{t.number(row, c.x), t.number(row, c.y), t.number(row, c.z)};
+    const Vec3 vel{value_or(t, row, c.vx, 0.0), value_or(t, row, c.vy, 0.0), value_or(t, row, c.vz, 0.0)};
+    out.add(pid, mat, r, rho, pos, vel);
+    const std::size_t i = out.size() - 1;
+    out.w[i] = {value_or(t, row, c.wx, 0.0), value_or(t, row, c.wy, 0.0), value_or(t, row, c.wz, 0.0)};
+    out.young[i] = E;
+    out.poisson[i] = nu;
+    out.charge[i] = q;
+    out.heat_capacity[i] = cap;
+    out.conductivity[i] = k;
+    out.emissivity[i] = eps;
+    out.T[i] = T;
+    out.q[i] = Quat{};
+    out.force[i] = Vec3{};
+    out.torque[i] = Vec3{};
+    out.heat[i] = 0.0;
+    out.update_mass(i);
+  }
+}
+
+}  // namespace mpdem

@@ -1,0 +1,300 @@
+// TOML scene reader: maps every table and key of the scene file (docs/scene.md) onto Params,
+// Materials and the particle/barrier sources, validating types and ranges as it goes, then
+// (load_scene) reads the CSV sources into the particle and barrier arrays.
+#include <fstream>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "io/barrier_csv.hpp"
+#include "io/input_error.hpp"
+#include "io/particle_csv.hpp"
+#include "io/toml_section.hpp"
+#include "model/scene.hpp"
+
+namespace mpdem {
+
+int Model::material_index(const std::string& name) const {
+  for (std::size_t m = 0; m < materials.size(); ++m)
+    if (materials[m].name == name) return static_cast<int>(m);
+  return -1;
+}
+
+namespace {
+
+void read_time(const TomlSection& root, TimeParams& t) {
+  const auto s = root.table("time", {"duration", "integrator", "phi", "dt", "dt_min", "dt_max", "adaptive",
+                                     "desired_iterations", "p", "max_iterations"});
+  if (!s) throw InputError(root.file(), 0, "time.duration", "missing required key (the [time] table is required)");
+  t.duration = s->require(s->number("duration", kPositive), "duration");
+  t.dt = s->require(s->number("dt", kPositive), "dt");
+  if (const auto name = s->string("integrator")) {
+    if (*name == "trapezoidal") t.integrator = Integrator::Trapezoidal;
+    else if (*name == "verlet") t.integrator = Integrator::Verlet;
+    else s->fail("integrator", "expected \"trapezoidal\" or \"verlet\", got \"" + *name + "\"");
+  }
+  s->get("phi", t.phi, kUnitInterval);
+  t.dt_min = s->number("dt_min", kPositive).value_or(t.dt / 1000.0);
+  t.dt_max = s->number("dt_max", kPositive).value_or(t.dt);
+  if (t.dt_min > t.dt_max)
+    s->fail(s->has("dt_min") ? "dt_min" : "dt_max", "expected dt_min <= dt_max, got dt_min = " + number_text(t.dt_min) +
+                                                         " > dt_max = " + number_text(t.dt_max));
+  if (t.dt < t.dt_min || t.dt > t.dt_max)
+    s->fail("dt", "expected dt within [dt_min, dt_max] = [" + number_text(t.dt_min) + ", " +
+                      number_text(t.dt_max) + "]");
+  s->get("adaptive", t.adaptive);
+  s->get("desired_iterations", t.desired_iterations, 1);
+  s->get("p", t.p, kPositive);
+  s->get("max_iterations", t.max_iterations, 1);
+}
+
+void read_tolerance(const TomlSection& root, ToleranceParams& t) {
+  const auto s = root.table("tolerance", {"position", "velocity", "rotation", "angular_velocity", "temperature"});
+  if (!s) return;
+  s->get("position", t.position, kPositive);
+  s->get("velocity", t.velocity, kPositive);
+  s->get("rotation", t.rotation, kPositive);
+  s->get("angular_velocity", t.angular_velocity, kPositive);
+  s->get("temperature", t.temperature, kPositive);
+}
+
+void read_analysis_and_fields(const TomlSection& root, Params& p) {
+  if (const auto s = root.table("analysis", {"rotation", "thermal"})) {
+    s->get("rotation", p.analysis.rotation);
+    s->get("thermal", p.analysis.thermal);
+  }
+  if (const auto s = root.table("gravity", {"vector"})) s->get("vector", p.fields.gravity);
+  if (const auto s = root.table("fields", {"electric", "magnetic"})) {
+    s->get("electric", p.fields.electric);
+    s->get("magnetic", p.fields.magnetic);
+  }
+}
+
+void read_contact_law(const TomlSection& contact, std::string_view kind, ContactLawParams& c) {
+  const auto s = contact.table(kind, {"restitution", "damping_ratio", "mu_static", "mu_dynamic", "mu_rolling",
+                                      "tangential_damping"});
+  if (!s) return;
+  c.restitution = s->number("restitution", kRestitutionRange);
+  c.damping_ratio = s->number("damping_ratio", kNonNegative);
+  if (c.restitution && c.damping_ratio)
+    s->fail("damping_ratio", "give either restitution or damping_ratio, not both");
+  s->get("mu_static", c.mu_static, kNonNegative);
+  s->get("mu_dynamic", c.mu_dynamic, kNonNegative);
+  s->get("mu_rolling", c.mu_rolling, kNonNegative);
+  s->get("tangential_damping", c.tangential_damping, kNonNegative);
+  if (c.mu_dynamic > c.mu_static)
+    s->fail(s->has("mu_dynamic") ? "mu_dynamic" : "mu_static",
+            "expected mu_dynamic <= mu_static, got mu_dynamic = " + number_text(c.mu_dynamic) +
+                (s->has("mu_dynamic") ? "" : " (default)") + " > mu_static = " + number_text(c.mu_static));
+}
+
+void read_contact_and_thermal(const TomlSection& root, Params& p) {
+  if (const auto s = root.table("contact", {"particle_particle", "particle_barrier"})) {
+    read_contact_law(*s, "particle_particle", p.contact.particle_particle);
+    read_contact_law(*s, "particle_barrier", p.contact.particle_barrier);
+  }
+  if (const auto s = root.table("thermal", {"air_temperature", "air_velocity", "environment_temperature",
+                                            "conduction", "convection", "radiation"})) {
+    s->get("air_temperature", p.thermal.air_temperature, kPositive);
+    s->get("air_velocity", p.thermal.air_velocity);
+    s->get("environment_temperature", p.thermal.environment_temperature, kPositive);
+    s->get("conduction", p.thermal.conduction);
+    s->get("convection", p.thermal.convection);
+    s->get("radiation", p.thermal.radiation);
+  }
+}
+
+// "unknown material 'x' (known: a, b)" unless `name` is a material.
+void check_material(const TomlSection& s, std::string_view k, const std::string& name, const Model& model) {
+  if (model.material_index(name) >= 0) return;
+  std::string known;
+  for (const Material& m : model.materials) known += (known.empty() ? "" : ", ") + m.name;
+  s.fail(k, "unknown material '" + name + "' (known: " + (known.empty() ? "none" : known) + ")");
+}
+
+void read_materials(const TomlSection& root, Model& model) {
+  for (const TomlSection& s : root.tables("material", {"name", "density", "young", "poisson", "conductivity",
+                                                       "heat_capacity", "emissivity", "charge", "temperature"})) {
+    Material m;
+    m.name = s.require(s.string("name"), "name");
+    if (m.name.empty()) s.fail("name", "expected a non-empty name");
+    if (model.material_index(m.name) >= 0) s.fail("name", "duplicate material name '" + m.name + "'");
+    s.get("density", m.density, kPositive);
+    s.get("young", m.young, kPositive);
+    s.get("poisson", m.poisson, kPoissonRange);
+    s.get("conductivity", m.conductivity, kNonNegative);
+    s.get("heat_capacity", m.heat_capacity, kPositive);
+    s.get("emissivity", m.emissivity, kUnitInterval);
+    s.get("charge", m.charge);
+    s.get("temperature", m.temperature, kNonNegative);
+    model.materials.push_back(m);
+  }
+}
+
+void read_near_field(const TomlSection& root, const Model& model, NearFieldParams& nf) {
+  const auto s = root.table("near_field", {"empirical", "a1", "b1", "a2", "b2", "pair", "coulomb", "permittivity",
+                                           "cutoff"});
+  if (!s) return;
+  s->get("a1", nf.a1);
+  s->get("b1", nf.b1);
+  s->get("a2", nf.a2);
+  s->get("b2", nf.b2);
+  for (const TomlSection& ps : s->tables("pair", {"material_a", "material_b", "a1", "b1", "a2", "b2"})) {
+    // A pair's coefficients default to the global ones, so it overrides only what it names.
+    NearFieldPair pair{ps.require(ps.string("material_a"), "material_a"),
+                       ps.require(ps.string("material_b"), "material_b"), nf.a1, nf.b1, nf.a2, nf.b2};
+    check_material(ps, "material_a", pair.material_a, model);
+    check_material(ps, "material_b", pair.material_b, model);
+    ps.get("a1", pair.a1);
+    ps.get("b1", pair.b1);
+    ps.get("a2", pair.a2);
+    ps.get("b2", pair.b2);
+    nf.pairs.push_back(pair);
+  }
+  // Giving coefficients switches the empirical law on unless `empirical` says otherwise.
+  nf.empirical = nf.a1 != 0.0 || nf.a2 != 0.0 || !nf.pairs.empty();
+  s->get("empirical", nf.empirical);
+  s->get("coulomb", nf.coulomb);
+  s->get("permittivity", nf.permittivity, kPositive);
+  s->get("cutoff", nf.cutoff, kNonNegative);
+  if ((nf.empirical || nf.coulomb) && nf.cutoff <= 0.0)
+    s->fail("cutoff", "expected a cutoff > 0 when the empirical or Coulomb near field is on");
+}
+
+std::filesystem::path existing_file(const TomlSection& s, std::string_view k, const std::filesystem::path& dir) {
+  const std::string name = s.require(s.string(k), k);
+  if (name.empty()) s.fail(k, "expected a file name, got an empty string");
+  const std::filesystem::path p = (dir / std::filesystem::path(name)).lexically_normal();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(p, ec)) s.fail(k, "file '" + p.string() + "' does not exist");
+  return p;
+}
+
+void read_sources(const TomlSection& root, Scene& scene) {
+  for (const TomlSection& s : root.tables("particles", {"file", "material"})) {
+    if (scene.model.materials.empty())
+      throw InputError(root.file(), s.line(), "material", "at least one [[material]] is required when particles are given");
+    ParticleSource src;
+    src.line = s.line();
+    src.file = existing_file(s, "file", scene.dir);
+    s.get("material", src.material);
+    if (!src.material.empty()) check_material(s, "material", src.material, scene.model);
+    scene.particle_sources.push_back(src);
+  }
+  for (const TomlSection& s : root.tables("barriers", {"file", "stl", "group", "material", "motion", "thickness",
+                                                       "temperature", "scale", "rotate_deg", "translate"})) {
+    BarrierSource src;
+    src.line = s.line();
+    if (s.has("file") && s.has("stl")) s.fail("stl", "give either file or stl, not both");
+    if (!s.has("file") && !s.has("stl")) s.fail("file", "missing required key (give file or stl)");
+    if (s.has("file")) {
+      src.file = existing_file(s, "file", scene.dir);
+      for (std::string_view k : {"scale", "rotate_deg", "translate"})
+        if (s.has(k)) s.fail(k, "applies to stl barriers only");
+    } else {
+      src.stl = existing_file(s, "stl", scene.dir);
+    }
+    s.get("group", src.group);
+    s.get("material", src.material);
+    if (!src.material.empty()) check_material(s, "material", src.material, scene.model);
+    if (const auto m = s.table("motion", {"a", "A", "w1", "B", "w2"})) {
+      m->get("a", src.motion.a);
+      m->get("A", src.motion.A);
+      m->get("w1", src.motion.w1);
+      m->get("B", src.motion.B);
+      m->get("w2", src.motion.w2);
+    }
+    s.get("thickness", src.thickness, kNonNegative);
+    src.temperature = s.number("temperature", kNonNegative);
+    s.get("scale", src.scale, kPositive);
+    s.get("rotate_deg", src.rotate_deg);
+    s.get("translate", src.translate);
+    scene.barrier_sources.push_back(src);
+  }
+}
+
+void read_domain_neighbor_output(const TomlSection& root, Params& p) {
+  if (const auto s = root.table("domain", {"min", "max", "on_exit"})) {
+    p.domain.bounded = true;
+    p.domain.min = s->require(s->vec3("min"), "min");
+    p.domain.max = s->require(s->vec3("max"), "max");
+    for (int c = 0; c < 3; ++c)
+      if (!(p.domain.min[c] < p.domain.max[c]))
+        s->fail("max", std::string("expected max > min in every component, got ") + "xyz"[c] + ": min " +
+                           number_text(p.domain.min[c]) + " >= max " + number_text(p.domain.max[c]));
+    if (const auto e = s->string("on_exit")) {
+      if (*e == "remove") p.domain.on_exit = ExitPolicy::Remove;
+      else if (*e == "stop") p.domain.on_exit = ExitPolicy::Stop;
+      else s->fail("on_exit", "expected \"remove\" or \"stop\", got \"" + *e + "\"");
+    }
+  }
+  if (const auto s = root.table("neighbor", {"skin"})) s->get("skin", p.neighbor.skin, kNonNegative);
+  if (const auto s = root.table("output", {"dir", "particles_every", "barriers_every", "particle_csv_every",
+                                           "barrier_log_every", "log_every", "checkpoint_every", "progress_every"})) {
+    s->get("dir", p.output.dir);
+    if (p.output.dir.empty()) s->fail("dir", "expected a non-empty folder name");
+    s->get("particles_every", p.output.particles_every, kNonNegative);
+    s->get("barriers_every", p.output.barriers_every, kNonNegative);
+    s->get("particle_csv_every", p.output.particle_csv_every, kNonNegative);
+    s->get("barrier_log_every", p.output.barrier_log_every, kNonNegative);
+    s->get("log_every", p.output.log_every, 1);
+    s->get("checkpoint_every", p.output.checkpoint_every, 0);
+    s->get("progress_every", p.output.progress_every, kNonNegative);
+  }
+}
+
+}  // namespace
+
+Scene parse_scene_file(const std::filesystem::path& file) {
+  const std::string name = file.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw InputError(name, 0, "", "scene file '" + name + "' does not exist");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(name, 0, "", "cannot open scene file '" + name + "'");
+  std::stringstream text;
+  text << in.rdbuf();
+
+  toml::table doc;
+  try {
+    doc = toml::parse(text.str(), std::string_view(name));
+  } catch (const toml::parse_error& e) {
+    throw InputError(name, e.source().begin.line, "",
+                     "TOML syntax error at column " + std::to_string(e.source().begin.column) + ": " +
+                         std::string(e.description()));
+  }
+
+  Scene scene;
+  scene.file = std::filesystem::absolute(file).lexically_normal();
+  scene.dir = scene.file.parent_path();
+  const TomlSection root(name, doc, "", {"time", "tolerance", "analysis", "gravity", "fields", "near_field",
+                                         "contact", "thermal", "material", "particles", "barriers", "domain",
+                                         "neighbor", "output"});
+  Params& p = scene.model.params;
+  read_time(root, p.time);
+  read_tolerance(root, p.tolerance);
+  read_analysis_and_fields(root, p);
+  read_contact_and_thermal(root, p);
+  read_materials(root, scene.model);
+  read_near_field(root, scene.model, p.near_field);
+  read_sources(root, scene);
+  read_domain_neighbor_output(root, p);
+  return scene;
+}
+
+Scene load_scene(const std::filesystem::path& file) {
+  Scene scene = parse_scene_file(file);
+  for (const ParticleSource& src : scene.particle_sources) {
+    const int mat = src.material.empty() ? 0 : scene.model.material_index(src.material);
+    read_particle_csv(src.file, scene.model, mat, scene.particles);
+  }
+  for (const BarrierSource& src : scene.barrier_sources) {
+    if (!src.stl.empty())
+      throw InputError(file.string(), src.line, "barriers.stl", "STL barriers are not supported yet");
+    read_barrier_csv(src.file, src, scene.model, scene.barriers);
+  }
+  // neighbor.skin stays 0 when [neighbor] gives none: the engine derives it from the radii.
+  return scene;
+}
+
+}  // namespace mpdem

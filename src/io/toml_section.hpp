@@ -1,0 +1,67 @@
+#pragma once
+// TomlSection: typed, range-checked access to one table of the TOML scene file. Unknown keys are
+// rejected on construction (with the closest known key suggested); every other problem - wrong
+// type, out of range, missing - is an InputError naming the file, the line (from toml++'s
+// source regions) and the dotted key.
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "core/vec3.hpp"
+#include "io/value_range.hpp"
+
+namespace mpdem {
+
+class TomlSection {
+ public:
+  // `path` is the dotted name of the table ("" for the root, "contact.particle_particle").
+  TomlSection(const std::string& file, const toml::table& table, std::string path,
+              std::initializer_list<std::string_view> known);
+
+  const std::string& file() const { return *file_; }
+  std::size_t line() const;                         // line of the table itself
+  std::string key(std::string_view k) const;        // dotted name of key k
+  bool has(std::string_view k) const { return table_->contains(k); }
+  std::size_t line_of(std::string_view k) const;    // line of key k (the table's line if absent)
+
+  std::optional<double> number(std::string_view k, Range r = kAnyValue) const;
+  std::optional<std::int64_t> integer(std::string_view k, std::int64_t min, std::int64_t max) const;
+  std::optional<bool> boolean(std::string_view k) const;
+  std::optional<std::string> string(std::string_view k) const;
+  std::optional<Vec3> vec3(std::string_view k) const;
+  // Sub-table (standard or inline); "expected a table" when k holds anything else.
+  std::optional<TomlSection> table(std::string_view k, std::initializer_list<std::string_view> known) const;
+  // Array of tables ([[k]]); "expected an array of tables [[k]]" otherwise. Empty when absent.
+  std::vector<TomlSection> tables(std::string_view k, std::initializer_list<std::string_view> known) const;
+
+  // Assign-if-present forms, so a default stays in place when the key is absent.
+  void get(std::string_view k, double& out, Range r = kAnyValue) const;
+  void get(std::string_view k, int& out, int min, int max = std::numeric_limits<int>::max()) const;
+  void get(std::string_view k, bool& out) const;
+  void get(std::string_view k, std::string& out) const;
+  void get(std::string_view k, Vec3& out) const;
+
+  // Value of a required key or "missing required key".
+  template <class T>
+  T require(std::optional<T> v, std::string_view k) const {
+    if (!v) fail(k, "missing required key");
+    return *v;
+  }
+  // Throws InputError at key k's line (or the table's line when k is absent).
+  [[noreturn]] void fail(std::string_view k, const std::string& message) const;
+
+ private:
+  const toml::node* node(std::string_view k) const { return table_->get(k); }
+  const std::string* file_;
+  const toml::table* table_;
+  std::string path_;
+};
+
+}  // namespace mpdem

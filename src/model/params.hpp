@@ -1,0 +1,138 @@
+#pragma once
+// Run parameters: the thesis's ten parameter classes (temperature, time integration, electric
+// field, magnetic field, gravity, tangential contact coefficients, tolerances and convergence,
+// near field, contact dissipation, analysis type) plus domain, neighbour search and output.
+// Constant during a run. Every field states its SI unit; defaults here are the documented
+// defaults of docs/scene.md.
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/vec3.hpp"
+
+namespace mpdem {
+
+enum class Integrator { Trapezoidal, Verlet };
+
+struct TimeParams {
+  double duration = 0.0;              // s, simulated time to run (required, > 0)
+  Integrator integrator = Integrator::Trapezoidal;
+  double phi = 0.5;                   // -, trapezoidal weight in [0, 1] (0 explicit, 1 implicit)
+  double dt = 0.0;                    // s, (initial) time step (required, > 0)
+  double dt_min = 0.0;                // s, adaptive lower bound (default dt / 1000)
+  double dt_max = 0.0;                // s, adaptive upper bound (default dt)
+  bool adaptive = false;              // adaptive time stepping (physics.md section 10)
+  int desired_iterations = 10;        // K_D, iterations per step the adaptivity aims at
+  double p = 2.0;                     // convergence exponent of the fixed-point iteration
+  int max_iterations = 50;            // cap on fixed-point iterations per step (fixed dt)
+};
+
+// Relative tolerances of the fixed-point iteration, one per field (physics.md section 9).
+struct ToleranceParams {
+  double position = 1e-8;             // TOL_r
+  double velocity = 1e-8;             // TOL_v
+  double rotation = 1e-8;             // TOL_alpha
+  double angular_velocity = 1e-8;     // TOL_w
+  double temperature = 1e-8;          // TOL_T
+  // Absolute floors, RMS per particle: a field is converged when
+  //   rms|y_K - y_(K-1)| <= TOL rms|y_K - y(t)| + floor,
+  // so fields that hardly change over a step (a resting bed, a uniform temperature) converge at
+  // once instead of chasing round-off (docs/integrators.md).
+  double position_floor = 1e-12;      // m
+  double velocity_floor = 1e-10;      // m/s
+  double rotation_floor = 1e-12;      // rad
+  double angular_velocity_floor = 1e-8;  // rad/s
+  double temperature_floor = 1e-9;    // K
+};
+
+struct AnalysisParams {
+  bool rotation = true;               // integrate angular velocity and orientation
+  bool thermal = false;               // integrate temperature (physics.md section 8)
+};
+
+struct FieldParams {
+  Vec3 gravity{0.0, 0.0, -9.81};      // m/s^2
+  Vec3 electric{};                    // V/m, uniform E
+  Vec3 magnetic{};                    // T, uniform B
+};
+
+// Empirical near-field law f = (a1 d^-b1 - a2 d^-b2) n for one material pair (46).
+struct NearFieldPair {
+  std::string material_a, material_b;
+  double a1 = 0.0, b1 = 0.0, a2 = 0.0, b2 = 0.0;
+};
+
+struct NearFieldParams {
+  bool empirical = false;             // empirical power law (46) on
+  double a1 = 0.0;                    // N m^b1
+  double b1 = 0.0;                    // -
+  double a2 = 0.0;                    // N m^b2
+  double b2 = 0.0;                    // -
+  std::vector<NearFieldPair> pairs;   // per-material-pair overrides of a1, b1, a2, b2
+  bool coulomb = false;               // Coulomb force between charges (44)
+  double permittivity = 1.0;          // eps_r, relative permittivity of the medium
+  double cutoff = 0.0;                // m, range of both laws (0 = near field off)
+};
+
+// Coefficients of one contact kind (particle-particle or particle-barrier).
+struct ContactLawParams {
+  std::optional<double> restitution;  // e in (0, 1]; calibrated damping (physics.md 5 Departure)
+  std::optional<double> damping_ratio;// xi_n >= 0 used as written in (50); exclusive with e
+  double mu_static = 0.5;             // -, static Coulomb coefficient
+  double mu_dynamic = 0.4;            // -, dynamic Coulomb coefficient (<= mu_static)
+  double mu_rolling = 0.0;            // -, rolling resistance coefficient
+  double tangential_damping = 0.0;    // xi_t, tangential damping ratio (67)
+};
+
+struct ContactParams {
+  ContactLawParams particle_particle;
+  ContactLawParams particle_barrier;
+};
+
+struct ThermalParams {
+  double air_temperature = 293.15;         // K
+  Vec3 air_velocity{};                     // m/s
+  double environment_temperature = 293.15; // K, radiation sink
+  bool conduction = true;
+  bool convection = false;
+  bool radiation = false;
+};
+
+enum class ExitPolicy { Remove, Stop };
+
+struct DomainParams {
+  bool bounded = false;                   // false: no domain check
+  Vec3 min{}, max{};                      // m, axis-aligned box
+  ExitPolicy on_exit = ExitPolicy::Stop;
+};
+
+struct NeighborParams {
+  double skin = 0.0;                      // m, Verlet skin (0 = 0.1 x smallest diameter)
+};
+
+struct OutputParams {
+  std::string dir = "output";             // relative to the scene file's folder
+  double particles_every = 0.0;           // s of simulated time between particle VTU (0 = off)
+  double barriers_every = 0.0;            // s between barrier VTU (0 = off)
+  double particle_csv_every = 0.0;        // s between particle CSV snapshots (0 = off)
+  double barrier_log_every = 0.0;         // s between barrier-group log rows (0 = off)
+  int log_every = 100;                    // steps between global log rows (>= 1)
+  int checkpoint_every = 0;               // steps between checkpoints (0 = off)
+  double progress_every = 10.0;           // s of wall time between plain progress lines
+};
+
+struct Params {
+  TimeParams time;
+  ToleranceParams tolerance;
+  AnalysisParams analysis;
+  FieldParams fields;
+  NearFieldParams near_field;
+  ContactParams contact;
+  ThermalParams thermal;
+  DomainParams domain;
+  NeighborParams neighbor;
+  OutputParams output;
+};
+
+}  // namespace mpdem

@@ -1,0 +1,62 @@
+#pragma once
+// Scene: everything a run starts from. The model (constant: parameters, materials) and the
+// initial state (particles, barriers), assembled from the TOML scene file and the particle and
+// barrier files it names.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/material.hpp"
+#include "model/params.hpp"
+#include "state/barriers.hpp"
+#include "state/motion_law.hpp"
+#include "state/particles.hpp"
+
+namespace mpdem {
+
+// [[particles]] entry: a particle CSV file. Columns the file lacks take `material`'s defaults.
+struct ParticleSource {
+  std::filesystem::path file;     // absolute (resolved against the scene file's folder)
+  std::string material;           // default material name ("" = first material)
+  std::size_t line = 0;           // line of the entry in the scene file, for messages
+};
+
+// [[barriers]] entry: a barrier CSV file or an STL file, with defaults for its elements.
+struct BarrierSource {
+  std::filesystem::path file;     // barrier CSV (absolute), or empty
+  std::filesystem::path stl;      // STL file (absolute), or empty (STL reading: issue 6)
+  std::string group;              // group name ("" = file stem)
+  std::string material;           // material giving young/poisson when the CSV has none
+  MotionLaw motion;               // default motion law for elements without motion columns
+  double thickness = 0.0;         // m, fictitious thickness t_b
+  std::optional<double> temperature; // K, fixed temperature (none = insulated)
+  double scale = 1.0;             // STL only: vertex scale factor
+  Vec3 rotate_deg{};              // STL only: rotation about x, then y, then z, degrees
+  Vec3 translate{};               // STL only: m, translation after scale and rotation
+  std::size_t line = 0;
+};
+
+struct Model {
+  Params params;
+  std::vector<Material> materials;
+  int material_index(const std::string& name) const;  // -1 when unknown
+};
+
+struct Scene {
+  std::filesystem::path file;     // the scene file
+  std::filesystem::path dir;      // its folder; relative paths resolve against it
+  Model model;
+  std::vector<ParticleSource> particle_sources;
+  std::vector<BarrierSource> barrier_sources;
+  Particles particles;
+  Barriers barriers;
+};
+
+// Parses a TOML scene (parameters, materials, sources) without reading the sources.
+// Throws InputError naming file, line and key for every problem.
+Scene parse_scene_file(const std::filesystem::path& file);
+// parse_scene_file + reads every particle and barrier source into the scene's arrays.
+Scene load_scene(const std::filesystem::path& file);
+
+}  // namespace mpdem

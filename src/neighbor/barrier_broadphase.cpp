@@ -1,0 +1,166 @@
+#include "neighbor/barrier_broadphase.hpp"
+
+#include "neighbor/cell_grid.hpp"  // kNeighborParallelMin
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace mpdem {
+
+namespace {
+
+constexpr std::uint32_t kLeafSize = 4;
+// Node boxes are padded outward by this relative amount so that rounding in the node test can
+// never reject an element the exact per-element test would accept (node test is conservative).
+constexpr double kPadRel = 1e-12;
+
+Vec3 vmin(const Vec3& a, const Vec3& b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
+Vec3 vmax(const Vec3& a, const Vec3& b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
+
+// The documented candidate test (header): lo - margin <= x <= hi + margin on every axis.
+bool in_expanded_box(const Vec3& p, const Vec3& lo, const Vec3& hi, double margin) {
+  return p.x >= lo.x - margin && p.x <= hi.x + margin && p.y >= lo.y - margin && p.y <= hi.y + margin &&
+         p.z >= lo.z - margin && p.z <= hi.z + margin;
+}
+
+}  // namespace
+
+std::uint32_t BarrierBroadphase::build_node(std::uint32_t begin, std::uint32_t end, double pad_scale) {
+  const std::uint32_t me = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.emplace_back();
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  Vec3 clo = lo, chi = hi;
+  for (std::uint32_t k = begin; k < end; ++k) {
+    const std::uint32_t e = perm_[k];
+    const Vec3 g{grow_[e], grow_[e], grow_[e]};
+    lo = vmin(lo, lo_[e] - g);
+    hi = vmax(hi, hi_[e] + g);
+    clo = vmin(clo, centroid_[e]);
+    chi = vmax(chi, centroid_[e]);
+  }
+  const auto pad = [pad_scale](double v) { return kPadRel * (std::abs(v) + pad_scale); };
+  nodes_[me].lo = {lo.x - pad(lo.x), lo.y - pad(lo.y), lo.z - pad(lo.z)};
+  nodes_[me].hi = {hi.x + pad(hi.x), hi.y + pad(hi.y), hi.z + pad(hi.z)};
+  if (end - begin <= kLeafSize) {
+    nodes_[me].first = begin;
+    nodes_[me].count = end - begin;
+    return me;
+  }
+  // Median split along the longest axis of the centroids; ties broken by element index so the
+  // tree (and thus nothing observable, but also the work) is deterministic.
+  const Vec3 ext = chi - clo;
+  const int axis = ext.x >= ext.y && ext.x >= ext.z ? 0 : (ext.y >= ext.z ? 1 : 2);
+  const std::uint32_t mid = begin + (end - begin) / 2;
+  std::nth_element(perm_.begin() + begin, perm_.begin() + mid, perm_.begin() + end,
+                   [this, axis](std::uint32_t a, std::uint32_t b) {
+                     const double ca = centroid_[a][axis], cb = centroid_[b][axis];
+                     return ca != cb ? ca < cb : a < b;
+                   });
+  build_node(begin, mid, pad_scale);  // left child is me + 1
+  const std::uint32_t right = build_node(mid, end, pad_scale);
+  nodes_[me].first = right;
+  nodes_[me].count = 0;
+  return me;
+}
+
+void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> radius, const Barriers& barriers,
+                              double skin) {
+  const std::size_t n = x.size(), m = barriers.size();
+  if (radius.size() != n) throw std::invalid_argument("barrier broad phase: positions and radii differ in size");
+  if (!(skin >= 0.0) || !std::isfinite(skin)) throw std::invalid_argument("barrier broad phase: skin must be >= 0");
+  if (m >= std::numeric_limits<std::uint32_t>::max())
+    throw std::invalid_argument("barrier broad phase: too many barrier elements");
+  skin_ = skin;
+
+  lo_.resize(m);
+  hi_.resize(m);
+  grow_.resize(m);
+  centroid_.resize(m);
+  perm_.resize(m);
+  offset_build_.assign(barriers.offset.begin(), barriers.offset.end());
+  double max_grow = 0.0;
+  for (std::size_t e = 0; e < m; ++e) {
+    const Vec3 a = barriers.vertex(e, 0), b = barriers.vertex(e, 1), c = barriers.vertex(e, 2);
+    const double t = barriers.thickness[e];
+    if (!isfinite(a) || !isfinite(b) || !isfinite(c) || !(t >= 0.0) || !std::isfinite(t))
+      throw std::invalid_argument("barrier broad phase: element " + std::to_string(barriers.id[e]) +
+                                  " has a non-finite vertex or an invalid thickness");
+    lo_[e] = vmin(vmin(a, b), c);
+    hi_[e] = vmax(vmax(a, b), c);
+    grow_[e] = 0.5 * t + skin;
+    centroid_[e] = 0.5 * (lo_[e] + hi_[e]);
+    perm_[e] = static_cast<std::uint32_t>(e);
+    max_grow = std::max(max_grow, grow_[e]);
+  }
+  double rmax = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(radius[i] >= 0.0) || !std::isfinite(radius[i]) || !isfinite(x[i]))
+      throw std::invalid_argument("barrier broad phase: particle " + std::to_string(i) +
+                                  " has a non-finite position or an invalid radius");
+    rmax = std::max(rmax, radius[i]);
+  }
+  nodes_.clear();
+  if (m > 0) build_node(0, static_cast<std::uint32_t>(m), rmax + max_grow);
+
+  // One query per particle; each thread owns a contiguous block of particles (see VerletList).
+  offset_.assign(n + 1, 0);
+#pragma omp parallel if(n >= kNeighborParallelMin)
+  {
+    const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+#pragma omp single
+    if (thread_buf_.size() < nt) thread_buf_.resize(nt);
+    std::vector<std::uint32_t>& buf = thread_buf_[t];
+    buf.clear();
+    const std::size_t lo = n * t / nt, hi = n * (t + 1) / nt;
+    std::uint32_t stack[128];  // depth of a median-split tree is ~log2(M) < 33
+    for (std::size_t i = lo; i < hi && !nodes_.empty(); ++i) {
+      const std::size_t first = buf.size();
+      const Vec3 p = x[i];
+      const double r = radius[i];
+      int top = 0;
+      stack[top++] = 0;
+      while (top > 0) {
+        const Node& nd = nodes_[stack[--top]];
+        if (!in_expanded_box(p, nd.lo, nd.hi, r)) continue;
+        if (nd.count == 0) {
+          stack[top++] = nd.first;                                           // right child
+          stack[top++] = static_cast<std::uint32_t>(&nd - nodes_.data()) + 1;  // left child
+          continue;
+        }
+        for (std::uint32_t k = nd.first; k < nd.first + nd.count; ++k) {
+          const std::uint32_t e = perm_[k];
+          if (in_expanded_box(p, lo_[e], hi_[e], r + grow_[e])) buf.push_back(e);
+        }
+      }
+      std::sort(buf.begin() + static_cast<std::ptrdiff_t>(first), buf.end());
+      offset_[i + 1] = buf.size() - first;
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
+      index_.resize(offset_[n]);
+    }
+    std::copy(buf.begin(), buf.end(), index_.begin() + static_cast<std::ptrdiff_t>(offset_[lo]));
+  }
+  built_ = true;
+}
+
+double BarrierBroadphase::max_barrier_displacement(const Barriers& barriers) const {
+  if (!built_ || barriers.size() != offset_build_.size()) return std::numeric_limits<double>::infinity();
+  double m2 = 0.0;
+  for (std::size_t e = 0; e < barriers.size(); ++e) m2 = std::max(m2, norm2(barriers.offset[e] - offset_build_[e]));
+  return std::sqrt(m2);
+}
+
+bool BarrierBroadphase::needs_rebuild(const Barriers& barriers, double max_particle_displacement) const {
+  return max_particle_displacement + max_barrier_displacement(barriers) > 0.5 * skin_;
+}
+
+}  // namespace mpdem

@@ -1,0 +1,68 @@
+#pragma once
+// Verlet neighbour list with skin (physics.md section 11), built from the sparse cell grid.
+//
+// Half list in CSR form: the pair {i, j} is stored once, under the smaller index i (i < j in the
+// index order at build time), so a pair loop can apply f_ji = -f_ij. The neighbours of i are
+// indices()[offsets()[i] .. offsets()[i+1]), ascending. The pair is listed when
+//     |x_i - x_j| < R_i + R_j + extra_range + skin
+// (extra_range: e.g. a near-field cutoff beyond contact). The output depends only on the input,
+// never on the number of threads.
+//
+// Verlet guarantee: while every particle has moved at most skin/2 since the build, every pair
+// with |x_i - x_j| < R_i + R_j + extra_range is in the list. needs_rebuild() reports when that
+// no longer holds. The list is tied to the index order: rebuild after permuting, adding or
+// removing particles (a changed count is detected and reported as needing a rebuild).
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "core/vec3.hpp"
+#include "neighbor/cell_grid.hpp"
+
+namespace mpdem {
+
+class VerletList {
+ public:
+  // x [N] m centres, radius [N] m, skin >= 0 m, extra_range >= 0 m.
+  // Throws std::invalid_argument for mismatched sizes, a negative/non-finite skin, extra range
+  // or radius, a non-finite position, or more than 2^32 - 1 particles.
+  void build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range = 0.0);
+
+  std::size_t size() const { return x_build_.size(); }        // N at the last build
+  std::size_t num_pairs() const { return index_.size(); }
+  // Neighbours j > i of particle i, ascending.
+  std::span<const std::uint32_t> neighbors(std::size_t i) const {
+    return {index_.data() + offset_[i], offset_[i + 1] - offset_[i]};
+  }
+  const std::vector<std::size_t>& offsets() const { return offset_; }    // [N+1]
+  const std::vector<std::uint32_t>& indices() const { return index_; }   // [num_pairs]
+
+  // Largest |x_i - x_i(build)| (m); +infinity if the particle count changed since the build.
+  double max_displacement(std::span<const Vec3> x) const;
+  // True when some particle has moved strictly more than skin/2 since the build (or the count
+  // changed, or the list was never built).
+  bool needs_rebuild(std::span<const Vec3> x) const;
+
+  double skin() const { return skin_; }                 // m
+  double extra_range() const { return extra_; }         // m
+  double max_radius() const { return max_radius_; }     // m, at build
+  const CellGrid& grid() const { return grid_; }
+  std::size_t memory_bytes() const;                     // bytes held, grid included
+
+ private:
+  double skin_ = 0.0;                        // m
+  double extra_ = 0.0;                       // m
+  double max_radius_ = 0.0;                  // m
+  bool built_ = false;
+  CellGrid grid_;
+  std::vector<Vec3> x_build_;                // [N] m, centres at build time
+  std::vector<std::size_t> offset_{0};       // [N+1] CSR offsets
+  std::vector<std::uint32_t> index_;         // [pairs] neighbour indices
+  // Scratch reused between builds: centres and radii in cell order, per-thread pair buffers.
+  std::vector<Vec3> xs_;                     // [N] m
+  std::vector<double> rs_;                   // [N] m
+  std::vector<std::vector<std::uint32_t>> thread_buf_;
+};
+
+}  // namespace mpdem

@@ -1,0 +1,87 @@
+#pragma once
+// Tangential contact: Mindlin spring-dashpot with Coulomb stick-slip (physics.md section 6,
+// thesis (57)-(70)). Pure, allocation-free functions; the pair loop owns the spring history.
+//
+// Conventions: all forces are on particle i (j gets the negative, and its own torque
+// r_Pj x (-f_t)); `f_n` is the magnitude of the net normal force |f_n| (N) after the clamp;
+// v_t is the tangential relative velocity of i with respect to j at the contact point (m/s).
+#include <cmath>
+
+#include "core/vec3.hpp"
+
+namespace mpdem {
+
+// G = E / (2 (1 + nu))   [Pa]
+inline double shear_modulus(double E, double nu) { return E / (2.0 * (1.0 + nu)); }
+
+// Mindlin's no-slip effective shear modulus (Departure of section 6, replaces (66)):
+// 1/G* = (2 - nu_i)/G_i + (2 - nu_j)/G_j   [Pa]
+// Also the finite-stiffness barrier value, with the barrier's own G_j, nu_j (section 7).
+inline double effective_shear_modulus(double G_i, double nu_i, double G_j, double nu_j) {
+  return 1.0 / ((2.0 - nu_i) / G_i + (2.0 - nu_j) / G_j);
+}
+
+// Infinitely stiff barrier (G_j -> infinity): G* = G_i / (2 - nu_i)   [Pa]   (section 7)
+inline double effective_shear_modulus_rigid(double G_i, double nu_i) { return G_i / (2.0 - nu_i); }
+
+// k_t = 8 G* sqrt(r* |delta|)                                                (65)   [N/m]
+inline double tangential_stiffness(double G_star, double r_star, double overlap) {
+  return 8.0 * G_star * std::sqrt(r_star * overlap);
+}
+
+// d_t = 2 xi_t sqrt(m* k_t)                                                  (67)   [N s/m]
+inline double tangential_damping_coefficient(double xi_t, double m_star, double k_t) {
+  return 2.0 * xi_t * std::sqrt(m_star * k_t);
+}
+
+// Step 1 of section 6, (59): project the stored spring s (m) onto the plane normal to the
+// current contact normal n (unit), then rescale it to its previous length, so a rigid rotation
+// of the pair turns the spring with it instead of shrinking it. A spring parallel to n (no
+// tangential direction left) becomes zero.
+inline Vec3 project_spring(const Vec3& s, const Vec3& n) {
+  const Vec3 p = s - dot(s, n) * n;
+  const double lp2 = norm2(p);
+  if (lp2 <= 1e-30 * norm2(s)) return Vec3{};  // also covers s = 0
+  return p * std::sqrt(norm2(s) / lp2);
+}
+
+struct TangentialResult {
+  Vec3 force;                      // N, tangential force on i (on j: -force)
+  Vec3 spring;                     // m, spring to store for the next step
+  bool slipped = false;            // true when the Coulomb limit was hit
+  double dissipated_power = 0.0;   // W, estimate: dashpot d_t |v_t|^2 when sticking,
+                                   //    friction work rate -f_t.v_t when slipping
+};
+
+// Steps 2-5 of section 6 (57)-(58), (68)-(70). Inputs: spring s (m) already projected by
+// project_spring, increment ds (m) from (64), v_t (m/s), k_t (N/m), d_t (N s/m), static and
+// dynamic friction coefficients mu_s >= mu_d, normal force magnitude f_n (N).
+//
+// Slip storage (choice documented in docs/contact_model.md): on slip the spring is stored at the
+// DYNAMIC limit s = -(mu_d |f_n| / k_t) t, so that k_t |s| equals the applied sliding force and
+// the next step starts from a spring consistent with it (thesis (69) uses the static limit;
+// physics.md allows either). The same function serves particle and barrier contacts, so the
+// choice is consistent across both.
+inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Vec3& v_t, double k_t,
+                                         double d_t, double mu_s, double mu_d, double f_n) {
+  TangentialResult out;
+  const Vec3 s_tent = s + ds;                        // (58)
+  const Vec3 f_trial = -(k_t * s_tent + d_t * v_t);  // (57)
+  const double ft2 = norm2(f_trial);
+  const double limit_s = mu_s * std::abs(f_n);
+  if (ft2 <= limit_s * limit_s) {                    // stick (68)
+    out.force = f_trial;
+    out.spring = s_tent;
+    out.dissipated_power = d_t * norm2(v_t);
+    return out;
+  }
+  const Vec3 t = f_trial / std::sqrt(ft2);           // (70), ft2 > 0 here
+  const double f_slide = mu_d * std::abs(f_n);
+  out.force = f_slide * t;
+  out.spring = k_t > 0.0 ? -(f_slide / k_t) * t : Vec3{};  // (69) at the dynamic limit
+  out.slipped = true;
+  out.dissipated_power = -dot(out.force, v_t);
+  return out;
+}
+
+}  // namespace mpdem

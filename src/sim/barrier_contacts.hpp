@@ -1,0 +1,58 @@
+#pragma once
+// BarrierContacts: Hertz-Mindlin contacts between particles and barrier triangles (physics.md
+// section 7): exact closest-point detection counting each physical contact once, the barrier's
+// motion-law velocity in the relative velocity, the barrier's own E and nu, r* = R, m* = m.
+//
+// History: each particle keeps up to kSlots contacts (element, spring, start-of-step tangential
+// velocity, normal). A contact that moves onto a neighbouring element of the same surface (a
+// sphere rolling across a seam) inherits the spring of the contact that just ended there, so
+// tangential forces do not jump at seams. Loads on the elements (force, moment about the centre,
+// pressure) are accumulated in particle order, independent of the thread count.
+#include <cstdint>
+#include <vector>
+
+#include "physics/barrier_contact_detect.hpp"
+#include "physics/contact_model.hpp"
+#include "sim/interactions.hpp"
+#include "sim/neighbor_search.hpp"
+#include "sim/particle_contacts.hpp"
+#include "state/barrier_topology.hpp"
+
+namespace mpdem {
+
+class BarrierContacts {
+ public:
+  static constexpr int kSlots = 8;  // simultaneous barrier contacts per particle
+
+  BarrierContacts(const ContactModel& law, const Barriers& b);
+
+  // Adds contact forces/torques to the particles and loads to the barriers.
+  PairStats evaluate(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req);
+  // Keeps the per-particle history aligned when particles are reordered or removed.
+  void permute(const std::vector<std::uint32_t>& order);
+  void compact(const std::vector<char>& keep);
+  std::uint64_t overflows() const { return overflows_; }  // contacts dropped beyond kSlots
+
+ private:
+  struct Slot {
+    std::int32_t element = -1;  // -1 = empty
+    Vec3 spring;                // m
+    Vec3 vt0;                   // m/s
+    Vec3 normal;                // -, contact normal (towards the particle)
+  };
+  struct Load {                 // one contact's action on its element
+    std::int32_t element = -1;
+    Vec3 force;                 // N, on the element
+    Vec3 point;                 // m, contact point
+  };
+  void resize(std::size_t n);
+
+  ContactModel law_;
+  BarrierTopology topo_;
+  std::vector<Slot> committed_;    // [N * kSlots]
+  std::vector<Slot> tentative_;    // [N * kSlots]
+  std::vector<Load> loads_;        // [N * kSlots]
+  std::uint64_t overflows_ = 0;
+};
+
+}  // namespace mpdem

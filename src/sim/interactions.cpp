@@ -1,0 +1,95 @@
+#include "sim/interactions.hpp"
+
+#include <algorithm>
+
+#include "core/parallel.hpp"
+#include "physics/field_forces.hpp"
+#include "sim/barrier_contacts.hpp"
+#include "sim/neighbor_search.hpp"
+#include "sim/particle_contacts.hpp"
+
+namespace mpdem {
+
+double default_skin(const Model& model, const Particles& p) {
+  if (model.params.neighbor.skin > 0.0) return model.params.neighbor.skin;
+  double rmin = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) rmin = i == 0 ? p.radius[i] : std::min(rmin, p.radius[i]);
+  return rmin > 0.0 ? 0.2 * rmin : 1e-3;
+}
+
+Interactions::Interactions(const Model& model, const Particles& p, const Barriers& b)
+    : model_(model),
+      search_(std::make_unique<NeighborSearch>(default_skin(model, p), 0.0)),
+      pp_(std::make_unique<ParticleContacts>(ContactModel::from(model.params.contact.particle_particle))),
+      pb_(std::make_unique<BarrierContacts>(ContactModel::from(model.params.contact.particle_barrier), b)) {}
+
+Interactions::~Interactions() = default;
+
+double Interactions::skin() const { return search_->skin(); }
+
+void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
+  std::vector<PairHistory> history = pp_->export_history(p, *search_);
+  if (reorder && p.size() > 1) {
+    const std::vector<std::uint32_t> order = search_->spatial_order(p);
+    p.permute(order);
+    pb_->permute(order);
+  }
+  search_->rebuild(p, b);
+  pp_->import_history(p, *search_, std::move(history));
+  stats_.rebuilds = search_->rebuilds();
+}
+
+void Interactions::prepare_step(Particles& p, const Barriers& b) {
+  if (search_->needs_rebuild(p, b)) rebuild(p, b, true);
+}
+
+void Interactions::force_rebuild(Particles& p, const Barriers& b, bool reorder) { rebuild(p, b, reorder); }
+
+void Interactions::remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep) {
+  std::vector<PairHistory> history = pp_->export_history(p, *search_);
+  p.compact(keep);
+  pb_->compact(keep);
+  search_->rebuild(p, b);
+  pp_->import_history(p, *search_, std::move(history));
+  stats_.rebuilds = search_->rebuilds();
+}
+
+void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::size_t i = 0; i < n; ++i) {
+    p.force[i] = Vec3{};
+    p.torque[i] = Vec3{};
+    p.heat[i] = 0.0;
+  }
+  b.move_to(req.time);
+  std::fill(b.force.begin(), b.force.end(), Vec3{});
+  std::fill(b.moment.begin(), b.moment.end(), Vec3{});
+  std::fill(b.pressure.begin(), b.pressure.end(), 0.0);
+  // Within a step the particles cannot be reordered (the integrator holds their start state).
+  if (search_->needs_rebuild(p, b)) rebuild(p, b, false);
+
+  add_field_forces(p);
+  const PairStats pp = pp_->evaluate(p, *search_, req);
+  const PairStats pb = pb_->evaluate(p, b, *search_, req);
+
+  stats_.contacts_pp = pp.contacts;
+  stats_.contacts_pb = pb.contacts;
+  stats_.elastic_energy = pp.elastic_energy + pb.elastic_energy;
+  if (req.commit) {
+    stats_.damping_dissipated += req.dt * (pp.damping_power + pb.damping_power);
+    stats_.friction_dissipated += req.dt * (pp.friction_power + pb.friction_power);
+  }
+}
+
+void Interactions::add_field_forces(Particles& p) const {
+  const FieldParams& f = model_.params.fields;
+  const std::size_t n = p.size();
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::size_t i = 0; i < n; ++i) {
+    p.force[i] += gravity_force(p.mass[i], f.gravity) + electric_force(p.charge[i], f.electric) +
+                  magnetic_force(p.charge[i], p.v[i], f.magnetic);
+  }
+}
+
+}  // namespace mpdem

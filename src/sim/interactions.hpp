@@ -1,0 +1,72 @@
+#pragma once
+// Interactions: everything that produces forces, torques and heat flows from a state, in the
+// order of a step: neighbour search, field forces, particle-particle contacts, particle-barrier
+// contacts. One evaluation fills Particles::force/torque/heat and the barriers' loads for the
+// positions, velocities and temperatures currently stored in the arrays. The integrators call
+// it at coarse grain; the laws themselves are small functions in src/physics/.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "model/scene.hpp"
+
+namespace mpdem {
+
+struct EvalRequest {
+  double time = 0.0;   // s, time of the evaluated state (barrier positions follow it)
+  double dt = 0.0;     // s, step length, for tangential spring increments (64)
+  double phi = 1.0;    // -, weight of the evaluated state's tangential velocity in the increment
+  bool commit = false; // store contact history: the evaluated state is the accepted end of step
+};
+
+// Energy and contact bookkeeping (physics.md section 12).
+struct InteractionStats {
+  std::size_t contacts_pp = 0;      // particle-particle contacts at the last evaluation
+  std::size_t contacts_pb = 0;      // particle-barrier contacts at the last evaluation
+  double elastic_energy = 0.0;      // J, Hertz + tangential springs at the last evaluation
+  double damping_dissipated = 0.0;  // J, cumulative over committed steps
+  double friction_dissipated = 0.0; // J, cumulative over committed steps
+  std::uint64_t rebuilds = 0;       // neighbour list rebuilds
+};
+
+class NeighborSearch;
+class ParticleContacts;
+class BarrierContacts;
+
+class Interactions {
+ public:
+  // Builds the neighbour search for the scene's particles and barriers.
+  Interactions(const Model& model, const Particles& p, const Barriers& b);
+  ~Interactions();
+
+  // Between steps: rebuilds the lists if needed, reordering the particles spatially (ids are
+  // kept; contact history follows the particles). Force accumulators are permuted too.
+  void prepare_step(Particles& p, const Barriers& b);
+  // Fills force, torque, heat of every particle (and the barriers' loads) for the current state.
+  void evaluate(Particles& p, Barriers& b, const EvalRequest& req);
+  // Removes the particles whose keep[i] is 0, keeping everyone else's contact history.
+  void remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep);
+  // Rebuilds now (optionally reordering) - for tests of rebuild invariance.
+  void force_rebuild(Particles& p, const Barriers& b, bool reorder);
+
+  const InteractionStats& stats() const { return stats_; }
+  double skin() const;
+  const NeighborSearch& search() const { return *search_; }
+  const ParticleContacts& particle_contacts() const { return *pp_; }
+
+ private:
+  void add_field_forces(Particles& p) const;
+  void rebuild(Particles& p, const Barriers& b, bool reorder);
+
+  const Model& model_;
+  InteractionStats stats_;
+  std::unique_ptr<NeighborSearch> search_;
+  std::unique_ptr<ParticleContacts> pp_;
+  std::unique_ptr<BarrierContacts> pb_;
+};
+
+// Verlet skin used for a scene: [neighbor] skin, or 0.1 x the smallest particle diameter.
+double default_skin(const Model& model, const Particles& p);
+
+}  // namespace mpdem

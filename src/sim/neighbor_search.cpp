@@ -1,0 +1,42 @@
+#include "sim/neighbor_search.hpp"
+
+#include <algorithm>
+
+#include "neighbor/spatial_order.hpp"
+
+namespace mpdem {
+
+bool NeighborSearch::needs_rebuild(const Particles& p, const Barriers& b) const {
+  if (list_.size() != p.size() || broad_.num_elements() != b.size()) return true;
+  if (list_.needs_rebuild(p.x)) return true;
+  return b.size() > 0 && broad_.needs_rebuild(b, list_.max_displacement(p.x));
+}
+
+void NeighborSearch::rebuild(const Particles& p, const Barriers& b) {
+  list_.build(p.x, p.radius, skin_, extra_);
+  broad_.build(p.x, p.radius, b, skin_);
+  ++rebuilds_;
+  // Transposed index: counting sort of the slots by their second member keeps them ascending.
+  const std::size_t n = p.size();
+  const auto& off = list_.offsets();
+  const auto& idx = list_.indices();
+  first_.resize(idx.size());
+  in_offset_.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
+      first_[k] = static_cast<std::uint32_t>(i);
+      ++in_offset_[idx[k] + 1];
+    }
+  for (std::size_t j = 0; j < n; ++j) in_offset_[j + 1] += in_offset_[j];
+  in_slot_.resize(idx.size());
+  std::vector<std::size_t> fill(in_offset_.begin(), in_offset_.end() - 1);
+  for (std::size_t k = 0; k < idx.size(); ++k) in_slot_[fill[idx[k]]++] = static_cast<std::uint32_t>(k);
+}
+
+std::vector<std::uint32_t> NeighborSearch::spatial_order(const Particles& p) const {
+  double rmax = 0.0;
+  for (double r : p.radius) rmax = std::max(rmax, r);
+  return mpdem::spatial_order(p.x, 2.0 * rmax + skin_ + extra_);
+}
+
+}  // namespace mpdem

@@ -1,0 +1,49 @@
+#pragma once
+// NeighborSearch: the Verlet pair list and the barrier candidate lists of a run, rebuilt only
+// when needed (physics.md section 11): when the largest particle displacement plus the largest
+// barrier displacement since the last build exceeds skin/2. Also the transposed pair index used
+// to gather pair forces deterministically.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "neighbor/barrier_broadphase.hpp"
+#include "neighbor/verlet_list.hpp"
+#include "state/barriers.hpp"
+#include "state/particles.hpp"
+
+namespace mpdem {
+
+class NeighborSearch {
+ public:
+  // skin [m] > 0; extra_range [m] >= 0 adds to the contact range (near-field cutoff).
+  NeighborSearch(double skin, double extra_range) : skin_(skin), extra_(extra_range) {}
+
+  bool needs_rebuild(const Particles& p, const Barriers& b) const;
+  void rebuild(const Particles& p, const Barriers& b);
+  // Permutation sorting the particles along a space-filling curve (for cache locality).
+  std::vector<std::uint32_t> spatial_order(const Particles& p) const;
+
+  const VerletList& pairs() const { return list_; }
+  const BarrierBroadphase& barrier_candidates() const { return broad_; }
+  // Pair slots k (into pairs().indices()) whose second member is particle j, ascending.
+  std::span<const std::uint32_t> incoming(std::size_t j) const {
+    return {in_slot_.data() + in_offset_[j], in_offset_[j + 1] - in_offset_[j]};
+  }
+  // First member of pair slot k.
+  std::uint32_t first_of(std::size_t k) const { return first_[k]; }
+  std::uint64_t rebuilds() const { return rebuilds_; }
+  double skin() const { return skin_; }
+
+ private:
+  double skin_;
+  double extra_;
+  std::uint64_t rebuilds_ = 0;
+  VerletList list_;
+  BarrierBroadphase broad_;
+  std::vector<std::uint32_t> first_;       // [pairs] first member of each slot
+  std::vector<std::size_t> in_offset_;     // [N+1] CSR offsets of the transposed index
+  std::vector<std::uint32_t> in_slot_;     // [pairs] slots, grouped by second member
+};
+
+}  // namespace mpdem

@@ -1,0 +1,116 @@
+#include "sim/output_manager.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "io/csv_log.hpp"
+#include "io/pvd_index.hpp"
+#include "io/vtu_writer.hpp"
+#include "sim/energy.hpp"
+
+namespace mpdem {
+
+namespace fs = std::filesystem;
+
+OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& barriers)
+    : model_(model), dir_(std::move(dir)) {
+  const OutputParams& o = model.params.output;
+  particles_vtu_.every = o.particles_every;
+  barriers_vtu_.every = o.barriers_every;
+  particles_csv_.every = o.particle_csv_every;
+  barrier_log_.every = o.barrier_log_every;
+  fs::create_directories(dir_);
+  if (particles_vtu_.every > 0.0) {
+    fs::create_directories(dir_ / "particles");
+    particles_pvd_ = std::make_unique<PvdIndex>(dir_ / "particles.pvd");
+  }
+  if (barriers_vtu_.every > 0.0 && barriers.size() > 0) {
+    fs::create_directories(dir_ / "barriers");
+    barriers_pvd_ = std::make_unique<PvdIndex>(dir_ / "barriers.pvd");
+  }
+  if (particles_csv_.every > 0.0) fs::create_directories(dir_ / "particles_csv");
+  log_ = std::make_unique<CsvLog>(
+      dir_ / "log.csv",
+      std::vector<std::string>{"step", "time", "dt", "iterations", "evaluations", "evaluations_total", "redone_steps",
+                               "particles", "removed", "contacts_pp", "contacts_pb", "kinetic", "rotational",
+                               "potential", "elastic", "damping_dissipated", "friction_dissipated", "total_energy"});
+  group_count_ = barriers.group_names.size();
+  if (barrier_log_.every > 0.0 && group_count_ > 0) {
+    std::vector<std::string> cols{"time"};
+    for (const auto& g : barriers.group_names)
+      for (const char* c : {"fx", "fy", "fz", "mx", "my", "mz", "area"}) cols.push_back(g + "." + c);
+    groups_ = std::make_unique<CsvLog>(dir_ / "barrier_groups.csv", cols);
+  }
+}
+
+OutputManager::~OutputManager() = default;
+
+bool OutputManager::due(Series& s, double t, double dt, bool force) {
+  if (s.every <= 0.0) return false;
+  const double slack = 0.5 * dt;  // round-off in the accumulated time must not skip a snapshot
+  if (s.count > 0 && t <= s.last + slack) return false;  // already written at this time
+  if (!force && t + slack < s.next) return false;
+  s.next = (std::floor((t + slack) / s.every) + 1.0) * s.every;
+  s.last = t;
+  ++s.count;
+  return true;
+}
+
+void OutputManager::snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force) {
+  if (particles_pvd_ && due(particles_vtu_, t, dt, force)) {
+    const std::string name = fmt::format("particles/particles_{:06d}.vtu", particles_vtu_.count - 1);
+    write_particles_vtu(dir_ / name, p, t);
+    particles_pvd_->add(t, name);
+  }
+  if (barriers_pvd_ && due(barriers_vtu_, t, dt, force)) {
+    const std::string name = fmt::format("barriers/barriers_{:06d}.vtu", barriers_vtu_.count - 1);
+    write_barriers_vtu(dir_ / name, b, t);
+    barriers_pvd_->add(t, name);
+  }
+  if (particles_csv_.every > 0.0 && due(particles_csv_, t, dt, force)) {
+    write_particles_csv(dir_ / fmt::format("particles_csv/particles_{:06d}.csv", particles_csv_.count - 1), p, t);
+  }
+  if (groups_ && due(barrier_log_, t, dt, force)) {
+    std::vector<double> row(1 + 7 * group_count_, 0.0);
+    row[0] = t;
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      double* g = &row[1 + 7 * static_cast<std::size_t>(b.group[e])];
+      const Vec3 c = b.centre(e);
+      const Vec3 m = b.moment[e] + cross(c, b.force[e]);  // moment about the origin
+      g[0] += b.force[e].x; g[1] += b.force[e].y; g[2] += b.force[e].z;
+      g[3] += m.x; g[4] += m.y; g[5] += m.z;
+      g[6] += b.area[e];
+    }
+    groups_->row(row);
+  }
+}
+
+void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const InteractionStats& s) {
+  const ParticleEnergy e = particle_energy(p, model_.params.fields.gravity);
+  const double total = e.kinetic + e.rotational + e.potential + s.elastic_energy + s.damping_dissipated +
+                       s.friction_dissipated;
+  const double row[] = {static_cast<double>(r.step), r.time, r.dt,
+                        static_cast<double>(r.report ? r.report->iterations : 0),
+                        static_cast<double>(r.report ? r.report->evaluations : 0),
+                        static_cast<double>(r.evaluations_total), static_cast<double>(r.redone_steps),
+                        static_cast<double>(p.size()), static_cast<double>(r.removed_total),
+                        static_cast<double>(s.contacts_pp), static_cast<double>(s.contacts_pb), e.kinetic,
+                        e.rotational, e.potential, s.elastic_energy, s.damping_dissipated, s.friction_dissipated,
+                        total};
+  log_->row(row);
+}
+
+void OutputManager::removed(std::int64_t id, double t, const Vec3& x) {
+  if (!removed_) removed_ = std::make_unique<CsvLog>(dir_ / "removed.csv", std::vector<std::string>{"time", "id", "x", "y", "z"});
+  const double row[] = {t, static_cast<double>(id), x.x, x.y, x.z};
+  removed_->row(row);
+}
+
+void OutputManager::flush() {
+  log_->flush();
+  if (groups_) groups_->flush();
+  if (removed_) removed_->flush();
+}
+
+}  // namespace mpdem

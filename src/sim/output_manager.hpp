@@ -1,0 +1,60 @@
+#pragma once
+// OutputManager: decides when each output is due and writes it - particle and barrier VTU
+// series with their .pvd indexes, particle CSV snapshots, the global log and the barrier-group
+// log. Intervals are in simulated seconds (the global log: in steps). docs/output.md lists
+// every file and column.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "integrate/step_report.hpp"
+#include "model/scene.hpp"
+#include "sim/interactions.hpp"
+
+namespace mpdem {
+
+class CsvLog;
+class PvdIndex;
+
+// One row of the global log.
+struct GlobalLogRow {
+  std::uint64_t step = 0;
+  double time = 0.0, dt = 0.0;
+  const StepReport* report = nullptr;
+  std::uint64_t evaluations_total = 0;
+  std::uint64_t redone_steps = 0;
+  std::size_t removed_total = 0;
+};
+
+class OutputManager {
+ public:
+  OutputManager(const Model& model, std::filesystem::path dir, const Barriers& barriers);
+  ~OutputManager();
+
+  // Writes whatever is due at time t (force = write every snapshot output now, e.g. at the end).
+  void snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force);
+  void global_log(const GlobalLogRow& row, const Particles& p, const InteractionStats& stats);
+  void removed(std::int64_t id, double t, const Vec3& x);
+  void flush();
+  const std::filesystem::path& dir() const { return dir_; }
+
+ private:
+  struct Series {
+    double every = 0.0;        // s
+    double next = 0.0;         // s, time of the next snapshot
+    double last = 0.0;         // s, time of the last snapshot
+    std::uint64_t count = 0;   // snapshots written
+  };
+  static bool due(Series& s, double t, double dt, bool force);
+
+  const Model& model_;
+  std::filesystem::path dir_;
+  Series particles_vtu_, barriers_vtu_, particles_csv_, barrier_log_;
+  std::unique_ptr<PvdIndex> particles_pvd_, barriers_pvd_;
+  std::unique_ptr<CsvLog> log_, groups_, removed_;
+  std::size_t group_count_ = 0;
+};
+
+}  // namespace mpdem

@@ -1,0 +1,157 @@
+#include "sim/particle_contacts.hpp"
+
+#include <algorithm>
+
+#include "core/deterministic_sum.hpp"
+#include "core/parallel.hpp"
+#include "physics/contact_geometry.hpp"
+#include "physics/hertz.hpp"
+#include "physics/rolling.hpp"
+#include "physics/tangential.hpp"
+
+namespace mpdem {
+
+PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req) {
+  const VerletList& list = search.pairs();
+  const std::size_t n = p.size();
+  const std::size_t pairs = list.num_pairs();
+  if (spring_.size() != pairs) {  // first use: no history yet
+    spring_.assign(pairs, Vec3{});
+    vt0_.assign(pairs, Vec3{});
+  }
+  spring_tent_.resize(pairs);
+  vt_tent_.resize(pairs);
+  force_.resize(pairs);
+  torque_first_.resize(pairs);
+  torque_second_.resize(pairs);
+  touching_.resize(pairs);
+  const auto& off = list.offsets();
+  const auto& idx = list.indices();
+  const double dt = req.dt, phi = req.phi;
+  const ContactModel law = law_;
+
+  // 1. Pair laws, one slot at a time; each slot is written by exactly one thread.
+  const auto sums = deterministic_sums<4>(n, [&](std::size_t i, std::array<double, 4>& acc) {
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
+      const std::size_t j = idx[k];
+      const PairGeometry g = pair_geometry(p.x[i], p.radius[i], p.x[j], p.radius[j]);
+      if (!(g.overlap > 0.0)) {
+        touching_[k] = 0;
+        continue;
+      }
+      touching_[k] = 1;
+      const double E = effective_modulus(p.young[i], p.poisson[i], p.young[j], p.poisson[j]);  // (51)
+      const double r = effective_radius(p.radius[i], p.radius[j]);                             // (52)
+      const double m = effective_mass(p.mass[i], p.mass[j]);                                   // (53)
+      const Vec3 vrel = contact_relative_velocity(p.v[i], p.w[i], g.r_Pi, p.v[j], p.w[j], g.r_Pj);  // (60)
+      const double vn = normal_rate(vrel, g.normal);
+      const Vec3 vt = tangential_part(vrel, g.normal);                                         // (61)
+      const NormalForce fn = normal_contact_force(E, r, m, law.xi_n, g.overlap, vn);          // (49)-(50)
+      // Tangential spring (57)-(70): the stored spring on the current tangent plane plus the
+      // trapezoidal increment (64).
+      const double G = effective_shear_modulus(shear_modulus(p.young[i], p.poisson[i]), p.poisson[i],
+                                               shear_modulus(p.young[j], p.poisson[j]), p.poisson[j]);
+      const double kt = tangential_stiffness(G, r, g.overlap);                                 // (65)
+      const double dtc = tangential_damping_coefficient(law.xi_t, m, kt);                      // (67)
+      const Vec3 ds = dt * ((1.0 - phi) * vt0_[k] + phi * vt);
+      const TangentialResult ft = tangential_force(project_spring(spring_[k], g.normal), ds, vt, kt, dtc, law.mu_s,
+                                                   law.mu_d, fn.magnitude);
+      // Torques: tangential force at the contact point (62) and rolling resistance (71).
+      const Vec3 wrel = p.w[i] - p.w[j];
+      const Vec3 roll = rolling_resistance_torque(wrel, law.mu_r, r, fn.magnitude,
+                                                  rolling_inertia_pair(p.inertia[i], p.inertia[j]), dt);
+      force_[k] = fn.magnitude * g.normal + ft.force;
+      torque_first_[k] = cross(g.r_Pi, ft.force) + roll;
+      torque_second_[k] = cross(g.r_Pj, -ft.force) - roll;
+      spring_tent_[k] = ft.spring;
+      vt_tent_[k] = vt;
+      acc[0] += 1.0;
+      acc[1] += hertz_elastic_energy(E, r, g.overlap) + 0.5 * kt * norm2(ft.spring);
+      acc[2] += fn.dissipated_power + (ft.slipped ? 0.0 : ft.dissipated_power);
+      acc[3] += (ft.slipped ? ft.dissipated_power : 0.0) - dot(roll, wrel);
+    }
+  });
+
+  // 2. Gather per particle in a fixed order: own slots, then incoming slots.
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec3 f{}, t{};
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k)
+      if (touching_[k]) {
+        f += force_[k];
+        t += torque_first_[k];
+      }
+    for (std::uint32_t k : search.incoming(i))
+      if (touching_[k]) {
+        f -= force_[k];
+        t += torque_second_[k];
+      }
+    p.force[i] += f;
+    p.torque[i] += t;
+  }
+
+  // 3. Commit: springs of touching pairs are kept, opened contacts forget theirs.
+  if (req.commit) {
+#pragma omp parallel for schedule(static) if (pairs > kParallelThreshold)
+    for (std::size_t k = 0; k < pairs; ++k) {
+      spring_[k] = touching_[k] ? spring_tent_[k] : Vec3{};
+      vt0_[k] = touching_[k] ? vt_tent_[k] : Vec3{};
+    }
+  }
+  return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3]};
+}
+
+std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, const NeighborSearch& search) const {
+  std::vector<PairHistory> h;
+  const VerletList& list = search.pairs();
+  if (spring_.size() != list.num_pairs() || list.size() != p.size()) return h;
+  const auto& off = list.offsets();
+  const auto& idx = list.indices();
+  for (std::size_t i = 0; i < list.size(); ++i)
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k)
+      if (norm2(spring_[k]) > 0.0 || norm2(vt0_[k]) > 0.0)
+        h.push_back({p.id[i], p.id[idx[k]], spring_[k], vt0_[k]});
+  return h;
+}
+
+void ParticleContacts::import_history(const Particles& p, const NeighborSearch& search, std::vector<PairHistory> h) {
+  const VerletList& list = search.pairs();
+  spring_.assign(list.num_pairs(), Vec3{});
+  vt0_.assign(list.num_pairs(), Vec3{});
+  if (h.empty()) return;
+  // Orient every record as (smaller id, larger id); look slots up by binary search.
+  for (PairHistory& r : h)
+    if (r.id_first > r.id_second) {
+      std::swap(r.id_first, r.id_second);
+      r.spring = -r.spring;
+      r.vt0 = -r.vt0;
+    }
+  auto key_less = [](const PairHistory& a, const PairHistory& b) {
+    return a.id_first != b.id_first ? a.id_first < b.id_first : a.id_second < b.id_second;
+  };
+  std::sort(h.begin(), h.end(), key_less);
+  const auto& off = list.offsets();
+  const auto& idx = list.indices();
+  for (std::size_t i = 0; i < list.size(); ++i)
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
+      const std::int64_t a = p.id[i], b = p.id[idx[k]];
+      const bool flip = a > b;
+      PairHistory key{flip ? b : a, flip ? a : b, {}, {}};
+      auto it = std::lower_bound(h.begin(), h.end(), key, key_less);
+      if (it == h.end() || it->id_first != key.id_first || it->id_second != key.id_second) continue;
+      spring_[k] = flip ? -it->spring : it->spring;
+      vt0_[k] = flip ? -it->vt0 : it->vt0;
+    }
+}
+
+Vec3 ParticleContacts::spring_between(const NeighborSearch& search, std::size_t i, std::size_t j) const {
+  const bool flip = j < i;
+  const std::size_t a = flip ? j : i, b = flip ? i : j;
+  const auto& off = search.pairs().offsets();
+  const auto& idx = search.pairs().indices();
+  for (std::size_t k = off[a]; k < off[a + 1]; ++k)
+    if (idx[k] == b && k < spring_.size()) return flip ? -spring_[k] : spring_[k];
+  return {};
+}
+
+}  // namespace mpdem

@@ -1,0 +1,129 @@
+#include "sim/simulation.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "sim/output_manager.hpp"
+#include "sim/progress.hpp"
+#include "sim/run_error.hpp"
+
+namespace mpdem {
+
+Simulation::Simulation(Scene& scene, RunOptions options)
+    : scene_(scene), options_(std::move(options)),
+      interactions_(std::make_unique<Interactions>(scene.model, scene.particles, scene.barriers)),
+      trapezoidal_(scene.model.params), verlet_(scene.model.params) {}
+
+Simulation::~Simulation() = default;
+
+void Simulation::initialize() {
+  if (initialized_) return;
+  interactions_->force_rebuild(scene_.particles, scene_.barriers, true);  // spatial order from the start
+  // Rates at t = 0; commit with dt = 0 stores each contact's tangential velocity, no increment.
+  interactions_->evaluate(scene_.particles, scene_.barriers, EvalRequest{time_, 0.0, 1.0, true});
+  ++evaluations_;
+  initialized_ = true;
+}
+
+StepReport Simulation::advance(double dt) {
+  initialize();
+  const Params& prm = scene_.model.params;
+  interactions_->prepare_step(scene_.particles, scene_.barriers);
+  StepReport rep;
+  if (prm.time.integrator == Integrator::Verlet) {
+    rep = verlet_.step(scene_.particles, scene_.barriers, *interactions_, time_, dt);
+  } else {
+    rep = trapezoidal_.step(scene_.particles, scene_.barriers, *interactions_, time_, dt, prm.time.max_iterations);
+    if (!rep.converged) {
+      evaluations_ += static_cast<std::uint64_t>(rep.evaluations);
+      throw RunError(fmt::format(
+          "the fixed-point iteration did not converge within {} iterations at step {} (t = {:.9g} s, dt = {:.3g} s): "
+          "field '{}' error {:.3g} > tolerance; largest change at particle id {}. Reduce time.dt (the contraction "
+          "factor grows like (phi dt)^2 / m) or raise time.max_iterations.",
+          prm.time.max_iterations, steps_ + 1, time_, dt, kFieldNames[rep.worst_field],
+          rep.last_error[rep.worst_field], rep.worst_particle));
+    }
+  }
+  evaluations_ += static_cast<std::uint64_t>(rep.evaluations);
+  time_ += dt;
+  ++steps_;
+  check_state();
+  return rep;
+}
+
+void Simulation::check_state() {
+  Particles& p = scene_.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!isfinite(p.x[i]) || !isfinite(p.v[i]) || !isfinite(p.w[i]) || !std::isfinite(p.T[i]))
+      throw RunError(fmt::format("non-finite state of particle id {} at step {} (t = {:.9g} s): x = ({}, {}, {}), "
+                                 "v = ({}, {}, {}). The run is unstable; reduce time.dt.",
+                                 p.id[i], steps_, time_, p.x[i].x, p.x[i].y, p.x[i].z, p.v[i].x, p.v[i].y, p.v[i].z));
+  }
+  const DomainParams& d = scene_.model.params.domain;
+  if (!d.bounded) return;
+  std::vector<char> keep(p.size(), 1);
+  std::size_t gone = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3& x = p.x[i];
+    const bool inside = x.x >= d.min.x && x.x <= d.max.x && x.y >= d.min.y && x.y <= d.max.y && x.z >= d.min.z &&
+                        x.z <= d.max.z;
+    if (inside) continue;
+    if (d.on_exit == ExitPolicy::Stop)
+      throw RunError(fmt::format("particle id {} left the domain at step {} (t = {:.9g} s) at ({:.6g}, {:.6g}, {:.6g}); "
+                                 "domain.on_exit = \"stop\"",
+                                 p.id[i], steps_, time_, x.x, x.y, x.z));
+    keep[i] = 0;
+    ++gone;
+    if (output_) output_->removed(p.id[i], time_, x);
+    if (options_.progress)
+      fmt::print(stderr, "\nremoved particle id {} at t = {:.9g} s (left the domain)\n", p.id[i], time_);
+  }
+  if (gone == 0) return;
+  interactions_->remove_particles(p, scene_.barriers, keep);
+  removed_ += gone;
+  // The removed particles' forces on the others are gone: re-evaluate the rates (no increment).
+  interactions_->evaluate(p, scene_.barriers, EvalRequest{time_, 0.0, 1.0, true});
+  ++evaluations_;
+}
+
+RunSummary Simulation::run() {
+  const Params& prm = scene_.model.params;
+  if (options_.write_output) {
+    std::filesystem::path dir = options_.output_dir;
+    if (dir.empty()) dir = scene_.dir / prm.output.dir;
+    output_ = std::make_unique<OutputManager>(scene_.model, dir, scene_.barriers);
+  }
+  initialize();
+  const double duration = prm.time.duration;
+  const double dt = prm.time.dt;
+  if (output_) {
+    output_->snapshots(time_, dt, scene_.particles, scene_.barriers, true);
+    output_->global_log({0, time_, dt, nullptr, evaluations_, 0, removed_}, scene_.particles, interactions_->stats());
+  }
+  Progress progress(duration, prm.output.progress_every, options_.progress);
+  StepReport last;
+  while (time_ < duration - 1e-9 * dt) {
+    const double h = std::min(dt, duration - time_);  // the last step ends exactly at duration
+    last = advance(h);
+    if (output_) {
+      output_->snapshots(time_, h, scene_.particles, scene_.barriers, false);
+      if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) == 0)
+        output_->global_log({steps_, time_, h, &last, evaluations_, 0, removed_}, scene_.particles,
+                            interactions_->stats());
+    }
+    const auto& st = interactions_->stats();
+    progress.update(time_, steps_, st.contacts_pp + st.contacts_pb, scene_.particles.size());
+  }
+  if (output_) {
+    output_->snapshots(time_, dt, scene_.particles, scene_.barriers, true);
+    if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) != 0)
+      output_->global_log({steps_, time_, dt, &last, evaluations_, 0, removed_}, scene_.particles,
+                          interactions_->stats());
+    output_->flush();
+  }
+  progress.finish(time_, steps_);
+  return {time_, steps_, evaluations_, removed_};
+}
+
+}  // namespace mpdem

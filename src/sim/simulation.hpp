@@ -1,0 +1,66 @@
+#pragma once
+// Simulation: the top-down driver of a run. One step reads
+//   neighbour search -> interactions -> integrator -> checks -> output
+// (neighbour search and interactions live in Interactions; the integrator calls them).
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+
+#include "integrate/step_report.hpp"
+#include "integrate/trapezoidal.hpp"
+#include "integrate/verlet.hpp"
+#include "model/scene.hpp"
+#include "sim/interactions.hpp"
+
+namespace mpdem {
+
+class OutputManager;
+
+struct RunOptions {
+  std::filesystem::path output_dir;  // empty: the scene's [output] dir, relative to the scene
+  bool progress = true;              // progress line on stderr
+  bool write_output = true;          // false: no files at all (tests)
+};
+
+struct RunSummary {
+  double time = 0.0;                 // s, simulated time reached
+  std::uint64_t steps = 0;
+  std::uint64_t evaluations = 0;     // interaction evaluations
+  std::size_t removed = 0;           // particles removed at the domain boundary
+};
+
+class Simulation {
+ public:
+  // Takes the scene's model and initial state; the scene must outlive the simulation.
+  Simulation(Scene& scene, RunOptions options);
+  ~Simulation();
+
+  RunSummary run();                  // runs to [time] duration
+
+  // Finer control, for tests and tools.
+  void initialize();                 // first evaluation of the rates at t = 0
+  StepReport advance(double dt);     // one accepted step of length dt (throws RunError on failure)
+  double time() const { return time_; }
+  std::uint64_t steps() const { return steps_; }
+  Particles& particles() { return scene_.particles; }
+  Barriers& barriers() { return scene_.barriers; }
+  Interactions& interactions() { return *interactions_; }
+  const Model& model() const { return scene_.model; }
+
+ private:
+  void check_state();                // NaN / infinity and domain exits
+
+  Scene& scene_;
+  RunOptions options_;
+  std::unique_ptr<Interactions> interactions_;
+  TrapezoidalIntegrator trapezoidal_;
+  VerletIntegrator verlet_;
+  std::unique_ptr<OutputManager> output_;
+  double time_ = 0.0;                // s
+  std::uint64_t steps_ = 0;
+  std::uint64_t evaluations_ = 0;
+  std::size_t removed_ = 0;
+  bool initialized_ = false;
+};
+
+}  // namespace mpdem

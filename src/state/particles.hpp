@@ -1,0 +1,52 @@
+#pragma once
+// Particles as structure-of-arrays: one contiguous array per quantity, index i is one sphere.
+// Constant properties (set at load, reordered with the particles) come first, then the mutable
+// state the integrators advance, then the accumulators the interactions fill each evaluation.
+// Ids are stable user ids; the array index may change when particles are reordered or removed.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/rotation.hpp"
+#include "core/vec3.hpp"
+
+namespace mpdem {
+
+struct Particles {
+  // --- constant properties [N] ---
+  std::vector<std::int64_t> id;        // user id, unique
+  std::vector<int> material;           // index into Model::materials
+  std::vector<double> radius;          // m
+  std::vector<double> density;         // kg/m^3
+  std::vector<double> mass;            // kg, 4/3 pi R^3 rho
+  std::vector<double> inertia;         // kg m^2, 2/5 m R^2   (32)
+  std::vector<double> young;           // Pa
+  std::vector<double> poisson;         // -
+  std::vector<double> charge;          // C
+  std::vector<double> heat_capacity;   // J/(kg K)
+  std::vector<double> conductivity;    // W/(m K)
+  std::vector<double> emissivity;      // -
+  // --- state [N] ---
+  std::vector<Vec3> x;                 // m, centre
+  std::vector<Vec3> v;                 // m/s, velocity
+  std::vector<Vec3> w;                 // rad/s, angular velocity
+  std::vector<Quat> q;                 // orientation (unit quaternion, body -> world)
+  std::vector<double> T;               // K, temperature
+  // --- accumulators, overwritten by every interaction evaluation [N] ---
+  std::vector<Vec3> force;             // N, total force
+  std::vector<Vec3> torque;            // N m, total torque about the centre
+  std::vector<double> heat;            // W, total heat flow into the particle
+
+  std::size_t size() const { return id.size(); }
+  void resize(std::size_t n);
+  // Appends one particle; derived mass and inertia are computed from radius and density.
+  void add(std::int64_t pid, int mat, double r, double rho, const Vec3& pos, const Vec3& vel);
+  // Recomputes mass and inertia of particle i from its radius and density.
+  void update_mass(std::size_t i);
+  // Reorders every array: new index k holds old particle order[k].
+  void permute(const std::vector<std::uint32_t>& order);
+  // Keeps particles whose keep[i] is true, in order.
+  void compact(const std::vector<char>& keep);
+};
+
+}  // namespace mpdem

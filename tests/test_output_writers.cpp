@@ -1,0 +1,459 @@
+// Output writers read back by an independent reader: VTU/PVD through meshio and xml.etree
+// (tests/read_vtu.py run with /usr/bin/python3), CSV through std::stod. The ASCII formats use
+// 17 significant digits, so every double must come back bit for bit (tolerance: exact).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "io/atomic_file.hpp"
+#include "io/csv_log.hpp"
+#include "io/pvd_index.hpp"
+#include "io/vtu_writer.hpp"
+#include "state/barriers.hpp"
+#include "state/particles.hpp"
+
+#ifndef MPDEM_SOURCE_DIR
+#error "MPDEM_SOURCE_DIR must name the repository root (tests/read_vtu.py lives there)"
+#endif
+
+namespace fs = std::filesystem;
+using namespace mpdem;
+
+namespace {
+
+// A fresh folder per test, removed afterwards.
+class OutputTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir = fs::temp_directory_path() /
+          ("mpdem_output_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  void TearDown() override { fs::remove_all(dir); }
+  fs::path dir;
+};
+
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string item;
+  std::istringstream in(s);
+  while (std::getline(in, item, sep)) out.push_back(item);
+  return out;
+}
+
+std::vector<std::string> lines_of(const std::string& text) { return split(text, '\n'); }
+
+std::vector<fs::path> files_in(const fs::path& dir) {
+  std::vector<fs::path> out;
+  for (const auto& e : fs::directory_iterator(dir)) out.push_back(e.path().filename());
+  return out;
+}
+
+// Runs the independent reader; fails the test if it exits non-zero.
+std::string run_reader(const fs::path& file, const std::string& option = "") {
+  const std::string cmd = std::string("/usr/bin/python3 '") + MPDEM_SOURCE_DIR + "/tests/read_vtu.py' " +
+                          option + " '" + file.string() + "' 2>&1";
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (!pipe) throw std::runtime_error("popen failed");
+  std::string out;
+  char buf[4096];
+  std::size_t n;
+  while ((n = std::fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
+  const int status = ::pclose(pipe);
+  EXPECT_EQ(status, 0) << "reader failed on " << file << ":\n" << out;
+  return out;
+}
+
+// One array printed by read_vtu.py: tuples x components tokens.
+struct Array {
+  std::size_t tuples = 0, components = 0;
+  std::vector<std::string> tokens;
+  double d(std::size_t t, std::size_t c) const { return std::stod(tokens.at(t * components + c)); }
+  long long i(std::size_t t, std::size_t c) const { return std::stoll(tokens.at(t * components + c)); }
+};
+
+// Key "kind/name", e.g. "point_data/velocity", "cells/vertex", "field_data/TimeValue".
+std::map<std::string, Array> read_vtu(const fs::path& file) {
+  std::istringstream in(run_reader(file));
+  std::map<std::string, Array> out;
+  std::string kind, name;
+  while (in >> kind >> name) {
+    Array a;
+    in >> a.tuples >> a.components;
+    a.tokens.resize(a.tuples * a.components);
+    for (auto& t : a.tokens) in >> t;
+    out[kind + "/" + name] = std::move(a);
+  }
+  return out;
+}
+
+struct Listed {
+  double time;
+  std::string file;
+};
+std::vector<Listed> read_pvd(const fs::path& file) {
+  std::vector<Listed> out;
+  for (const std::string& line : lines_of(run_reader(file))) {
+    if (line.empty()) continue;
+    std::istringstream in(line);
+    std::string tag, t;
+    in >> tag >> t;
+    EXPECT_EQ(tag, "dataset") << line;
+    std::string rest;
+    std::getline(in, rest);
+    out.push_back({std::stod(t), rest.substr(1)});  // rest starts with the separating space
+  }
+  return out;
+}
+
+// Particles whose every output quantity is a distinct, non-round double.
+Particles make_particles(std::size_t n) {
+  Particles p;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double s = static_cast<double>(k) + 1.0;
+    p.add(1'000'000'000'000LL + 7 * static_cast<std::int64_t>(k), static_cast<int>(k % 3), 1e-3 * s / 3.0,
+          2500.0 + s / 7.0, {0.1 * s + 1.0 / 3.0, -std::numbers::pi * s, 1e-7 / s}, {s / 9.0, -2.0 / s, 1e3 / 7.0});
+    p.w[k] = {std::sqrt(s), -1.0 / (3.0 * s), 1e-300 * s};
+    p.q[k] = quat_normalized({std::cos(s), std::sin(s) / 3.0, -0.2 * s, 0.1});
+    p.force[k] = {6.02e23 * s / 7.0, -std::exp(-s), 1.0 / 11.0};
+    p.T[k] = 293.15 + s / 3.0;
+    p.charge[k] = -1.602176634e-19 * s / 3.0;
+  }
+  return p;
+}
+
+void expect_vec(const Array& a, std::size_t t, const Vec3& v) {
+  ASSERT_EQ(a.components, 3u);
+  EXPECT_EQ(a.d(t, 0), v.x);
+  EXPECT_EQ(a.d(t, 1), v.y);
+  EXPECT_EQ(a.d(t, 2), v.z);
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Atomic writes
+
+TEST_F(OutputTest, AtomicWriteUsesTemporaryBesideTargetAndLeavesNoneBehind) {
+  const fs::path file = dir / "a.txt";
+  const fs::path expected_tmp = dir / ("a.txt.tmp-" + std::to_string(::getpid()));
+  EXPECT_EQ(temporary_path_for(file), expected_tmp);
+  write_file_atomically(file, [&](std::ostream& os) {
+    // While the body runs the final name does not exist yet; the data goes to the temporary.
+    EXPECT_FALSE(fs::exists(file));
+    EXPECT_TRUE(fs::exists(expected_tmp));
+    os << "new content\n";
+  });
+  EXPECT_EQ(slurp(file), "new content\n");
+  EXPECT_EQ(files_in(dir), std::vector<fs::path>{"a.txt"});
+}
+
+TEST_F(OutputTest, ThrowingBodyLeavesPreviousFileIntact) {
+  const fs::path file = dir / "a.txt";
+  write_file_atomically(file, [](std::ostream& os) { os << "old complete file\n"; });
+  struct BodyError {};
+  EXPECT_THROW(write_file_atomically(file,
+                                     [](std::ostream& os) {
+                                       os << std::string(100000, 'x');  // more than one buffer
+                                       throw BodyError{};
+                                     }),
+               BodyError);
+  EXPECT_EQ(slurp(file), "old complete file\n");
+  EXPECT_EQ(files_in(dir), std::vector<fs::path>{"a.txt"});
+}
+
+TEST_F(OutputTest, FailedStreamThrowsNamingPathAndKeepsPreviousFile) {
+  const fs::path file = dir / "a.txt";
+  write_file_atomically(file, [](std::ostream& os) { os << "old\n"; });
+  try {
+    write_file_atomically(file, [](std::ostream& os) {
+      os << "half";
+      os.setstate(std::ios::badbit);  // what a full disk does to the stream
+    });
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(slurp(file), "old\n");
+  EXPECT_EQ(files_in(dir), std::vector<fs::path>{"a.txt"});
+
+  const fs::path unreachable = dir / "no_such_folder" / "b.txt";
+  try {
+    write_file_atomically(unreachable, [](std::ostream& os) { os << "x"; });
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(unreachable.string()), std::string::npos) << e.what();
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// VTU / PVD
+
+TEST_F(OutputTest, ParticleVtuRoundTripsThroughMeshio) {
+  const Particles p = make_particles(5);
+  const double time = 0.1 + 1.0 / 3.0 * 1e-3;
+  const fs::path file = dir / "particles.vtu";
+  write_particles_vtu(file, p, time);
+  EXPECT_EQ(files_in(dir), std::vector<fs::path>{"particles.vtu"});
+  const auto r = read_vtu(file);
+
+  std::vector<std::string> keys;
+  for (const auto& [k, a] : r) keys.push_back(k);
+  const std::vector<std::string> expected_keys = {
+      "cells/vertex", "field_data/TimeValue", "point_data/angular_velocity", "point_data/charge",
+      "point_data/force", "point_data/id", "point_data/material", "point_data/orientation",
+      "point_data/radius", "point_data/temperature", "point_data/velocity", "points/Points"};
+  ASSERT_EQ(keys, expected_keys);  // std::map keeps them sorted
+
+  ASSERT_EQ(r.at("field_data/TimeValue").tokens.size(), 1u);
+  EXPECT_EQ(r.at("field_data/TimeValue").d(0, 0), time);
+  const Array& cells = r.at("cells/vertex");
+  ASSERT_EQ(cells.tuples, p.size());
+  ASSERT_EQ(cells.components, 1u);
+  for (const auto& [k, a] : r)
+    if (k != "field_data/TimeValue") {
+      EXPECT_EQ(a.tuples, p.size()) << k;
+    }
+
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    EXPECT_EQ(cells.i(i, 0), static_cast<long long>(i));
+    expect_vec(r.at("points/Points"), i, p.x[i]);
+    EXPECT_EQ(r.at("point_data/id").i(i, 0), p.id[i]);
+    EXPECT_EQ(r.at("point_data/material").i(i, 0), p.material[i]);
+    EXPECT_EQ(r.at("point_data/radius").d(i, 0), p.radius[i]);
+    expect_vec(r.at("point_data/velocity"), i, p.v[i]);
+    expect_vec(r.at("point_data/angular_velocity"), i, p.w[i]);
+    expect_vec(r.at("point_data/force"), i, p.force[i]);
+    EXPECT_EQ(r.at("point_data/temperature").d(i, 0), p.T[i]);
+    EXPECT_EQ(r.at("point_data/charge").d(i, 0), p.charge[i]);
+    const Array& q = r.at("point_data/orientation");
+    ASSERT_EQ(q.components, 4u);
+    EXPECT_EQ(q.d(i, 0), p.q[i].w);
+    EXPECT_EQ(q.d(i, 1), p.q[i].x);
+    EXPECT_EQ(q.d(i, 2), p.q[i].y);
+    EXPECT_EQ(q.d(i, 3), p.q[i].z);
+  }
+}
+
+// meshio 5 cannot read a grid without cells, so the empty case is checked with xml.etree:
+// well-formed, zero points and cells, every array empty except the time.
+TEST_F(OutputTest, EmptyParticleVtuIsWellFormed) {
+  const fs::path file = dir / "empty.vtu";
+  write_particles_vtu(file, Particles{}, 2.5);
+  const auto lines = lines_of(run_reader(file, "--xml"));
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines[0], "piece 0 0");
+  int arrays = 0;
+  for (std::size_t k = 1; k < lines.size(); ++k) {
+    std::istringstream in(lines[k]);
+    std::string tag, name;
+    std::size_t count = 99;
+    in >> tag >> name >> count;
+    EXPECT_EQ(tag, "array");
+    EXPECT_EQ(count, name == "TimeValue" ? 1u : 0u) << lines[k];
+    ++arrays;
+  }
+  EXPECT_EQ(arrays, 1 + 9 + 1 + 3);  // time, 9 point arrays, points, 3 cell arrays
+}
+
+TEST_F(OutputTest, BarrierVtuHasMovedTrianglesAndLoads) {
+  Barriers b;
+  const MotionLaw law0{{0.5, 0.0, -0.25}, {0.01, 0.02, 0.0}, 3.0, {0.0, 0.0, 0.003}, 7.0};
+  const MotionLaw law1{};  // static
+  const MotionLaw law2{{0.0, -1.0 / 3.0, 0.0}, {}, 0.0, {}, 0.0};
+  ASSERT_TRUE(b.add(11, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0, 1e9, 0.3, law0, 1e-3, 300.0));
+  ASSERT_TRUE(b.add(12, {0.1, 0.2, 0.3}, {1.1, 0.2, 0.3}, {0.1, 0.2, 1.3}, 1, 1e9, 0.3, law1, 1e-3, 300.0));
+  ASSERT_TRUE(b.add(13, {-1, -1, 2}, {1.0 / 3.0, -1, 2}, {-1, std::sqrt(2.0), 2.5}, 1, 1e9, 0.3, law2, 1e-3, 300.0));
+  const double time = 0.37;
+  b.move_to(time);
+  for (std::size_t e = 0; e < b.size(); ++e) {
+    const double s = static_cast<double>(e) + 1.0;
+    b.force[e] = {s / 3.0, -s * 1e5 / 7.0, std::exp(s)};
+    b.moment[e] = {1e-9 / s, s / 13.0, -std::sqrt(s)};
+    b.pressure[e] = 1e6 / (3.0 * s);
+  }
+  const fs::path file = dir / "barriers.vtu";
+  write_barriers_vtu(file, b, time);
+  const auto r = read_vtu(file);
+
+  std::vector<std::string> keys;
+  for (const auto& [k, a] : r) keys.push_back(k);
+  const std::vector<std::string> expected_keys = {
+      "cell_data/force",    "cell_data/group",  "cell_data/id",       "cell_data/moment",
+      "cell_data/normal",   "cell_data/pressure", "cell_data/velocity", "cells/triangle",
+      "field_data/TimeValue", "points/Points"};
+  ASSERT_EQ(keys, expected_keys);
+  EXPECT_EQ(r.at("field_data/TimeValue").d(0, 0), time);
+
+  const Array& pts = r.at("points/Points");
+  const Array& tri = r.at("cells/triangle");
+  ASSERT_EQ(pts.tuples, 3 * b.size());
+  ASSERT_EQ(tri.tuples, b.size());
+  ASSERT_EQ(tri.components, 3u);
+  const MotionLaw* laws[] = {&law0, &law1, &law2};
+  for (std::size_t e = 0; e < b.size(); ++e) {
+    const Vec3 rest[3] = {b.p0[e], b.p1[e], b.p2[e]};
+    const Vec3 u = laws[e]->a * time + laws[e]->A * std::sin(laws[e]->w1 * time) +
+                   laws[e]->B * std::cos(laws[e]->w2 * time);  // u(t), physics.md (97)
+    for (int k = 0; k < 3; ++k) {
+      const long long vtx = tri.i(e, static_cast<std::size_t>(k));
+      ASSERT_GE(vtx, 0);
+      ASSERT_LT(vtx, static_cast<long long>(pts.tuples));
+      // Written positions are the moved vertices, exactly rest + u(t).
+      expect_vec(pts, static_cast<std::size_t>(vtx), rest[k] + u);
+    }
+    EXPECT_EQ(r.at("cell_data/id").i(e, 0), b.id[e]);
+    EXPECT_EQ(r.at("cell_data/group").i(e, 0), b.group[e]);
+    expect_vec(r.at("cell_data/force"), e, b.force[e]);
+    expect_vec(r.at("cell_data/moment"), e, b.moment[e]);
+    EXPECT_EQ(r.at("cell_data/pressure").d(e, 0), b.pressure[e]);
+    // Normal read back against the test's own cross product; tolerance 1e-15 for the rounding
+    // of a normalised vector computed along a different path.
+    const Vec3 n = cross(rest[1] - rest[0], rest[2] - rest[0]);
+    const Vec3 nn = n / norm(n);
+    const Array& rn = r.at("cell_data/normal");
+    EXPECT_NEAR(rn.d(e, 0), nn.x, 1e-15);
+    EXPECT_NEAR(rn.d(e, 1), nn.y, 1e-15);
+    EXPECT_NEAR(rn.d(e, 2), nn.z, 1e-15);
+    expect_vec(r.at("cell_data/velocity"), e, b.velocity[e]);
+  }
+  // The first element really moved, so the check above distinguishes moved from rest positions.
+  EXPECT_GT(std::abs(pts.d(0, 0) - b.p0[0].x), 0.1);
+}
+
+TEST_F(OutputTest, PvdListsEverySnapshotWithItsTime) {
+  const fs::path pvd = dir / "particles.pvd";
+  PvdIndex index(pvd);
+  EXPECT_TRUE(read_pvd(pvd).empty());  // valid, empty collection before the first snapshot
+
+  Particles p = make_particles(3);
+  std::vector<double> times;
+  for (int k = 0; k < 4; ++k) {
+    const double t = 0.1 * k + 1e-3 / 3.0;
+    char name[32];
+    std::snprintf(name, sizeof name, "particles_%06d.vtu", k);
+    p.x[0].x += 0.01;  // each snapshot differs
+    write_particles_vtu(dir / name, p, t);
+    index.add(t, name);
+    times.push_back(t);
+
+    const auto listed = read_pvd(pvd);  // the .pvd is complete after every add
+    ASSERT_EQ(listed.size(), times.size());
+    for (std::size_t j = 0; j < listed.size(); ++j) {
+      char expected_name[32];
+      std::snprintf(expected_name, sizeof expected_name, "particles_%06d.vtu", static_cast<int>(j));
+      EXPECT_EQ(listed[j].time, times[j]);
+      EXPECT_EQ(listed[j].file, expected_name);
+    }
+  }
+  // Every listed file exists beside the .pvd and carries the same time.
+  for (const auto& l : read_pvd(pvd)) EXPECT_EQ(read_vtu(dir / l.file).at("field_data/TimeValue").d(0, 0), l.time);
+
+  // Resume at the second snapshot's time: later entries go, new ones follow; XML escaping holds.
+  PvdIndex resumed(pvd, times[1]);
+  ASSERT_EQ(resumed.entries().size(), 2u);
+  resumed.add(0.25, "a & <b>.vtu");
+  const auto listed = read_pvd(pvd);
+  ASSERT_EQ(listed.size(), 3u);
+  EXPECT_EQ(listed[0].time, times[0]);
+  EXPECT_EQ(listed[1].time, times[1]);
+  EXPECT_EQ(listed[2].time, 0.25);
+  EXPECT_EQ(listed[2].file, "a & <b>.vtu");
+  for (const auto& f : files_in(dir)) EXPECT_EQ(f.string().find(".tmp-"), std::string::npos) << f;
+}
+
+// ---------------------------------------------------------------------------------------------
+// CSV
+
+TEST_F(OutputTest, CsvLogHeaderAndRowsRoundTrip) {
+  const fs::path file = dir / "log.csv";
+  const std::vector<std::vector<double>> rows = {
+      {0.1, 3.0, 1.0 / 3.0},
+      {1e-300, 9007199254740991.0, 9007199254740992.0},  // 2^53 - 1 and 2^53
+      {-2.5, 1e20, -0.0}};
+  {
+    CsvLog log(file, {"time", "step", "energy"});
+    EXPECT_EQ(slurp(file), "time,step,energy\n");  // header at once
+    log.row(rows[0]);
+    EXPECT_EQ(slurp(file), "time,step,energy\n");  // rows are buffered
+    log.flush();
+    EXPECT_EQ(lines_of(slurp(file)).size(), 2u);
+    log.row(rows[1]);
+    EXPECT_THROW(log.row(std::vector<double>{1.0, 2.0}), std::logic_error);
+    EXPECT_THROW(log.row(std::vector<double>{1.0, 2.0, 3.0, 4.0}), std::logic_error);
+    log.row(rows[2]);
+  }  // destructor flushes
+  const auto lines = lines_of(slurp(file));
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0], "time,step,energy");
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const auto f = split(lines[r + 1], ',');
+    ASSERT_EQ(f.size(), 3u) << lines[r + 1];
+    for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(std::stod(f[c]), rows[r][c]) << lines[r + 1];
+  }
+  // Integral values below 2^53 are plain integers; others keep the 17-digit form.
+  EXPECT_EQ(split(lines[1], ',')[1], "3");
+  EXPECT_EQ(split(lines[2], ',')[1], "9007199254740991");
+  EXPECT_EQ(split(lines[3], ',')[1].find_first_of("eE") != std::string::npos, true);  // 1e20
+}
+
+TEST_F(OutputTest, CsvLogAppendContinuesAndDropsCutLine) {
+  const fs::path file = dir / "log.csv";
+  {
+    CsvLog log(file, {"t", "x"});
+    log.row(std::vector<double>{1.0, 0.5});
+  }
+  append_complete_lines(file, "2,0.7");  // a line cut by a kill: no newline
+  {
+    CsvLog log(file, {"t", "x"}, CsvLog::Open::append);
+    log.row(std::vector<double>{2.0, 0.75});
+  }
+  EXPECT_EQ(slurp(file), "t,x\n1,0.5\n2,0.75\n");
+  EXPECT_THROW(CsvLog(file, {"t", "y"}, CsvLog::Open::append), std::runtime_error);
+  EXPECT_EQ(slurp(file), "t,x\n1,0.5\n2,0.75\n");
+  EXPECT_THROW(CsvLog(dir / "bad.csv", {"a,b"}), std::invalid_argument);
+}
+
+TEST_F(OutputTest, ParticleCsvSnapshotRoundTrips) {
+  const Particles p = make_particles(4);
+  const double time = 1.0 / 7.0;
+  const fs::path file = dir / "particles_000001.csv";
+  write_particles_csv(file, p, time);
+  EXPECT_EQ(files_in(dir), std::vector<fs::path>{"particles_000001.csv"});
+  const auto lines = lines_of(slurp(file));
+  ASSERT_EQ(lines.size(), p.size() + 1);
+  EXPECT_EQ(lines[0], "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz");
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const auto f = split(lines[i + 1], ',');
+    ASSERT_EQ(f.size(), 18u) << lines[i + 1];
+    const double expected[18] = {time,         0.0,          p.x[i].x,   p.x[i].y,     p.x[i].z,
+                                 p.v[i].x,     p.v[i].y,     p.v[i].z,   p.w[i].x,     p.w[i].y,
+                                 p.w[i].z,     p.radius[i],  0.0,        p.T[i],       p.charge[i],
+                                 p.force[i].x, p.force[i].y, p.force[i].z};
+    for (std::size_t c = 0; c < 18; ++c) {
+      if (c == 1) EXPECT_EQ(std::stoll(f[c]), p.id[i]);
+      else if (c == 12) EXPECT_EQ(std::stoll(f[c]), p.material[i]);
+      else EXPECT_EQ(std::stod(f[c]), expected[c]) << "column " << c << " of " << lines[i + 1];
+    }
+  }
+}

@@ -14,6 +14,7 @@ struct StepReport {
   bool converged = true;
   int iterations = 0;          // fixed-point iterations (0 for explicit steps)
   int evaluations = 0;         // interaction evaluations, including the commit evaluation
+  bool two_cycle = false;      // accepted as the midpoint of a two-cycle (a force discontinuity)
   // eps per field after the first iteration (eps_0) and after the last (eps_K), as defined in
   // docs/integrators.md; 0 for fields that are not integrated.
   std::array<double, kFieldCount> first_error{};

@@ -25,6 +25,7 @@ class TrapezoidalIntegrator {
  private:
   void save_start(const Particles& p);
   void restore_start(Particles& p) const;
+  void accept_midpoint(Particles& p);          // y <- (y_K + y_(K-1)) / 2
 
   const Params& params_;
   // Start-of-step state and rates [N]
@@ -34,6 +35,9 @@ class TrapezoidalIntegrator {
   std::vector<Vec3> force0_, torque0_;         // N, N m (to restore the rates on failure)
   std::vector<double> heat0_;                  // W
   std::vector<Vec3> alpha_;                    // rad, current rotation increment estimate
+  // Previous iterate y_(K-1), to recognise a two-cycle (see docs/integrators.md) [N]
+  std::vector<Vec3> xp_, vp_, wp_, alphap_;    // m, m/s, rad/s, rad
+  std::vector<double> Tp_;                     // K
 };
 
 }  // namespace mpdem

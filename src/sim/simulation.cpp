@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "integrate/adaptive_step.hpp"
 #include "sim/output_manager.hpp"
 #include "sim/progress.hpp"
 #include "sim/run_error.hpp"
@@ -13,7 +14,7 @@ namespace mpdem {
 Simulation::Simulation(Scene& scene, RunOptions options)
     : scene_(scene), options_(std::move(options)),
       interactions_(std::make_unique<Interactions>(scene.model, scene.particles, scene.barriers)),
-      trapezoidal_(scene.model.params), verlet_(scene.model.params) {}
+      trapezoidal_(scene.model.params), verlet_(scene.model.params), dt_(scene.model.params.time.dt) {}
 
 Simulation::~Simulation() = default;
 
@@ -50,6 +51,38 @@ StepReport Simulation::advance(double dt) {
   ++steps_;
   check_state();
   return rep;
+}
+
+StepReport Simulation::advance_adaptive(double limit) {
+  initialize();
+  const Params& prm = scene_.model.params;
+  interactions_->prepare_step(scene_.particles, scene_.barriers);
+  for (;;) {
+    const double h = std::min(dt_, limit);
+    StepReport rep = trapezoidal_.step(scene_.particles, scene_.barriers, *interactions_, time_, h,
+                                       prm.time.desired_iterations);
+    evaluations_ += static_cast<std::uint64_t>(rep.evaluations);
+    const double factor = step_factor(rep, prm);
+    if (rep.converged) {
+      time_ += h;
+      ++steps_;
+      // A step shortened to land on `limit` says nothing about the step to take next.
+      if (h == dt_) dt_ = std::clamp(factor * h, prm.time.dt_min, prm.time.dt_max);
+      check_state();
+      return rep;
+    }
+    if (h <= prm.time.dt_min * (1.0 + 1e-12))
+      throw RunError(fmt::format(
+          "the fixed-point iteration did not converge within time.desired_iterations = {} at the smallest step "
+          "time.dt_min = {:.3g} s (step {}, t = {:.9g} s): field '{}' error {:.3g}; largest change at particle id {}. "
+          "Reduce time.dt_min or loosen [tolerance] {}.",
+          prm.time.desired_iterations, prm.time.dt_min, steps_ + 1, time_, kFieldNames[rep.worst_field],
+          rep.last_error[rep.worst_field], rep.worst_particle, kFieldNames[rep.worst_field]));
+    ++redone_;
+    // Phi < 1 here (eps_K > TOL at K = K_D); the cap guarantees progress towards dt_min.
+    constexpr double kLargestRedoFactor = 0.9;
+    dt_ = std::max(prm.time.dt_min, std::min(factor, kLargestRedoFactor) * h);
+  }
 }
 
 void Simulation::check_state() {
@@ -104,12 +137,16 @@ RunSummary Simulation::run() {
   Progress progress(duration, prm.output.progress_every, options_.progress);
   StepReport last;
   while (time_ < duration - 1e-9 * dt) {
-    const double h = std::min(dt, duration - time_);  // the last step ends exactly at duration
-    last = advance(h);
+    const double t0 = time_;
+    if (prm.time.adaptive && prm.time.integrator == Integrator::Trapezoidal)
+      last = advance_adaptive(duration - time_);
+    else
+      last = advance(std::min(dt, duration - time_));  // the last step ends exactly at duration
+    const double h = time_ - t0;
     if (output_) {
       output_->snapshots(time_, h, scene_.particles, scene_.barriers, false);
       if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) == 0)
-        output_->global_log({steps_, time_, h, &last, evaluations_, 0, removed_}, scene_.particles,
+        output_->global_log({steps_, time_, h, &last, evaluations_, redone_, removed_}, scene_.particles,
                             interactions_->stats());
     }
     const auto& st = interactions_->stats();
@@ -118,7 +155,7 @@ RunSummary Simulation::run() {
   if (output_) {
     output_->snapshots(time_, dt, scene_.particles, scene_.barriers, true);
     if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) != 0)
-      output_->global_log({steps_, time_, dt, &last, evaluations_, 0, removed_}, scene_.particles,
+      output_->global_log({steps_, time_, dt_, &last, evaluations_, redone_, removed_}, scene_.particles,
                           interactions_->stats());
     output_->flush();
   }

@@ -40,6 +40,13 @@ class Simulation {
   // Finer control, for tests and tools.
   void initialize();                 // first evaluation of the rates at t = 0
   StepReport advance(double dt);     // one accepted step of length dt (throws RunError on failure)
+  // One accepted adaptive step (physics.md section 10): tries the current step, shrinks and
+  // redoes it until the iteration converges within desired_iterations, then sets the next dt.
+  // `limit` caps the step (to land exactly on the end time).
+  StepReport advance_adaptive(double limit);
+  double current_dt() const { return dt_; }
+  std::uint64_t redone_steps() const { return redone_; }
+  std::uint64_t evaluations() const { return evaluations_; }
   double time() const { return time_; }
   std::uint64_t steps() const { return steps_; }
   Particles& particles() { return scene_.particles; }
@@ -59,6 +66,8 @@ class Simulation {
   double time_ = 0.0;                // s
   std::uint64_t steps_ = 0;
   std::uint64_t evaluations_ = 0;
+  std::uint64_t redone_ = 0;         // adaptive steps redone with a smaller dt
+  double dt_ = 0.0;                  // s, step the next adaptive step tries
   std::size_t removed_ = 0;
   bool initialized_ = false;
 };

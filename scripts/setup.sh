@@ -5,5 +5,5 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
 ./build/mpdem check examples/demo/scene.toml
-./build/mpdem run examples/demo/scene.toml --output build/demo-output
+./build/mpdem run examples/demo/scene.toml --output build/demo-output --overwrite
 echo "demo output in build/demo-output (open particles.pvd and barriers.pvd in ParaView)"

@@ -108,3 +108,21 @@ TEST(Cli, SmallRunWritesOutputsAndCheckRecommendsAStep) {
   EXPECT_NE(r.err.find("done: t = 0.005 s"), std::string::npos) << r.err;  // progress summary
   fs::remove_all(d);
 }
+
+TEST(Cli, NonEmptyOutputFolderNeedsOverwrite) {
+  const fs::path d = fresh_dir("overwrite");
+  write_text(d / "scene.toml", scene_text("[time]\nduration = 0.002\ndt = 1e-5\nintegrator = \"verlet\"\n"));
+  write_text(d / "p.csv", kParticles);
+  ASSERT_EQ(run_mpdem("run scene.toml --quiet", d).status, 0);
+  write_text(d / "output" / "notes.txt", "mine");
+  const std::string first_log = slurp(d / "output" / "log.csv");
+  const CommandResult again = run_mpdem("run scene.toml --quiet", d);
+  EXPECT_EQ(again.status, 2);
+  EXPECT_NE(again.err.find("not empty"), std::string::npos) << again.err;
+  EXPECT_NE(again.err.find("--overwrite"), std::string::npos) << again.err;
+  EXPECT_EQ(slurp(d / "output" / "log.csv"), first_log);  // untouched
+  const CommandResult over = run_mpdem("run scene.toml --quiet --overwrite", d);
+  EXPECT_EQ(over.status, 0) << over.err;
+  EXPECT_EQ(slurp(d / "output" / "notes.txt"), "mine");  // only mpdem's own outputs are replaced
+  fs::remove_all(d);
+}

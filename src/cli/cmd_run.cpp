@@ -2,6 +2,7 @@
 #include <omp.h>
 
 #include "cli/commands.hpp"
+#include "cli/output_folder.hpp"
 #include "cli/scene_summary.hpp"
 #include "sim/simulation.hpp"
 
@@ -14,6 +15,7 @@ int run_command(const RunArgs& args) {
   RunOptions opt;
   opt.output_dir = args.output;
   opt.progress = !args.quiet;
+  prepare_output_folder(output_dir_for(scene, opt), args.overwrite);
   Simulation sim(scene, opt);
   const RunSummary s = sim.run();
   if (!args.quiet)

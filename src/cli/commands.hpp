@@ -10,6 +10,7 @@ struct RunArgs {
   std::filesystem::path output;  // empty = scene's [output] dir
   int threads = 0;               // 0 = OpenMP default
   bool quiet = false;
+  bool overwrite = false;        // replace the outputs of an earlier run in the output folder
 };
 
 int run_command(const RunArgs& args);

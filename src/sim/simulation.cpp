@@ -11,6 +11,11 @@
 
 namespace mpdem {
 
+std::filesystem::path output_dir_for(const Scene& scene, const RunOptions& options) {
+  if (!options.output_dir.empty()) return options.output_dir;
+  return scene.dir / scene.model.params.output.dir;
+}
+
 Simulation::Simulation(Scene& scene, RunOptions options)
     : scene_(scene), options_(std::move(options)),
       interactions_(std::make_unique<Interactions>(scene.model, scene.particles, scene.barriers)),
@@ -123,9 +128,7 @@ void Simulation::check_state() {
 RunSummary Simulation::run() {
   const Params& prm = scene_.model.params;
   if (options_.write_output) {
-    std::filesystem::path dir = options_.output_dir;
-    if (dir.empty()) dir = scene_.dir / prm.output.dir;
-    output_ = std::make_unique<OutputManager>(scene_.model, dir, scene_.barriers);
+    output_ = std::make_unique<OutputManager>(scene_.model, output_dir_for(scene_, options_), scene_.barriers);
   }
   initialize();
   const double duration = prm.time.duration;

@@ -29,6 +29,9 @@ struct RunSummary {
   std::size_t removed = 0;           // particles removed at the domain boundary
 };
 
+// Output folder of a run: options.output_dir, else the scene's [output] dir relative to the scene.
+std::filesystem::path output_dir_for(const Scene& scene, const RunOptions& options);
+
 class Simulation {
  public:
   // Takes the scene's model and initial state; the scene must outlive the simulation.

@@ -1,0 +1,30 @@
+#include "cli/output_folder.hpp"
+
+#include <array>
+#include <string_view>
+
+#include "io/input_error.hpp"
+
+namespace mpdem::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+// Everything a run writes into its output folder (docs/output.md).
+constexpr std::array<std::string_view, 11> kOutputs{
+    "particles",   "particles.pvd", "barriers",         "barriers.pvd", "particles_csv", "log.csv",
+    "barrier_groups.csv", "removed.csv", "checkpoint.bin", "thermal_log.csv", "warnings.txt"};
+}  // namespace
+
+void prepare_output_folder(const fs::path& dir, bool overwrite) {
+  if (!fs::exists(dir) || fs::is_empty(dir)) return;
+  if (!fs::is_directory(dir))
+    throw InputError(dir.string(), 0, "", "the output folder is a file; choose another with --output");
+  if (!overwrite)
+    throw InputError(dir.string(), 0, "",
+                     "the output folder is not empty; pass --overwrite to replace the previous run's outputs, "
+                     "--resume CHECKPOINT to continue it, or choose another folder with --output");
+  for (std::string_view name : kOutputs) fs::remove_all(dir / name);
+}
+
+}  // namespace mpdem::cli

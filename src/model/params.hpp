@@ -122,6 +122,13 @@ struct OutputParams {
   double progress_every = 10.0;           // s of wall time between plain progress lines
 };
 
+// Instability detection: the run stops with a message naming particles, time and step.
+struct CheckParams {
+  double max_overlap = 0.05;          // -, largest overlap / smaller radius (0 = off)
+  double energy_jump = 0.5;           // -, largest one-step rise of the energy balance relative
+                                      //    to kinetic + rotational + elastic energy (0 = off)
+};
+
 struct Params {
   TimeParams time;
   ToleranceParams tolerance;
@@ -133,6 +140,7 @@ struct Params {
   DomainParams domain;
   NeighborParams neighbor;
   OutputParams output;
+  CheckParams checks;
 };
 
 }  // namespace mpdem

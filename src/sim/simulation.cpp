@@ -2,9 +2,12 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "integrate/adaptive_step.hpp"
+#include "sim/energy.hpp"
 #include "sim/output_manager.hpp"
 #include "sim/progress.hpp"
 #include "sim/run_error.hpp"
@@ -30,6 +33,7 @@ void Simulation::initialize() {
   interactions_->evaluate(scene_.particles, scene_.barriers, EvalRequest{time_, 0.0, 1.0, true});
   ++evaluations_;
   initialized_ = true;
+  check_energy();  // the reference for the first step
 }
 
 StepReport Simulation::advance(double dt) {
@@ -90,6 +94,50 @@ StepReport Simulation::advance_adaptive(double limit) {
   }
 }
 
+double Simulation::energy_balance(const ParticleEnergy& e) const {
+  const Particles& p = scene_.particles;
+  const FieldParams& f = scene_.model.params.fields;
+  double electric = 0.0;  // potential of the uniform field, -q E.x
+  if (norm2(f.electric) > 0.0)
+    for (std::size_t i = 0; i < p.size(); ++i) electric -= p.charge[i] * dot(f.electric, p.x[i]);
+  const InteractionStats& s = interactions_->stats();
+  return e.kinetic + e.rotational + e.potential + electric + s.elastic_energy + s.damping_dissipated +
+         s.friction_dissipated;
+}
+
+void Simulation::check_energy() {
+  const Params& prm = scene_.model.params;
+  // The near field's potential is not in the balance, so its scenes cannot be checked this way.
+  if (!(prm.checks.energy_jump > 0.0) || prm.near_field.cutoff > 0.0) return;
+  const ParticleEnergy e = particle_energy(scene_.particles, prm.fields.gravity);
+  const double balance = energy_balance(e);
+  const double active = e.kinetic + e.rotational + interactions_->stats().elastic_energy;
+  if (energy_checked_) {
+    const double rise = balance - last_balance_;
+    // Round-off of the balance is relative to its largest term.
+    const double noise = 1e-9 * (std::abs(e.potential) + active + std::abs(balance)) + 1e-15;
+    if (rise > prm.checks.energy_jump * last_active_ + noise) {
+      // Name the fastest particles: an exploding contact throws them apart.
+      const Particles& p = scene_.particles;
+      std::vector<std::size_t> idx(p.size());
+      for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+      const std::size_t k = std::min<std::size_t>(3, idx.size());
+      std::partial_sort(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(k), idx.end(),
+                        [&](std::size_t a, std::size_t b) { return norm2(p.v[a]) > norm2(p.v[b]); });
+      std::string ids;
+      for (std::size_t j = 0; j < k; ++j) ids += (j ? ", " : "") + std::to_string(p.id[idx[j]]);
+      throw RunError(fmt::format(
+          "energy jump at step {} (t = {:.9g} s): the energy balance rose by {:.4g} J in one step, more than "
+          "checks.energy_jump = {} x the kinetic + elastic energy {:.4g} J; fastest particles: ids {}. The step "
+          "is too large for the contacts; reduce time.dt (see `mpdem check` for a recommended step).",
+          steps_, time_, rise, prm.checks.energy_jump, last_active_, ids));
+    }
+  }
+  last_balance_ = balance;
+  last_active_ = active;
+  energy_checked_ = true;
+}
+
 void Simulation::check_state() {
   Particles& p = scene_.particles;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -98,6 +146,7 @@ void Simulation::check_state() {
                                  "v = ({}, {}, {}). The run is unstable; reduce time.dt.",
                                  p.id[i], steps_, time_, p.x[i].x, p.x[i].y, p.x[i].z, p.v[i].x, p.v[i].y, p.v[i].z));
   }
+  check_energy();
   const DomainParams& d = scene_.model.params.domain;
   if (!d.bounded) return;
   std::vector<char> keep(p.size(), 1);

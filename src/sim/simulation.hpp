@@ -10,6 +10,7 @@
 #include "integrate/trapezoidal.hpp"
 #include "integrate/verlet.hpp"
 #include "model/scene.hpp"
+#include "sim/energy.hpp"
 #include "sim/interactions.hpp"
 
 namespace mpdem {
@@ -58,7 +59,10 @@ class Simulation {
   const Model& model() const { return scene_.model; }
 
  private:
-  void check_state();                // NaN / infinity and domain exits
+  void check_state();                // NaN / infinity, energy jumps, domain exits
+  void check_energy();
+  // J, mechanical energy + cumulative dissipation, from the particles' energies e.
+  double energy_balance(const ParticleEnergy& e) const;
 
   Scene& scene_;
   RunOptions options_;
@@ -71,6 +75,9 @@ class Simulation {
   std::uint64_t evaluations_ = 0;
   std::uint64_t redone_ = 0;         // adaptive steps redone with a smaller dt
   double dt_ = 0.0;                  // s, step the next adaptive step tries
+  double last_balance_ = 0.0;        // J, energy_balance() after the previous step
+  double last_active_ = 0.0;         // J, kinetic + rotational + elastic after the previous step
+  bool energy_checked_ = false;      // last_balance_ / last_active_ are set
   std::size_t removed_ = 0;
   bool initialized_ = false;
 };

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Builds mpdem with AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/, Debug with -O1)
+# and runs the whole test suite under them.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+gen=()
+command -v ninja >/dev/null 2>&1 && gen=(-G Ninja)
+if [ ! -f build-asan/CMakeCache.txt ]; then
+  cmake -S . -B build-asan "${gen[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMPDEM_SANITIZE=ON -DMPDEM_BUILD_BENCH=OFF
+fi
+cmake --build build-asan -j "$(nproc)"
+cd build-asan
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+ctest --output-on-failure -j "$(nproc)" "$@"

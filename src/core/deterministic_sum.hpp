@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/parallel.hpp"
+
 namespace mpdem {
 
 template <int K, class F>
@@ -13,7 +15,7 @@ std::array<double, K> deterministic_sums(std::size_t n, F&& f) {
   constexpr std::size_t kBlock = 1024;
   const std::size_t blocks = (n + kBlock - 1) / kBlock;
   std::vector<std::array<double, K>> partial(blocks);
-#pragma omp parallel for schedule(static) if (blocks > 1)
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t blk = 0; blk < blocks; ++blk) {
     std::array<double, K> s{};
     const std::size_t end = std::min(n, (blk + 1) * kBlock);

@@ -40,6 +40,7 @@ TEST(Instability, EnergyJumpFromATooLargeStep) {
     Scene s = test::make_scene(1e-4, 1.0);
     s.model.params.time.integrator = integ;
     s.model.params.time.phi = 0.0;  // explicit: no convergence failure to hide the blow-up
+    s.model.params.checks.max_overlap = 0.0;  // this test is about the energy check alone
     s.model.params.fields.gravity = {};
     test::add_particle(s, 5, 0.001, {0, 0, 0}, {1.0, 0, 0});
     test::add_particle(s, 6, 0.001, {0.00205, 0, 0}, {-1.0, 0, 0});
@@ -51,12 +52,41 @@ TEST(Instability, EnergyJumpFromATooLargeStep) {
 }
 
 TEST(Instability, ResolvedCollisionDoesNotTrigger) {
-  // The same collision with a step of 1/100 of the contact time passes every check.
+  // A stiffer pair (overlap ~2% of the radius) with a step of ~1/100 of the contact time passes
+  // every check.
   Scene s = test::make_scene(1e-4, 1.0);
   s.model.params.time.integrator = Integrator::Verlet;
   s.model.params.fields.gravity = {};
   test::add_particle(s, 5, 0.001, {0, 0, 0}, {1.0, 0, 0});
   test::add_particle(s, 6, 0.001, {0.00205, 0, 0}, {-1.0, 0, 0});
-  EXPECT_EQ(run_until_error(s, 1e-6, 400), "");
+  for (std::size_t i = 0; i < 2; ++i) s.particles.young[i] = 1e9;
+  EXPECT_EQ(run_until_error(s, 2e-7, 1500), "");
   EXPECT_LT(s.particles.v[0].x, 0.0);  // they did collide and rebound
+}
+
+TEST(Instability, ExcessiveOverlapNamesTheContact) {
+  // Soft spheres in a fast impact: Hertz overlap (15 m* v^2 / (16 E* sqrt(r*)))^(2/5) is ~14% of
+  // the radius here, beyond the default limit of 5%.
+  {
+    Scene s = test::make_scene(1e-4, 1.0);
+    s.model.params.time.integrator = Integrator::Verlet;
+    s.model.params.fields.gravity = {};
+    test::add_particle(s, 7, 0.001, {0, 0, 0}, {2.0, 0, 0});
+    test::add_particle(s, 8, 0.001, {0.00205, 0, 0}, {-2.0, 0, 0});
+    for (std::size_t i = 0; i < 2; ++i) s.particles.young[i] = 1e5;
+    const std::string msg = run_until_error(s, 1e-6, 2000);
+    EXPECT_NE(msg.find("between particles id 7 and id 8"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("checks.max_overlap = 5%"), std::string::npos) << msg;
+  }
+  {
+    Scene s = test::make_scene(1e-4, 1.0);
+    s.model.params.time.integrator = Integrator::Verlet;
+    s.model.params.fields.gravity = {};
+    test::add_particle(s, 9, 0.001, {0, 0, 0.00105}, {0, 0, -4.0});
+    s.particles.young[0] = 1e5;
+    const int g = s.barriers.group_index("floor");
+    s.barriers.add(77, {-1, -1, 0}, {1, -1, 0}, {0, 1, 0}, g, 1e5, 0.3, {}, 0.0, NAN);
+    const std::string msg = run_until_error(s, 1e-6, 2000);
+    EXPECT_NE(msg.find("between particle id 9 and barrier element id 77"), std::string::npos) << msg;
+  }
 }

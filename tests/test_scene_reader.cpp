@@ -531,15 +531,15 @@ motion = { B = [0, 0, 0.01], w2 = 2.0 }
   EXPECT_EQ(s.model.params.neighbor.skin, 0.0);  // no [neighbor]: the engine derives it
 }
 
-TEST(SceneReader, StlBarriersAreNotSupportedYet) {
+TEST(SceneReader, StlSourceErrorsNameTheStlFile) {
   TempDir d;
   d.write("chute.stl", "solid x\nendsolid x\n");
   const fs::path scene = d.write("scene.toml", std::string(kTime) + "[[barriers]]\nstl = \"chute.stl\"\nscale = 0.001\n");
-  const Scene parsed = parse_scene_file(scene);  // parsing accepts it...
+  const Scene parsed = parse_scene_file(scene);  // parsing accepts the source...
   ASSERT_EQ(parsed.barrier_sources.size(), 1u);
   EXPECT_EQ(parsed.barrier_sources[0].scale, 0.001);
-  const std::string msg = error_of([&] { load_scene(scene); });  // ...loading does not, yet
-  expect_contains(msg, {scene.string() + ":5: 'barriers.stl': ", "STL barriers are not supported yet"});
+  const std::string msg = error_of([&] { load_scene(scene); });  // ...loading finds no triangles
+  expect_contains(msg, {"chute.stl", "no facets"});
 }
 
 TEST(SceneReader, ErrorsInSourcesNameTheCsvFile) {

@@ -7,10 +7,13 @@
 #include <toml++/toml.h>
 
 #include "io/barrier_csv.hpp"
+#include "io/generate_spec_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/particle_csv.hpp"
+#include "io/stl_reader.hpp"
 #include "io/toml_section.hpp"
 #include "model/scene.hpp"
+#include "tools/generated_particles.hpp"
 
 namespace mpdem {
 
@@ -49,13 +52,20 @@ void read_time(const TomlSection& root, TimeParams& t) {
 }
 
 void read_tolerance(const TomlSection& root, ToleranceParams& t) {
-  const auto s = root.table("tolerance", {"position", "velocity", "rotation", "angular_velocity", "temperature"});
+  const auto s = root.table("tolerance", {"position", "velocity", "rotation", "angular_velocity", "temperature",
+                                          "position_floor", "velocity_floor", "rotation_floor",
+                                          "angular_velocity_floor", "temperature_floor"});
   if (!s) return;
   s->get("position", t.position, kPositive);
   s->get("velocity", t.velocity, kPositive);
   s->get("rotation", t.rotation, kPositive);
   s->get("angular_velocity", t.angular_velocity, kPositive);
   s->get("temperature", t.temperature, kPositive);
+  s->get("position_floor", t.position_floor, kNonNegative);
+  s->get("velocity_floor", t.velocity_floor, kNonNegative);
+  s->get("rotation_floor", t.rotation_floor, kNonNegative);
+  s->get("angular_velocity_floor", t.angular_velocity_floor, kNonNegative);
+  s->get("temperature_floor", t.temperature_floor, kNonNegative);
 }
 
 void read_analysis_and_fields(const TomlSection& root, Params& p) {
@@ -170,13 +180,24 @@ std::filesystem::path existing_file(const TomlSection& s, std::string_view k, co
   return p;
 }
 
-void read_sources(const TomlSection& root, Scene& scene) {
-  for (const TomlSection& s : root.tables("particles", {"file", "material"})) {
+void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene) {
+  std::size_t entry = 0;
+  for (const TomlSection& s : root.tables("particles", {"file", "generate", "material"})) {
     if (scene.model.materials.empty())
       throw InputError(root.file(), s.line(), "material", "at least one [[material]] is required when particles are given");
     ParticleSource src;
     src.line = s.line();
-    src.file = existing_file(s, "file", scene.dir);
+    if (s.has("file") && s.has("generate")) s.fail("generate", "give either file or generate, not both");
+    if (s.has("generate")) {
+      // The generator table is read from the raw TOML (arrays of radii and fractions).
+      const toml::node* g = doc["particles"].as_array()->get(entry)->as_table()->get("generate");
+      if (!g->is_table()) s.fail("generate", "expected a table, e.g. generate = { region = \"box\", ... }");
+      src.generate = read_generate_spec(root.file(), *g->as_table(), "particles.generate", scene.dir);
+      if (!src.generate->material.empty()) check_material(s, "generate", src.generate->material, scene.model);
+    } else {
+      src.file = existing_file(s, "file", scene.dir);
+    }
+    ++entry;
     s.get("material", src.material);
     if (!src.material.empty()) check_material(s, "material", src.material, scene.model);
     scene.particle_sources.push_back(src);
@@ -229,6 +250,10 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     }
   }
   if (const auto s = root.table("neighbor", {"skin"})) s->get("skin", p.neighbor.skin, kNonNegative);
+  if (const auto s = root.table("checks", {"max_overlap", "energy_jump"})) {
+    s->get("max_overlap", p.checks.max_overlap, kNonNegative);
+    s->get("energy_jump", p.checks.energy_jump, kNonNegative);
+  }
   if (const auto s = root.table("output", {"dir", "particles_every", "barriers_every", "particle_csv_every",
                                            "barrier_log_every", "log_every", "checkpoint_every", "progress_every"})) {
     s->get("dir", p.output.dir);
@@ -269,7 +294,7 @@ Scene parse_scene_file(const std::filesystem::path& file) {
   scene.dir = scene.file.parent_path();
   const TomlSection root(name, doc, "", {"time", "tolerance", "analysis", "gravity", "fields", "near_field",
                                          "contact", "thermal", "material", "particles", "barriers", "domain",
-                                         "neighbor", "output"});
+                                         "neighbor", "output", "checks"});
   Params& p = scene.model.params;
   read_time(root, p.time);
   read_tolerance(root, p.tolerance);
@@ -277,7 +302,7 @@ Scene parse_scene_file(const std::filesystem::path& file) {
   read_contact_and_thermal(root, p);
   read_materials(root, scene.model);
   read_near_field(root, scene.model, p.near_field);
-  read_sources(root, scene);
+  read_sources(root, doc, scene);
   read_domain_neighbor_output(root, p);
   return scene;
 }
@@ -286,12 +311,12 @@ Scene load_scene(const std::filesystem::path& file) {
   Scene scene = parse_scene_file(file);
   for (const ParticleSource& src : scene.particle_sources) {
     const int mat = src.material.empty() ? 0 : scene.model.material_index(src.material);
-    read_particle_csv(src.file, scene.model, mat, scene.particles);
+    if (src.generate) add_generated_particles(*src.generate, scene.model, mat, scene.particles);
+    else read_particle_csv(src.file, scene.model, mat, scene.particles);
   }
   for (const BarrierSource& src : scene.barrier_sources) {
-    if (!src.stl.empty())
-      throw InputError(file.string(), src.line, "barriers.stl", "STL barriers are not supported yet");
-    read_barrier_csv(src.file, src, scene.model, scene.barriers);
+    if (!src.stl.empty()) read_stl_barriers(src, scene.model, scene.barriers);
+    else read_barrier_csv(src.file, src, scene.model, scene.barriers);
   }
   // neighbor.skin stays 0 when [neighbor] gives none: the engine derives it from the radii.
   return scene;

@@ -12,12 +12,15 @@
 #include "state/barriers.hpp"
 #include "state/motion_law.hpp"
 #include "state/particles.hpp"
+#include "tools/generate_spec.hpp"
 
 namespace mpdem {
 
-// [[particles]] entry: a particle CSV file. Columns the file lacks take `material`'s defaults.
+// [[particles]] entry: a particle CSV file, or particles generated in a region (`generate`).
+// Columns the file lacks take `material`'s defaults.
 struct ParticleSource {
-  std::filesystem::path file;     // absolute (resolved against the scene file's folder)
+  std::filesystem::path file;     // absolute (resolved against the scene file's folder), or empty
+  std::optional<GenerateSpec> generate;  // set instead of `file` for generated particles
   std::string material;           // default material name ("" = first material)
   std::size_t line = 0;           // line of the entry in the scene file, for messages
 };
@@ -25,7 +28,7 @@ struct ParticleSource {
 // [[barriers]] entry: a barrier CSV file or an STL file, with defaults for its elements.
 struct BarrierSource {
   std::filesystem::path file;     // barrier CSV (absolute), or empty
-  std::filesystem::path stl;      // STL file (absolute), or empty (STL reading: issue 6)
+  std::filesystem::path stl;      // STL file (absolute), or empty
   std::string group;              // group name ("" = file stem)
   std::string material;           // material giving young/poisson when the CSV has none
   MotionLaw motion;               // default motion law for elements without motion columns

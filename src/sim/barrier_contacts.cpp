@@ -79,7 +79,7 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
       force += f;
       torque += cross(rP, ft.force) + roll;
       tent[c] = Slot{static_cast<std::int32_t>(e), ft.spring, vt, nrm};
-      load[c] = Load{static_cast<std::int32_t>(e), -f, bc.point};
+      load[c] = Load{static_cast<std::int32_t>(e), -f, bc.point, bc.overlap};
       acc[0] += 1.0;
       acc[1] += hertz_elastic_energy(E, r, bc.overlap) + 0.5 * kt * norm2(ft.spring);
       acc[2] += fn.dissipated_power + (ft.slipped ? 0.0 : ft.dissipated_power);
@@ -107,6 +107,19 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
 
   if (req.commit) committed_.swap(tentative_);
   return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3]};
+}
+
+OverlapReport BarrierContacts::max_overlap(const Particles& p, const Barriers& b) const {
+  OverlapReport r;
+  if (loads_.size() != p.size() * kSlots) return r;
+  for (std::size_t k = 0; k < loads_.size(); ++k) {
+    const Load& l = loads_[k];
+    if (l.element < 0) continue;
+    const std::size_t i = k / kSlots;
+    const double ratio = l.overlap / p.radius[i];
+    if (ratio > r.ratio) r = {ratio, p.id[i], -1, b.id[static_cast<std::size_t>(l.element)]};
+  }
+  return r;
 }
 
 void BarrierContacts::permute(const std::vector<std::uint32_t>& order) {

@@ -32,6 +32,7 @@ class BarrierContacts {
   void permute(const std::vector<std::uint32_t>& order);
   void compact(const std::vector<char>& keep);
   std::uint64_t overflows() const { return overflows_; }  // contacts dropped beyond kSlots
+  OverlapReport max_overlap(const Particles& p, const Barriers& b) const;
 
  private:
   struct Slot {
@@ -44,6 +45,7 @@ class BarrierContacts {
     std::int32_t element = -1;
     Vec3 force;                 // N, on the element
     Vec3 point;                 // m, contact point
+    double overlap = 0.0;       // m
   };
   void resize(std::size_t n);
 

@@ -5,6 +5,8 @@
 #include "core/parallel.hpp"
 #include "physics/field_forces.hpp"
 #include "sim/barrier_contacts.hpp"
+#include "sim/heat_transfer.hpp"
+#include "sim/near_field_forces.hpp"
 #include "sim/neighbor_search.hpp"
 #include "sim/particle_contacts.hpp"
 
@@ -19,9 +21,14 @@ double default_skin(const Model& model, const Particles& p) {
 
 Interactions::Interactions(const Model& model, const Particles& p, const Barriers& b)
     : model_(model),
-      search_(std::make_unique<NeighborSearch>(default_skin(model, p), 0.0)),
+      // The list reaches beyond contact by the near-field cutoff (0 when the near field is off).
+      search_(std::make_unique<NeighborSearch>(default_skin(model, p),
+                                               near_field_extra_range(model.params.near_field, p))),
       pp_(std::make_unique<ParticleContacts>(ContactModel::from(model.params.contact.particle_particle))),
-      pb_(std::make_unique<BarrierContacts>(ContactModel::from(model.params.contact.particle_barrier), b)) {}
+      pb_(std::make_unique<BarrierContacts>(ContactModel::from(model.params.contact.particle_barrier), b)) {
+  if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
+  if (model.params.analysis.thermal) heat_ = std::make_unique<HeatTransfer>(model, b);
+}
 
 Interactions::~Interactions() = default;
 
@@ -70,8 +77,13 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   if (search_->needs_rebuild(p, b)) rebuild(p, b, false);
 
   add_field_forces(p);
+  if (near_) stats_.near_field_energy = near_->evaluate(p, *search_);
   const PairStats pp = pp_->evaluate(p, *search_, req);
   const PairStats pb = pb_->evaluate(p, b, *search_, req);
+  if (heat_) {
+    const HeatFlows h = heat_->evaluate(p, b, *search_);
+    if (req.commit) commit_heat(h, req);
+  }
 
   stats_.contacts_pp = pp.contacts;
   stats_.contacts_pb = pb.contacts;
@@ -80,6 +92,28 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     stats_.damping_dissipated += req.dt * (pp.damping_power + pb.damping_power);
     stats_.friction_dissipated += req.dt * (pp.friction_power + pb.friction_power);
   }
+}
+
+void Interactions::commit_heat(const HeatFlows& h, const EvalRequest& req) {
+  // The temperature update weights the start and end flows like the integrator does
+  // (trapezoidal: 1 - phi and phi; Verlet: explicit Euler, the start flow only), so the
+  // cumulative sums balance the stored thermal energy exactly.
+  const double phi = model_.params.time.integrator == Integrator::Verlet ? 0.0 : req.phi;
+  const double ob = -h.barriers, oc = -h.convection, orad = -h.radiation;  // outward, W
+  stats_.heat_to_barriers += req.dt * ((1.0 - phi) * out_barriers_ + phi * ob);
+  stats_.heat_convected += req.dt * ((1.0 - phi) * out_convected_ + phi * oc);
+  stats_.heat_radiated += req.dt * ((1.0 - phi) * out_radiated_ + phi * orad);
+  out_barriers_ = ob;
+  out_convected_ = oc;
+  out_radiated_ = orad;
+}
+
+std::uint64_t Interactions::convection_clamps() const { return heat_ ? heat_->clamped_evaluations() : 0; }
+
+OverlapReport Interactions::max_overlap(const Particles& p, const Barriers& b) const {
+  const OverlapReport pp = pp_->max_overlap(p, *search_);
+  const OverlapReport pb = pb_->max_overlap(p, b);
+  return pb.ratio > pp.ratio ? pb : pp;
 }
 
 void Interactions::add_field_forces(Particles& p) const {

@@ -1,8 +1,9 @@
 #pragma once
 // Interactions: everything that produces forces, torques and heat flows from a state, in the
-// order of a step: neighbour search, field forces, particle-particle contacts, particle-barrier
-// contacts. One evaluation fills Particles::force/torque/heat and the barriers' loads for the
-// positions, velocities and temperatures currently stored in the arrays. The integrators call
+// order of a step: neighbour search, field forces, near-field forces, particle-particle
+// contacts, particle-barrier contacts, heat transfer (when [analysis] thermal is on). One
+// evaluation fills Particles::force/torque/heat and the barriers' loads for the positions,
+// velocities and temperatures currently stored in the arrays. The integrators call
 // it at coarse grain; the laws themselves are small functions in src/physics/.
 #include <cstddef>
 #include <cstdint>
@@ -28,11 +29,23 @@ struct InteractionStats {
   double damping_dissipated = 0.0;  // J, cumulative over committed steps
   double friction_dissipated = 0.0; // J, cumulative over committed steps
   std::uint64_t rebuilds = 0;       // neighbour list rebuilds
+  double near_field_energy = 0.0;   // J, potential of the near-field pairs within the cutoff
+  // Thermal bookkeeping (physics.md section 8), cumulative over committed steps with the
+  // integrator's own weighting of the start and end flows, so that
+  //   sum m c T + heat_to_barriers + heat_convected + heat_radiated
+  // stays constant (docs/multiphysics.md).
+  double heat_to_barriers = 0.0;    // J, conducted from the particles into fixed-temperature barriers
+  double heat_convected = 0.0;      // J, given by the particles to the air
+  double heat_radiated = 0.0;       // J, radiated by the particles to the surroundings
 };
 
+struct OverlapReport;
 class NeighborSearch;
 class ParticleContacts;
 class BarrierContacts;
+class NearFieldForces;
+class HeatTransfer;
+struct HeatFlows;
 
 class Interactions {
  public:
@@ -54,9 +67,14 @@ class Interactions {
   double skin() const;
   const NeighborSearch& search() const { return *search_; }
   const ParticleContacts& particle_contacts() const { return *pp_; }
+  // The deepest particle-particle or particle-barrier contact of the last evaluation.
+  OverlapReport max_overlap(const Particles& p, const Barriers& b) const;
+  // Evaluations in which the convection fit's air speed clamp (20 m/s) engaged.
+  std::uint64_t convection_clamps() const;
 
  private:
   void add_field_forces(Particles& p) const;
+  void commit_heat(const HeatFlows& h, const EvalRequest& req);
   void rebuild(Particles& p, const Barriers& b, bool reorder);
 
   const Model& model_;
@@ -64,6 +82,10 @@ class Interactions {
   std::unique_ptr<NeighborSearch> search_;
   std::unique_ptr<ParticleContacts> pp_;
   std::unique_ptr<BarrierContacts> pb_;
+  std::unique_ptr<NearFieldForces> near_;   // null when the near field is off
+  std::unique_ptr<HeatTransfer> heat_;      // null when [analysis] thermal is off
+  // Outward heat flows (W) of the last committed evaluation, the start values of the next step.
+  double out_barriers_ = 0.0, out_convected_ = 0.0, out_radiated_ = 0.0;
 };
 
 // Verlet skin used for a scene: [neighbor] skin, or 0.1 x the smallest particle diameter.

@@ -8,6 +8,8 @@
 #include "io/pvd_index.hpp"
 #include "io/vtu_writer.hpp"
 #include "sim/energy.hpp"
+#include "sim/heat_transfer.hpp"
+#include "sim/near_field_forces.hpp"
 
 namespace mpdem {
 
@@ -30,11 +32,17 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
     barriers_pvd_ = std::make_unique<PvdIndex>(dir_ / "barriers.pvd");
   }
   if (particles_csv_.every > 0.0) fs::create_directories(dir_ / "particles_csv");
-  log_ = std::make_unique<CsvLog>(
-      dir_ / "log.csv",
-      std::vector<std::string>{"step", "time", "dt", "iterations", "evaluations", "evaluations_total", "redone_steps",
-                               "particles", "removed", "contacts_pp", "contacts_pb", "kinetic", "rotational",
-                               "potential", "elastic", "damping_dissipated", "friction_dissipated", "total_energy"});
+  std::vector<std::string> log_cols{"step", "time", "dt", "iterations", "evaluations", "evaluations_total",
+                                    "redone_steps", "particles", "removed", "contacts_pp", "contacts_pb", "kinetic",
+                                    "rotational", "potential", "elastic", "damping_dissipated", "friction_dissipated",
+                                    "total_energy"};
+  // Optional columns only for the physics a scene turns on, so plain mechanical logs keep their shape.
+  near_field_ = near_field_enabled(model.params.near_field);
+  thermal_ = model.params.analysis.thermal;
+  if (near_field_) log_cols.insert(log_cols.end() - 1, "near_field");  // part of total_energy
+  if (thermal_)
+    for (const char* c : {"heat_to_barriers", "heat_convected", "heat_radiated", "thermal_energy"}) log_cols.push_back(c);
+  log_ = std::make_unique<CsvLog>(dir_ / "log.csv", log_cols);
   group_count_ = barriers.group_names.size();
   if (barrier_log_.every > 0.0 && group_count_ > 0) {
     std::vector<std::string> cols{"time"};
@@ -88,16 +96,24 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
 
 void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const InteractionStats& s) {
   const ParticleEnergy e = particle_energy(p, model_.params.fields.gravity);
+  const double nf = near_field_ ? s.near_field_energy : 0.0;
   const double total = e.kinetic + e.rotational + e.potential + s.elastic_energy + s.damping_dissipated +
-                       s.friction_dissipated;
-  const double row[] = {static_cast<double>(r.step), r.time, r.dt,
-                        static_cast<double>(r.report ? r.report->iterations : 0),
-                        static_cast<double>(r.report ? r.report->evaluations : 0),
-                        static_cast<double>(r.evaluations_total), static_cast<double>(r.redone_steps),
-                        static_cast<double>(p.size()), static_cast<double>(r.removed_total),
-                        static_cast<double>(s.contacts_pp), static_cast<double>(s.contacts_pb), e.kinetic,
-                        e.rotational, e.potential, s.elastic_energy, s.damping_dissipated, s.friction_dissipated,
-                        total};
+                       s.friction_dissipated + nf;
+  std::vector<double> row{static_cast<double>(r.step), r.time, r.dt,
+                          static_cast<double>(r.report ? r.report->iterations : 0),
+                          static_cast<double>(r.report ? r.report->evaluations : 0),
+                          static_cast<double>(r.evaluations_total), static_cast<double>(r.redone_steps),
+                          static_cast<double>(p.size()), static_cast<double>(r.removed_total),
+                          static_cast<double>(s.contacts_pp), static_cast<double>(s.contacts_pb), e.kinetic,
+                          e.rotational, e.potential, s.elastic_energy, s.damping_dissipated, s.friction_dissipated};
+  if (near_field_) row.push_back(nf);
+  row.push_back(total);
+  if (thermal_) {
+    row.push_back(s.heat_to_barriers);
+    row.push_back(s.heat_convected);
+    row.push_back(s.heat_radiated);
+    row.push_back(thermal_energy(p));
+  }
   log_->row(row);
 }
 

@@ -55,6 +55,8 @@ class OutputManager {
   std::unique_ptr<PvdIndex> particles_pvd_, barriers_pvd_;
   std::unique_ptr<CsvLog> log_, groups_, removed_;
   std::size_t group_count_ = 0;
+  bool near_field_ = false;  // log the near-field potential (and count it in total_energy)
+  bool thermal_ = false;     // log the heat exchanged with the outside and the thermal energy
 };
 
 }  // namespace mpdem

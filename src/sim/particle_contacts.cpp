@@ -25,6 +25,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   torque_first_.resize(pairs);
   torque_second_.resize(pairs);
   touching_.resize(pairs);
+  overlap_.resize(pairs);
   const auto& off = list.offsets();
   const auto& idx = list.indices();
   const double dt = req.dt, phi = req.phi;
@@ -40,6 +41,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
         continue;
       }
       touching_[k] = 1;
+      overlap_[k] = g.overlap;
       const double E = effective_modulus(p.young[i], p.poisson[i], p.young[j], p.poisson[j]);  // (51)
       const double r = effective_radius(p.radius[i], p.radius[j]);                             // (52)
       const double m = effective_mass(p.mass[i], p.mass[j]);                                   // (53)
@@ -99,6 +101,27 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
     }
   }
   return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3]};
+}
+
+OverlapReport ParticleContacts::max_overlap(const Particles& p, const NeighborSearch& search) const {
+  OverlapReport r;
+  const auto& idx = search.pairs().indices();
+  if (touching_.size() != idx.size()) return r;
+  std::size_t best = idx.size();
+  for (std::size_t k = 0; k < idx.size(); ++k) {
+    if (!touching_[k]) continue;
+    const std::size_t i = search.first_of(k), j = idx[k];
+    const double ratio = overlap_[k] / std::min(p.radius[i], p.radius[j]);
+    if (ratio > r.ratio) {
+      r.ratio = ratio;
+      best = k;
+    }
+  }
+  if (best < idx.size()) {
+    r.particle = p.id[search.first_of(best)];
+    r.other = p.id[idx[best]];
+  }
+  return r;
 }
 
 std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, const NeighborSearch& search) const {

@@ -31,6 +31,14 @@ struct PairStats {
   double friction_power = 0.0;      // W, removed by sliding and rolling friction
 };
 
+// The deepest contact of the last evaluation, relative to the smaller radius.
+struct OverlapReport {
+  double ratio = 0.0;              // -, overlap / min(R_i, R_j) (particle-barrier: / R_i)
+  std::int64_t particle = -1;      // id of the (first) particle
+  std::int64_t other = -1;         // id of the other particle, or -1
+  std::int64_t element = -1;       // id of the barrier element, or -1
+};
+
 class ParticleContacts {
  public:
   explicit ParticleContacts(const ContactModel& law) : law_(law) {}
@@ -42,6 +50,8 @@ class ParticleContacts {
   std::vector<PairHistory> export_history(const Particles& p, const NeighborSearch& search) const;
   // ... and back onto the slots of the rebuilt list (spring sign follows the pair's orientation).
   void import_history(const Particles& p, const NeighborSearch& search, std::vector<PairHistory> h);
+
+  OverlapReport max_overlap(const Particles& p, const NeighborSearch& search) const;
 
   // For tests: the committed spring of the pair (i, j), or zero when none.
   Vec3 spring_between(const NeighborSearch& search, std::size_t i, std::size_t j) const;
@@ -56,6 +66,7 @@ class ParticleContacts {
   std::vector<Vec3> force_;         // N, force on the first member (the second gets -force)
   std::vector<Vec3> torque_first_;  // N m
   std::vector<Vec3> torque_second_; // N m
+  std::vector<double> overlap_;      // m, overlap of touching slots
   std::vector<std::uint8_t> touching_;
 };
 

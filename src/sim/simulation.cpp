@@ -9,6 +9,7 @@
 #include "integrate/adaptive_step.hpp"
 #include "sim/energy.hpp"
 #include "sim/output_manager.hpp"
+#include "sim/particle_contacts.hpp"
 #include "sim/progress.hpp"
 #include "sim/run_error.hpp"
 
@@ -138,6 +139,19 @@ void Simulation::check_energy() {
   energy_checked_ = true;
 }
 
+void Simulation::check_overlap() {
+  const double limit = scene_.model.params.checks.max_overlap;
+  if (!(limit > 0.0)) return;
+  const OverlapReport r = interactions_->max_overlap(scene_.particles, scene_.barriers);
+  if (!(r.ratio > limit)) return;
+  const std::string between = r.element >= 0 ? fmt::format("particle id {} and barrier element id {}", r.particle, r.element)
+                                             : fmt::format("particles id {} and id {}", r.particle, r.other);
+  throw RunError(fmt::format(
+      "overlap of {:.3g}% of the radius between {} at step {} (t = {:.9g} s), more than checks.max_overlap = {:.3g}%. "
+      "The contact is not resolved: reduce time.dt (see `mpdem check` for a recommended step) or raise young.",
+      100.0 * r.ratio, between, steps_, time_, 100.0 * limit));
+}
+
 void Simulation::check_state() {
   Particles& p = scene_.particles;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -146,6 +160,7 @@ void Simulation::check_state() {
                                  "v = ({}, {}, {}). The run is unstable; reduce time.dt.",
                                  p.id[i], steps_, time_, p.x[i].x, p.x[i].y, p.x[i].z, p.v[i].x, p.v[i].y, p.v[i].z));
   }
+  check_overlap();
   check_energy();
   const DomainParams& d = scene_.model.params.domain;
   if (!d.bounded) return;

@@ -61,6 +61,7 @@ class Simulation {
  private:
   void check_state();                // NaN / infinity, energy jumps, domain exits
   void check_energy();
+  void check_overlap();
   // J, mechanical energy + cumulative dissipation, from the particles' energies e.
   double energy_balance(const ParticleEnergy& e) const;
 

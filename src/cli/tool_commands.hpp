@@ -1,0 +1,16 @@
+#pragma once
+// The tool subcommands `mpdem generate` and `mpdem mesh`. Each registers itself on the app; when
+// the command line selects it, its callback stores the work in `action`, which main() runs inside
+// its error handling (so an InputError becomes exit status 2 like everywhere else).
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace mpdem::cli {
+
+using ToolAction = std::function<int()>;
+
+void add_generate_command(CLI::App& app, ToolAction& action);
+void add_mesh_command(CLI::App& app, ToolAction& action);
+
+}  // namespace mpdem::cli

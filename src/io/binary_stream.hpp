@@ -1,0 +1,72 @@
+#pragma once
+// Binary streams for checkpoints: trivially copyable values and vectors of them, native byte
+// order (a checkpoint is resumed on the machine kind that wrote it), each vector prefixed by its
+// length. Reading checks every length against the bytes left, so a truncated or corrupted file
+// gives an error rather than a crash.
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace mpdem {
+
+class BinaryWriter {
+ public:
+  template <class T>
+  void value(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const auto* b = reinterpret_cast<const char*>(&v);
+    bytes_.insert(bytes_.end(), b, b + sizeof(T));
+  }
+  template <class T>
+  void vector(const std::vector<T>& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    value<std::uint64_t>(v.size());
+    const auto* b = reinterpret_cast<const char*>(v.data());
+    bytes_.insert(bytes_.end(), b, b + v.size() * sizeof(T));
+  }
+  void string(const std::string& s) { vector(std::vector<char>(s.begin(), s.end())); }
+  const std::vector<char>& bytes() const { return bytes_; }
+
+ private:
+  std::vector<char> bytes_;
+};
+
+class BinaryReader {
+ public:
+  BinaryReader(const char* data, std::size_t size) : p_(data), end_(data + size) {}
+  template <class T>
+  T value() {
+    static_assert(std::is_trivially_copyable_v<T>);
+    need(sizeof(T));
+    T v;
+    std::memcpy(&v, p_, sizeof(T));
+    p_ += sizeof(T);
+    return v;
+  }
+  template <class T>
+  std::vector<T> vector() {
+    const auto n = value<std::uint64_t>();
+    if (n > static_cast<std::uint64_t>(end_ - p_) / sizeof(T)) throw std::runtime_error("truncated or corrupted data");
+    std::vector<T> v(n);
+    std::memcpy(v.data(), p_, n * sizeof(T));
+    p_ += n * sizeof(T);
+    return v;
+  }
+  std::string string() {
+    const auto v = vector<char>();
+    return {v.begin(), v.end()};
+  }
+  bool at_end() const { return p_ == end_; }
+
+ private:
+  void need(std::size_t n) const {
+    if (static_cast<std::size_t>(end_ - p_) < n) throw std::runtime_error("truncated or corrupted data");
+  }
+  const char* p_;
+  const char* end_;
+};
+
+}  // namespace mpdem

@@ -15,8 +15,10 @@ int run_command(const RunArgs& args) {
   RunOptions opt;
   opt.output_dir = args.output;
   opt.progress = !args.quiet;
-  prepare_output_folder(output_dir_for(scene, opt), args.overwrite);
+  // A resumed run continues in its own (non-empty) output folder.
+  if (args.resume.empty()) prepare_output_folder(output_dir_for(scene, opt), args.overwrite);
   Simulation sim(scene, opt);
+  if (!args.resume.empty()) sim.resume_from(args.resume);
   const RunSummary s = sim.run();
   if (!args.quiet)
     fmt::print(stderr, "{} steps, {} interaction evaluations, {} particles removed\n", s.steps, s.evaluations,

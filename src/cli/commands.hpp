@@ -11,6 +11,7 @@ struct RunArgs {
   int threads = 0;               // 0 = OpenMP default
   bool quiet = false;
   bool overwrite = false;        // replace the outputs of an earlier run in the output folder
+  std::filesystem::path resume;  // checkpoint to continue from (empty = fresh run)
 };
 
 int run_command(const RunArgs& args);

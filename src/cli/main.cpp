@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include "cli/bench_command.hpp"
 #include "cli/commands.hpp"
 #include "cli/tool_commands.hpp"
 #include "io/input_error.hpp"
@@ -20,14 +21,29 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--threads,-t", run.threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
   run_cmd->add_flag("--quiet,-q", run.quiet, "no progress on stderr");
   run_cmd->add_flag("--overwrite", run.overwrite, "replace the outputs of an earlier run in the output folder");
+  run_cmd->add_option("--resume", run.resume, "continue from a checkpoint written by an earlier run of this scene");
 
   std::filesystem::path check_scene;
   auto* check_cmd = app.add_subcommand("check", "validate a scene; print a summary and the recommended time step");
   check_cmd->add_option("scene", check_scene, "scene file (TOML)")->required();
 
+  mpdem::cli::BenchArgs bench;
+  auto* bench_cmd = app.add_subcommand("bench", "settled-bed benchmark (docs/benchmark.md)");
+  bench_cmd->add_option("data", bench.data, "LAMMPS/LIGGGHTS data file (plain text)")->required()->check(CLI::ExistingFile);
+  bench_cmd->add_option("--integrator", bench.integrator, "verlet or trapezoidal")
+      ->check(CLI::IsMember({"verlet", "trapezoidal"}));
+  bench_cmd->add_option("--phi", bench.phi, "trapezoidal weight")->check(CLI::Range(0.0, 1.0));
+  bench_cmd->add_option("--threads,-t", bench.threads, "OpenMP threads")->check(CLI::PositiveNumber);
+  bench_cmd->add_option("--steps", bench.steps, "timed steps (0: 5000 for <= 50k particles, else 2000)")
+      ->check(CLI::NonNegativeNumber);
+  bench_cmd->add_option("--relax", bench.relax, "untimed steps first")->check(CLI::NonNegativeNumber);
+  bench_cmd->add_option("--dt", bench.dt, "time step [s]")->check(CLI::PositiveNumber);
+  bench_cmd->add_option("--skin", bench.skin, "Verlet skin [m]")->check(CLI::NonNegativeNumber);
+
   mpdem::cli::ToolAction tool;  // set by `generate` / `mesh` when selected
   mpdem::cli::add_generate_command(app, tool);
   mpdem::cli::add_mesh_command(app, tool);
+  mpdem::cli::add_validate_command(app, tool);
 
   try {
     app.parse(argc, argv);
@@ -38,10 +54,17 @@ int main(int argc, char** argv) {
   try {
     if (*run_cmd) return mpdem::cli::run_command(run);
     if (*check_cmd) return mpdem::cli::check_command(check_scene);
+    if (*bench_cmd) return mpdem::cli::bench_command(bench);
     if (tool) return tool();
   } catch (const mpdem::InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 2;
+  } catch (const mpdem::Interrupted& e) {
+    fmt::print(stderr, "\nstopped by signal {} at t = {:.9g} s (step {}).\n", e.signal, e.time, e.step);
+    if (!e.checkpoint.empty())
+      fmt::print(stderr, "checkpoint written to {}\nresume with: mpdem run {} --resume {}\n", e.checkpoint.string(),
+                 run.scene.string(), e.checkpoint.string());
+    return 128 + e.signal;
   } catch (const mpdem::RunError& e) {
     fmt::print(stderr, "\nerror: {}\n", e.what());
     return 1;

@@ -1,5 +1,5 @@
 #pragma once
-// The tool subcommands `mpdem generate` and `mpdem mesh`. Each registers itself on the app; when
+// The tool subcommands `mpdem generate`, `mpdem mesh` and `mpdem validate`. Each registers itself on the app; when
 // the command line selects it, its callback stores the work in `action`, which main() runs inside
 // its error handling (so an InputError becomes exit status 2 like everywhere else).
 #include <functional>
@@ -12,5 +12,6 @@ using ToolAction = std::function<int()>;
 
 void add_generate_command(CLI::App& app, ToolAction& action);
 void add_mesh_command(CLI::App& app, ToolAction& action);
+void add_validate_command(CLI::App& app, ToolAction& action);  // `mpdem validate` (docs/validation.md)
 
 }  // namespace mpdem::cli

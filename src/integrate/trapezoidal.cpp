@@ -7,6 +7,12 @@
 
 namespace mpdem {
 
+namespace {
+// Largest alternation, relative to the field's RMS magnitude, accepted as a two-cycle across a
+// force discontinuity (docs/integrators.md); the midpoint is then within half of it.
+constexpr double kTwoCycleAmplitude = 1e-2;
+}  // namespace
+
 void TrapezoidalIntegrator::save_start(const Particles& p) {
   const std::size_t n = p.size();
   x0_.resize(n); v0_.resize(n); w0_.resize(n); a0_.resize(n); b0_.resize(n);
@@ -118,6 +124,7 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
     const double inv_n = n > 0 ? 1.0 / static_cast<double>(n) : 0.0;
     rep.converged = false;
     for (int k = 1; k <= max_iter; ++k) {
+      req.iteration = k;
       f.evaluate(p, b, req);
       ++rep.evaluations;
       const Sums s = update(false);
@@ -133,9 +140,10 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
         if (k == 1) rep.first_error[fld] = eps;
         rep.last_error[fld] = eps;
         if (!(eps <= tols[fld])) all = false;
-        // A two-cycle: y_K = y_(K-2) to tolerance, alternating by less than TOL x |y_K|.
+        // A two-cycle: y_K = y_(K-2) to tolerance, alternating by less than kTwoCycleAmplitude
+        // of the field's RMS magnitude (a larger alternation is divergence: reduce dt).
         if (!(std::sqrt(s[4 * fld + 2] * inv_n) / scale <= tols[fld]) ||
-            !(diff <= tols[fld] * std::sqrt(s[4 * fld + 3] * inv_n) + floors[fld]))
+            !(diff <= kTwoCycleAmplitude * std::sqrt(s[4 * fld + 3] * inv_n) + floors[fld]))
           cycle = false;
         if (eps / tols[fld] > worst) {
           worst = eps / tols[fld];
@@ -179,6 +187,7 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
     }
   }
   req.commit = true;
+  req.iteration = 0;
   f.evaluate(p, b, req);
   ++rep.evaluations;
   return rep;

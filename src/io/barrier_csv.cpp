@@ -66,6 +66,10 @@ void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& so
                                (it->second > 0 ? " (first on line " + std::to_string(it->second) + ")"
                                                : " (already used by an earlier barrier file)"));
     }
+    // The largest int64 would leave no "next free id" (and overflow computing it).
+    if (bid == std::numeric_limits<std::int64_t>::max())
+      t.fail(row, c[ID], "barrier id " + std::to_string(bid) + " leaves no next free id; expected ids < " +
+                             std::to_string(bid));
     seen.emplace(bid, row.line);
     next_id = std::max(next_id, bid + 1);
 
@@ -86,6 +90,9 @@ void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& so
     if (!t.missing(row, c[W1])) law.w1 = t.number(row, c[W1]);
     if (!t.missing(row, c[W2])) law.w2 = t.number(row, c[W2]);
 
+    // Finite coordinates can still overflow the area (|x| ~ 1e155 and up): no usable normal.
+    if (!std::isfinite(norm(cross(p2 - p1, p3 - p1))))
+      throw InputError(t.file(), row.line, "", "triangle too large: its area overflows a double");
     const int g = out.group_index(group);
     if (!out.add(bid, p1, p2, p3, g, E, nu, law, source.thickness, temp))
       throw InputError(t.file(), row.line, "", "degenerate triangle (zero area: its three vertices are collinear)");

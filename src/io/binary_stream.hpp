@@ -60,6 +60,11 @@ class BinaryReader {
     return {v.begin(), v.end()};
   }
   bool at_end() const { return p_ == end_; }
+  std::vector<char> rest() {  // everything not read yet
+    std::vector<char> v(p_, end_);
+    p_ = end_;
+    return v;
+  }
 
  private:
   void need(std::size_t n) const {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <limits>
 #include <string_view>
 #include <unordered_map>
 
@@ -82,6 +83,10 @@ void read_particle_csv(const std::filesystem::path& file, const Model& model, in
                               (it->second > 0 ? " (first on line " + std::to_string(it->second) + ")"
                                               : " (already used by an earlier particle file)"));
     }
+    // The largest int64 would leave no "next free id" (and overflow computing it).
+    if (pid == std::numeric_limits<std::int64_t>::max())
+      t.fail(row, c.id, "particle id " + std::to_string(pid) + " leaves no next free id; expected ids < " +
+                            std::to_string(pid));
     seen.emplace(pid, row.line);
     next_id = std::max(next_id, pid + 1);
 

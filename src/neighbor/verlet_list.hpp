@@ -45,6 +45,7 @@ class VerletList {
   bool needs_rebuild(std::span<const Vec3> x) const;
 
   double skin() const { return skin_; }                 // m
+  const std::vector<Vec3>& build_positions() const { return x_build_; }  // [N] m, at the last build
   double extra_range() const { return extra_; }         // m
   double max_radius() const { return max_radius_; }     // m, at build
   const CellGrid& grid() const { return grid_; }

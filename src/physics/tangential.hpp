@@ -62,14 +62,24 @@ struct TangentialResult {
 // the next step starts from a spring consistent with it (thesis (69) uses the static limit;
 // physics.md allows either). The same function serves particle and barrier contacts, so the
 // choice is consistent across both.
+// Stick-or-slip decision: by the Coulomb test (68), or imposed. Within the fixed-point iteration
+// of one step the decision of the first iteration is imposed on the later ones: with
+// mu_s > mu_d the force jumps at the decision, and a map with a jump has no fixed point (the
+// iterates would alternate); with the decision fixed the map is continuous. The commit
+// evaluation decides afresh (docs/contact_model.md).
+enum class SlipDecision { Free, Stick, Slip };
+
 inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Vec3& v_t, double k_t,
-                                         double d_t, double mu_s, double mu_d, double f_n) {
+                                         double d_t, double mu_s, double mu_d, double f_n,
+                                         SlipDecision decide = SlipDecision::Free) {
   TangentialResult out;
   const Vec3 s_tent = s + ds;                        // (58)
   const Vec3 f_trial = -(k_t * s_tent + d_t * v_t);  // (57)
   const double ft2 = norm2(f_trial);
   const double limit_s = mu_s * std::abs(f_n);
-  if (ft2 <= limit_s * limit_s) {                    // stick (68)
+  const bool stick = decide == SlipDecision::Free ? ft2 <= limit_s * limit_s
+                                                  : decide == SlipDecision::Stick || ft2 == 0.0;
+  if (stick) {                                       // stick (68)
     out.force = f_trial;
     out.spring = s_tent;
     out.dissipated_power = d_t * norm2(v_t);

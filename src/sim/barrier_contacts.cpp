@@ -1,5 +1,7 @@
 #include "sim/barrier_contacts.hpp"
 
+#include <stdexcept>
+
 #include "core/deterministic_sum.hpp"
 #include "physics/contact_geometry.hpp"
 #include "physics/hertz.hpp"
@@ -72,13 +74,21 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
       const double dtc = tangential_damping_coefficient(law.xi_t, m, kt);
       const Vec3 s0 = hist ? project_spring(hist->spring, nrm) : Vec3{};
       const Vec3 vt0 = hist ? hist->vt0 : Vec3{};
-      const TangentialResult ft =
-          tangential_force(s0, dt * ((1.0 - phi) * vt0 + phi * vt), vt, kt, dtc, law.mu_s, law.mu_d, fn.magnitude);
-      const Vec3 roll = rolling_resistance_torque(p.w[i], law.mu_r, r, fn.magnitude, p.inertia[i], dt);
+      // Later iterations keep the first iteration's stick/slip decision (physics/tangential.hpp).
+      SlipDecision decide = SlipDecision::Free;
+      if (req.iteration >= 2 && first_.size() == tentative_.size())
+        for (int s = 0; s < kSlots; ++s)
+          if (first_[i * kSlots + s].element == static_cast<std::int32_t>(e))
+            decide = first_[i * kSlots + s].slipped ? SlipDecision::Slip : SlipDecision::Stick;
+      const TangentialResult ft = tangential_force(s0, dt * ((1.0 - phi) * vt0 + phi * vt), vt, kt, dtc, law.mu_s,
+                                                   law.mu_d, fn.magnitude, decide);
+      // Against the rotation of the step start, like particle pairs (sim/particle_contacts.cpp).
+      const Vec3 wr0 = req.iteration > 0 ? (hist ? hist->wr0 : Vec3{}) : p.w[i];
+      const Vec3 roll = rolling_resistance_torque(wr0, law.mu_r, r, fn.magnitude, p.inertia[i], dt);
       const Vec3 f = fn.magnitude * nrm + ft.force;
       force += f;
       torque += cross(rP, ft.force) + roll;
-      tent[c] = Slot{static_cast<std::int32_t>(e), ft.spring, vt, nrm};
+      tent[c] = Slot{static_cast<std::int32_t>(e), ft.spring, vt, nrm, ft.slipped, p.w[i]};
       load[c] = Load{static_cast<std::int32_t>(e), -f, bc.point, bc.overlap};
       acc[0] += 1.0;
       acc[1] += hertz_elastic_energy(E, r, bc.overlap) + 0.5 * kt * norm2(ft.spring);
@@ -105,6 +115,7 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
   }
   for (std::size_t e = 0; e < b.size(); ++e) b.pressure[e] = -dot(b.force[e], b.normal[e]) / b.area[e];
 
+  if (req.iteration == 1) first_ = tentative_;
   if (req.commit) committed_.swap(tentative_);
   return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3]};
 }
@@ -120,6 +131,18 @@ OverlapReport BarrierContacts::max_overlap(const Particles& p, const Barriers& b
     if (ratio > r.ratio) r = {ratio, p.id[i], -1, b.id[static_cast<std::size_t>(l.element)]};
   }
   return r;
+}
+
+void BarrierContacts::save(BinaryWriter& w) const {
+  w.vector(committed_);
+  w.value(overflows_);
+}
+
+void BarrierContacts::restore(BinaryReader& r, std::size_t particles) {
+  committed_ = r.vector<Slot>();
+  overflows_ = r.value<std::uint64_t>();
+  if (!committed_.empty() && committed_.size() != particles * kSlots)
+    throw std::runtime_error("checkpoint does not match the scene (barrier contact history)");
 }
 
 void BarrierContacts::permute(const std::vector<std::uint32_t>& order) {

@@ -33,6 +33,8 @@ class BarrierContacts {
   void compact(const std::vector<char>& keep);
   std::uint64_t overflows() const { return overflows_; }  // contacts dropped beyond kSlots
   OverlapReport max_overlap(const Particles& p, const Barriers& b) const;
+  void save(BinaryWriter& w) const;  // checkpoints: the committed history
+  void restore(BinaryReader& r, std::size_t particles);
 
  private:
   struct Slot {
@@ -40,6 +42,8 @@ class BarrierContacts {
     Vec3 spring;                // m
     Vec3 vt0;                   // m/s
     Vec3 normal;                // -, contact normal (towards the particle)
+    bool slipped = false;       // the Coulomb limit was hit
+    Vec3 wr0;                   // rad/s, the particle's rotation at the step start (rolling law)
   };
   struct Load {                 // one contact's action on its element
     std::int32_t element = -1;
@@ -53,6 +57,7 @@ class BarrierContacts {
   BarrierTopology topo_;
   std::vector<Slot> committed_;    // [N * kSlots]
   std::vector<Slot> tentative_;    // [N * kSlots]
+  std::vector<Slot> first_;        // [N * kSlots] tentative slots of the step's first iteration
   std::vector<Load> loads_;        // [N * kSlots]
   std::uint64_t overflows_ = 0;
 };

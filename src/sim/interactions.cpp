@@ -110,6 +110,26 @@ void Interactions::commit_heat(const HeatFlows& h, const EvalRequest& req) {
 
 std::uint64_t Interactions::convection_clamps() const { return heat_ ? heat_->clamped_evaluations() : 0; }
 
+void Interactions::save(BinaryWriter& w, const Particles& p) const {
+  w.value(stats_);
+  w.value(out_barriers_);
+  w.value(out_convected_);
+  w.value(out_radiated_);
+  search_->save(w);
+  pp_->save(w, p, *search_);
+  pb_->save(w);
+}
+
+void Interactions::restore(BinaryReader& r, const Particles& p, const Barriers& b) {
+  stats_ = r.value<InteractionStats>();
+  out_barriers_ = r.value<double>();
+  out_convected_ = r.value<double>();
+  out_radiated_ = r.value<double>();
+  search_->restore(r, p, b);
+  pp_->restore(r, p, *search_);
+  pb_->restore(r, p.size());
+}
+
 OverlapReport Interactions::max_overlap(const Particles& p, const Barriers& b) const {
   const OverlapReport pp = pp_->max_overlap(p, *search_);
   const OverlapReport pb = pb_->max_overlap(p, b);

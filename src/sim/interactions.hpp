@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "io/binary_stream.hpp"
 #include "model/scene.hpp"
 
 namespace mpdem {
@@ -19,6 +20,7 @@ struct EvalRequest {
   double dt = 0.0;     // s, step length, for tangential spring increments (64)
   double phi = 1.0;    // -, weight of the evaluated state's tangential velocity in the increment
   bool commit = false; // store contact history: the evaluated state is the accepted end of step
+  int iteration = 0;   // fixed-point iteration (1, 2, ...) of the step, 0 outside the iteration
 };
 
 // Energy and contact bookkeeping (physics.md section 12).
@@ -64,6 +66,9 @@ class Interactions {
   void force_rebuild(Particles& p, const Barriers& b, bool reorder);
 
   const InteractionStats& stats() const { return stats_; }
+  // Checkpoints: statistics, neighbour lists and contact history.
+  void save(BinaryWriter& w, const Particles& p) const;
+  void restore(BinaryReader& r, const Particles& p, const Barriers& b);
   double skin() const;
   const NeighborSearch& search() const { return *search_; }
   const ParticleContacts& particle_contacts() const { return *pp_; }

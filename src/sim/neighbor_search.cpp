@@ -1,6 +1,7 @@
 #include "sim/neighbor_search.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "neighbor/spatial_order.hpp"
 
@@ -13,11 +14,32 @@ bool NeighborSearch::needs_rebuild(const Particles& p, const Barriers& b) const 
 }
 
 void NeighborSearch::rebuild(const Particles& p, const Barriers& b) {
-  list_.build(p.x, p.radius, skin_, extra_);
-  broad_.build(p.x, p.radius, b, skin_);
+  build(p.x, p.radius, b);
   ++rebuilds_;
+}
+
+void NeighborSearch::save(BinaryWriter& w) const {
+  w.vector(list_.build_positions());
+  w.vector(barrier_offsets_build_);
+  w.value(rebuilds_);
+}
+
+void NeighborSearch::restore(BinaryReader& r, const Particles& p, const Barriers& b) {
+  const std::vector<Vec3> x = r.vector<Vec3>();
+  Barriers at_build = b;
+  at_build.offset = r.vector<Vec3>();
+  rebuilds_ = r.value<std::uint64_t>();
+  if (x.size() != p.size() || at_build.offset.size() != b.size())
+    throw std::runtime_error("checkpoint does not match the scene (particle or barrier count)");
+  build(x, p.radius, at_build);
+}
+
+void NeighborSearch::build(std::span<const Vec3> x, std::span<const double> radius, const Barriers& b) {
+  list_.build(x, radius, skin_, extra_);
+  broad_.build(x, radius, b, skin_);
+  barrier_offsets_build_ = b.offset;
+  const std::size_t n = x.size();
   // Transposed index: counting sort of the slots by their second member keeps them ascending.
-  const std::size_t n = p.size();
   const auto& off = list_.offsets();
   const auto& idx = list_.indices();
   first_.resize(idx.size());

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "io/binary_stream.hpp"
 #include "neighbor/barrier_broadphase.hpp"
 #include "neighbor/verlet_list.hpp"
 #include "state/barriers.hpp"
@@ -21,6 +22,9 @@ class NeighborSearch {
 
   bool needs_rebuild(const Particles& p, const Barriers& b) const;
   void rebuild(const Particles& p, const Barriers& b);
+  // Checkpoints: the build positions of both lists, so a resumed run rebuilds at the same steps.
+  void save(BinaryWriter& w) const;
+  void restore(BinaryReader& r, const Particles& p, const Barriers& b);
   // Permutation sorting the particles along a space-filling curve (for cache locality).
   std::vector<std::uint32_t> spatial_order(const Particles& p) const;
 
@@ -39,11 +43,14 @@ class NeighborSearch {
   double skin_;
   double extra_;
   std::uint64_t rebuilds_ = 0;
+  std::vector<Vec3> barrier_offsets_build_;  // [M] m, barrier offsets at the last build
   VerletList list_;
   BarrierBroadphase broad_;
   std::vector<std::uint32_t> first_;       // [pairs] first member of each slot
   std::vector<std::size_t> in_offset_;     // [N+1] CSR offsets of the transposed index
   std::vector<std::uint32_t> in_slot_;     // [pairs] slots, grouped by second member
+
+  void build(std::span<const Vec3> x, std::span<const double> radius, const Barriers& b);
 };
 
 }  // namespace mpdem

@@ -3,7 +3,11 @@
 #include <fmt/core.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 
+#include "io/atomic_file.hpp"
 #include "io/csv_log.hpp"
 #include "io/pvd_index.hpp"
 #include "io/vtu_writer.hpp"
@@ -15,8 +19,44 @@ namespace mpdem {
 
 namespace fs = std::filesystem;
 
-OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& barriers)
-    : model_(model), dir_(std::move(dir)) {
+namespace {
+// Keeps the header and the rows whose `time` column is <= t: a resumed run continues a log from
+// its checkpoint without the rows the interrupted run wrote after it.
+void keep_rows_until(const fs::path& file, double t) {
+  if (!fs::exists(file)) return;
+  std::ifstream in(file);
+  std::string header, line, kept;
+  if (!std::getline(in, header)) return;
+  std::size_t col = 0;
+  {
+    std::stringstream hs(header);
+    std::string name;
+    while (std::getline(hs, name, ',') && name != "time") ++col;
+  }
+  kept = header + "\n";
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    std::string field;
+    for (std::size_t c = 0; c <= col && std::getline(ls, field, ','); ++c) {}
+    char* end = nullptr;
+    const double v = std::strtod(field.c_str(), &end);
+    if (end != field.c_str() && v <= t) kept += line + "\n";
+  }
+  write_file_atomically(file, [&](std::ostream& os) { os << kept; });
+}
+}  // namespace
+
+OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& barriers,
+                             std::optional<double> resume_time)
+    : model_(model), dir_(std::move(dir)), resume_time_(resume_time) {
+  const CsvLog::Open mode = resume_time ? CsvLog::Open::append : CsvLog::Open::replace;
+  auto pvd = [&](const fs::path& f) {
+    return resume_time ? std::make_unique<PvdIndex>(f, *resume_time) : std::make_unique<PvdIndex>(f);
+  };
+  auto log = [&](const fs::path& f, std::vector<std::string> cols) {
+    if (resume_time) keep_rows_until(f, *resume_time);
+    return std::make_unique<CsvLog>(f, std::move(cols), mode);
+  };
   const OutputParams& o = model.params.output;
   particles_vtu_.every = o.particles_every;
   barriers_vtu_.every = o.barriers_every;
@@ -25,11 +65,11 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
   fs::create_directories(dir_);
   if (particles_vtu_.every > 0.0) {
     fs::create_directories(dir_ / "particles");
-    particles_pvd_ = std::make_unique<PvdIndex>(dir_ / "particles.pvd");
+    particles_pvd_ = pvd(dir_ / "particles.pvd");
   }
   if (barriers_vtu_.every > 0.0 && barriers.size() > 0) {
     fs::create_directories(dir_ / "barriers");
-    barriers_pvd_ = std::make_unique<PvdIndex>(dir_ / "barriers.pvd");
+    barriers_pvd_ = pvd(dir_ / "barriers.pvd");
   }
   if (particles_csv_.every > 0.0) fs::create_directories(dir_ / "particles_csv");
   std::vector<std::string> log_cols{"step", "time", "dt", "iterations", "evaluations", "evaluations_total",
@@ -42,17 +82,29 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
   if (near_field_) log_cols.insert(log_cols.end() - 1, "near_field");  // part of total_energy
   if (thermal_)
     for (const char* c : {"heat_to_barriers", "heat_convected", "heat_radiated", "thermal_energy"}) log_cols.push_back(c);
-  log_ = std::make_unique<CsvLog>(dir_ / "log.csv", log_cols);
+  log_ = log(dir_ / "log.csv", log_cols);
   group_count_ = barriers.group_names.size();
   if (barrier_log_.every > 0.0 && group_count_ > 0) {
     std::vector<std::string> cols{"time"};
     for (const auto& g : barriers.group_names)
       for (const char* c : {"fx", "fy", "fz", "mx", "my", "mz", "area"}) cols.push_back(g + "." + c);
-    groups_ = std::make_unique<CsvLog>(dir_ / "barrier_groups.csv", cols);
+    groups_ = log(dir_ / "barrier_groups.csv", cols);
   }
 }
 
 OutputManager::~OutputManager() = default;
+
+void OutputManager::save(BinaryWriter& w) const {
+  for (const Series* s : {&particles_vtu_, &barriers_vtu_, &particles_csv_, &barrier_log_}) w.value(*s);
+}
+
+void OutputManager::restore(BinaryReader& r) {
+  for (Series* s : {&particles_vtu_, &barriers_vtu_, &particles_csv_, &barrier_log_}) {
+    const double every = s->every;  // the scene's interval wins over the checkpoint's
+    *s = r.value<Series>();
+    s->every = every;
+  }
+}
 
 bool OutputManager::due(Series& s, double t, double dt, bool force) {
   if (s.every <= 0.0) return false;
@@ -118,7 +170,13 @@ void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const 
 }
 
 void OutputManager::removed(std::int64_t id, double t, const Vec3& x) {
-  if (!removed_) removed_ = std::make_unique<CsvLog>(dir_ / "removed.csv", std::vector<std::string>{"time", "id", "x", "y", "z"});
+  if (!removed_) {
+    const fs::path f = dir_ / "removed.csv";
+    const bool resume = resume_time_ && fs::exists(f);
+    if (resume) keep_rows_until(f, *resume_time_);
+    removed_ = std::make_unique<CsvLog>(f, std::vector<std::string>{"time", "id", "x", "y", "z"},
+                                        resume ? CsvLog::Open::append : CsvLog::Open::replace);
+  }
   const double row[] = {t, static_cast<double>(id), x.x, x.y, x.z};
   removed_->row(row);
 }

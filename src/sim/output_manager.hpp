@@ -6,10 +6,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "integrate/step_report.hpp"
+#include "io/binary_stream.hpp"
 #include "model/scene.hpp"
 #include "sim/interactions.hpp"
 
@@ -30,7 +32,10 @@ struct GlobalLogRow {
 
 class OutputManager {
  public:
-  OutputManager(const Model& model, std::filesystem::path dir, const Barriers& barriers);
+  // resume_time: continue the series of a run resumed from a checkpoint at that time (rows and
+  // snapshots written after it by the interrupted run are dropped); none for a fresh run.
+  OutputManager(const Model& model, std::filesystem::path dir, const Barriers& barriers,
+                std::optional<double> resume_time = std::nullopt);
   ~OutputManager();
 
   // Writes whatever is due at time t (force = write every snapshot output now, e.g. at the end).
@@ -38,6 +43,9 @@ class OutputManager {
   void global_log(const GlobalLogRow& row, const Particles& p, const InteractionStats& stats);
   void removed(std::int64_t id, double t, const Vec3& x);
   void flush();
+  // Checkpoints: when each series is next due.
+  void save(BinaryWriter& w) const;
+  void restore(BinaryReader& r);
   const std::filesystem::path& dir() const { return dir_; }
 
  private:
@@ -51,6 +59,7 @@ class OutputManager {
 
   const Model& model_;
   std::filesystem::path dir_;
+  std::optional<double> resume_time_;  // s, set when continuing a resumed run
   Series particles_vtu_, barriers_vtu_, particles_csv_, barrier_log_;
   std::unique_ptr<PvdIndex> particles_pvd_, barriers_pvd_;
   std::unique_ptr<CsvLog> log_, groups_, removed_;

@@ -18,6 +18,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   if (spring_.size() != pairs) {  // first use: no history yet
     spring_.assign(pairs, Vec3{});
     vt0_.assign(pairs, Vec3{});
+    wr0_.assign(pairs, Vec3{});
   }
   spring_tent_.resize(pairs);
   vt_tent_.resize(pairs);
@@ -26,6 +27,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   torque_second_.resize(pairs);
   touching_.resize(pairs);
   overlap_.resize(pairs);
+  slipped_.resize(pairs);
   const auto& off = list.offsets();
   const auto& idx = list.indices();
   const double dt = req.dt, phi = req.phi;
@@ -56,11 +58,17 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
       const double kt = tangential_stiffness(G, r, g.overlap);                                 // (65)
       const double dtc = tangential_damping_coefficient(law.xi_t, m, kt);                      // (67)
       const Vec3 ds = dt * ((1.0 - phi) * vt0_[k] + phi * vt);
+      const SlipDecision decide = req.iteration >= 2 ? (slipped_[k] ? SlipDecision::Slip : SlipDecision::Stick)
+                                                     : SlipDecision::Free;
       const TangentialResult ft = tangential_force(project_spring(spring_[k], g.normal), ds, vt, kt, dtc, law.mu_s,
-                                                   law.mu_d, fn.magnitude);
+                                                   law.mu_d, fn.magnitude, decide);
+      if (req.iteration == 1) slipped_[k] = ft.slipped;
       // Torques: tangential force at the contact point (62) and rolling resistance (71).
+      // Rolling resistance (71) acts against the relative rotation of the step start (the state
+      // itself at a commit evaluation, which starts the next step): a torque that is constant
+      // during the iteration, since its direction flips where w_rel = 0 (docs/contact_model.md).
       const Vec3 wrel = p.w[i] - p.w[j];
-      const Vec3 roll = rolling_resistance_torque(wrel, law.mu_r, r, fn.magnitude,
+      const Vec3 roll = rolling_resistance_torque(req.iteration > 0 ? wr0_[k] : wrel, law.mu_r, r, fn.magnitude,
                                                   rolling_inertia_pair(p.inertia[i], p.inertia[j]), dt);
       force_[k] = fn.magnitude * g.normal + ft.force;
       torque_first_[k] = cross(g.r_Pi, ft.force) + roll;
@@ -98,6 +106,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
     for (std::size_t k = 0; k < pairs; ++k) {
       spring_[k] = touching_[k] ? spring_tent_[k] : Vec3{};
       vt0_[k] = touching_[k] ? vt_tent_[k] : Vec3{};
+      wr0_[k] = touching_[k] ? p.w[search.first_of(k)] - p.w[idx[k]] : Vec3{};
     }
   }
   return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3]};
@@ -124,6 +133,14 @@ OverlapReport ParticleContacts::max_overlap(const Particles& p, const NeighborSe
   return r;
 }
 
+void ParticleContacts::save(BinaryWriter& w, const Particles& p, const NeighborSearch& search) const {
+  w.vector(export_history(p, search));
+}
+
+void ParticleContacts::restore(BinaryReader& r, const Particles& p, const NeighborSearch& search) {
+  import_history(p, search, r.vector<PairHistory>());
+}
+
 std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, const NeighborSearch& search) const {
   std::vector<PairHistory> h;
   const VerletList& list = search.pairs();
@@ -132,8 +149,8 @@ std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, co
   const auto& idx = list.indices();
   for (std::size_t i = 0; i < list.size(); ++i)
     for (std::size_t k = off[i]; k < off[i + 1]; ++k)
-      if (norm2(spring_[k]) > 0.0 || norm2(vt0_[k]) > 0.0)
-        h.push_back({p.id[i], p.id[idx[k]], spring_[k], vt0_[k]});
+      if (norm2(spring_[k]) > 0.0 || norm2(vt0_[k]) > 0.0 || norm2(wr0_[k]) > 0.0)
+        h.push_back({p.id[i], p.id[idx[k]], spring_[k], vt0_[k], wr0_[k]});
   return h;
 }
 
@@ -141,6 +158,7 @@ void ParticleContacts::import_history(const Particles& p, const NeighborSearch& 
   const VerletList& list = search.pairs();
   spring_.assign(list.num_pairs(), Vec3{});
   vt0_.assign(list.num_pairs(), Vec3{});
+  wr0_.assign(list.num_pairs(), Vec3{});
   if (h.empty()) return;
   // Orient every record as (smaller id, larger id); look slots up by binary search.
   for (PairHistory& r : h)
@@ -148,6 +166,7 @@ void ParticleContacts::import_history(const Particles& p, const NeighborSearch& 
       std::swap(r.id_first, r.id_second);
       r.spring = -r.spring;
       r.vt0 = -r.vt0;
+      r.wr0 = -r.wr0;
     }
   auto key_less = [](const PairHistory& a, const PairHistory& b) {
     return a.id_first != b.id_first ? a.id_first < b.id_first : a.id_second < b.id_second;
@@ -159,11 +178,12 @@ void ParticleContacts::import_history(const Particles& p, const NeighborSearch& 
     for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
       const std::int64_t a = p.id[i], b = p.id[idx[k]];
       const bool flip = a > b;
-      PairHistory key{flip ? b : a, flip ? a : b, {}, {}};
+      PairHistory key{flip ? b : a, flip ? a : b, {}, {}, {}};
       auto it = std::lower_bound(h.begin(), h.end(), key, key_less);
       if (it == h.end() || it->id_first != key.id_first || it->id_second != key.id_second) continue;
       spring_[k] = flip ? -it->spring : it->spring;
       vt0_[k] = flip ? -it->vt0 : it->vt0;
+      wr0_[k] = flip ? -it->wr0 : it->wr0;
     }
 }
 

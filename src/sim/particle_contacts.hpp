@@ -22,6 +22,7 @@ struct PairHistory {
   std::int64_t id_first = 0, id_second = 0;
   Vec3 spring;   // m
   Vec3 vt0;      // m/s
+  Vec3 wr0;      // rad/s, relative rotation w_first - w_second at the step start
 };
 
 struct PairStats {
@@ -53,6 +54,10 @@ class ParticleContacts {
 
   OverlapReport max_overlap(const Particles& p, const NeighborSearch& search) const;
 
+  // Checkpoints (the list must be restored first).
+  void save(BinaryWriter& w, const Particles& p, const NeighborSearch& search) const;
+  void restore(BinaryReader& r, const Particles& p, const NeighborSearch& search);
+
   // For tests: the committed spring of the pair (i, j), or zero when none.
   Vec3 spring_between(const NeighborSearch& search, std::size_t i, std::size_t j) const;
 
@@ -61,6 +66,7 @@ class ParticleContacts {
   // Per pair slot [pairs]:
   std::vector<Vec3> spring_;        // m, committed tangential spring of the slot's first member
   std::vector<Vec3> vt0_;           // m/s, tangential relative velocity at the step start
+  std::vector<Vec3> wr0_;           // rad/s, relative rotation at the step start (rolling law)
   std::vector<Vec3> spring_tent_;   // m, tentative spring of the current evaluation
   std::vector<Vec3> vt_tent_;       // m/s, tangential velocity of the current evaluation
   std::vector<Vec3> force_;         // N, force on the first member (the second gets -force)
@@ -68,6 +74,7 @@ class ParticleContacts {
   std::vector<Vec3> torque_second_; // N m
   std::vector<double> overlap_;      // m, overlap of touching slots
   std::vector<std::uint8_t> touching_;
+  std::vector<std::uint8_t> slipped_;   // stick (0) / slip (1) decided by the first iteration
 };
 
 }  // namespace mpdem

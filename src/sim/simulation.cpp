@@ -12,6 +12,7 @@
 #include "sim/particle_contacts.hpp"
 #include "sim/progress.hpp"
 #include "sim/run_error.hpp"
+#include "sim/stop_signal.hpp"
 
 namespace mpdem {
 
@@ -191,16 +192,24 @@ void Simulation::check_state() {
 
 RunSummary Simulation::run() {
   const Params& prm = scene_.model.params;
+  const std::filesystem::path dir = output_dir_for(scene_, options_);
   if (options_.write_output) {
-    output_ = std::make_unique<OutputManager>(scene_.model, output_dir_for(scene_, options_), scene_.barriers);
+    output_ = std::make_unique<OutputManager>(scene_.model, dir, scene_.barriers,
+                                              resumed_ ? std::optional<double>(time_) : std::nullopt);
+    if (!resume_output_state_.empty()) {
+      BinaryReader r(resume_output_state_.data(), resume_output_state_.size());
+      output_->restore(r);
+    }
   }
   initialize();
   const double duration = prm.time.duration;
   const double dt = prm.time.dt;
-  if (output_) {
+  if (output_ && !resumed_) {
     output_->snapshots(time_, dt, scene_.particles, scene_.barriers, true);
     output_->global_log({0, time_, dt, nullptr, evaluations_, 0, removed_}, scene_.particles, interactions_->stats());
   }
+  install_stop_handlers();
+  const auto every = static_cast<std::uint64_t>(prm.output.checkpoint_every);
   Progress progress(duration, prm.output.progress_every, options_.progress);
   StepReport last;
   while (time_ < duration - 1e-9 * dt) {
@@ -218,6 +227,19 @@ RunSummary Simulation::run() {
     }
     const auto& st = interactions_->stats();
     progress.update(time_, steps_, st.contacts_pp + st.contacts_pb, scene_.particles.size());
+    if (output_ && every > 0 && steps_ % every == 0) {
+      write_checkpoint(dir / "checkpoint.bin");
+      output_->flush();
+    }
+    if (const int sig = stop_signal()) {
+      std::filesystem::path ck;
+      if (output_) {
+        ck = dir / "checkpoint.bin";
+        write_checkpoint(ck);
+        output_->flush();
+      }
+      throw Interrupted(sig, time_, steps_, ck);
+    }
   }
   if (output_) {
     output_->snapshots(time_, dt, scene_.particles, scene_.barriers, true);

@@ -49,6 +49,10 @@ class Simulation {
   // `limit` caps the step (to land exactly on the end time).
   StepReport advance_adaptive(double limit);
   double current_dt() const { return dt_; }
+  // Checkpoints (sim/checkpoint.cpp): write the full state; resume before run() (throws InputError
+  // for a file that is not a checkpoint of this scene).
+  void write_checkpoint(const std::filesystem::path& file);
+  void resume_from(const std::filesystem::path& file);
   std::uint64_t redone_steps() const { return redone_; }
   std::uint64_t evaluations() const { return evaluations_; }
   double time() const { return time_; }
@@ -81,6 +85,8 @@ class Simulation {
   bool energy_checked_ = false;      // last_balance_ / last_active_ are set
   std::size_t removed_ = 0;
   bool initialized_ = false;
+  bool resumed_ = false;             // state loaded from a checkpoint
+  std::vector<char> resume_output_state_;  // OutputManager series from the checkpoint
 };
 
 }  // namespace mpdem

@@ -1,0 +1,26 @@
+#pragma once
+// `mpdem bench`: the settled-bed benchmark (docs/benchmark.md, shared bench/README.md). Reads a
+// LAMMPS/LIGGGHTS data file, builds the reference scene (five flat walls, gravity, Hertz-Mindlin
+// with e = 0.5, mu = 0.5, no rolling friction), runs untimed relaxation steps, then times steps.
+#include <filesystem>
+#include <string>
+
+namespace mpdem::cli {
+
+struct BenchArgs {
+  std::filesystem::path data;           // LAMMPS data file (plain text)
+  std::string integrator = "verlet";    // "verlet" or "trapezoidal"
+  double phi = 0.5;                     // -, trapezoidal weight
+  int threads = 1;                      // OpenMP threads (>= 1)
+  long steps = 0;                       // timed steps; 0 = 5000 for N <= 50,000 particles, else 2000
+  long relax = 1000;                    // untimed steps before the timed window
+  double dt = 4e-6;                     // s
+  double skin = 2e-4;                   // m, Verlet skin
+};
+
+// Runs the benchmark and prints the results on stdout (a human-readable block and one
+// `BENCH_RESULT key=value ...` line for scripts). Returns the exit status (0).
+// Throws InputError for a bad data file or arguments.
+int bench_command(const BenchArgs& args);
+
+}  // namespace mpdem::cli

@@ -1,0 +1,170 @@
+// `mpdem bench`: the settled-bed benchmark driver (docs/benchmark.md). The scene is the one of the
+// shared bench README, identical to the LIGGGHTS input liggghts_bench.in.
+#include <fmt/core.h>
+#include <omp.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "cli/bench_command.hpp"
+#include "io/input_error.hpp"
+#include "io/lammps_data.hpp"
+#include "sim/simulation.hpp"
+
+namespace mpdem::cli {
+
+namespace {
+
+constexpr double kYoung = 1e7;        // Pa, particles and walls
+constexpr double kPoisson = 0.3;      // -
+constexpr double kRestitution = 0.5;  // -, particle-particle and particle-wall
+constexpr double kFriction = 0.5;     // -, static = dynamic sliding friction
+constexpr double kGravity = 9.81;     // m/s^2, along -z
+
+ContactLawParams bench_law() {
+  ContactLawParams c;
+  c.restitution = kRestitution;
+  c.mu_static = kFriction;
+  c.mu_dynamic = kFriction;
+  c.mu_rolling = 0.0;
+  c.tangential_damping = 0.0;
+  return c;
+}
+
+// Adds the rectangle a-b-c-d (counter-clockwise seen from inside the box) as two triangles.
+void add_wall(Barriers& b, std::int64_t& next_id, int group, const Vec3& a, const Vec3& bb, const Vec3& c,
+              const Vec3& d) {
+  const double insulated = std::numeric_limits<double>::quiet_NaN();
+  b.add(next_id++, a, bb, c, group, kYoung, kPoisson, MotionLaw{}, 0.0, insulated);
+  b.add(next_id++, a, c, d, group, kYoung, kPoisson, MotionLaw{}, 0.0, insulated);
+}
+
+// The reference scene: particles of the data file, five walls x = lo, hi; y = lo, hi; z = lo
+// (no lid) up to the box top, gravity, Hertz-Mindlin, e = 0.5, mu = 0.5, no rolling friction.
+void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
+  Params& prm = s.model.params;
+  prm.time.integrator = a.integrator == "verlet" ? Integrator::Verlet : Integrator::Trapezoidal;
+  prm.time.phi = a.phi;
+  prm.time.dt = prm.time.dt_min = prm.time.dt_max = a.dt;
+  prm.time.duration = a.dt * static_cast<double>(a.relax + a.steps);
+  prm.fields.gravity = {0.0, 0.0, -kGravity};
+  prm.contact.particle_particle = bench_law();
+  prm.contact.particle_barrier = bench_law();
+  prm.analysis.rotation = true;
+  prm.analysis.thermal = false;
+  prm.neighbor.skin = a.skin;
+  Material m;
+  m.name = "bed";
+  m.young = kYoung;
+  m.poisson = kPoisson;
+  m.density = d.atoms.empty() ? 2500.0 : d.atoms.front().density;
+  s.model.materials.push_back(m);
+
+  Particles& p = s.particles;
+  for (const LammpsAtom& at : d.atoms) {
+    p.add(at.id, 0, 0.5 * at.diameter, at.density, at.x, Vec3{});
+    const std::size_t i = p.size() - 1;
+    p.young[i] = m.young;
+    p.poisson[i] = m.poisson;
+    p.charge[i] = 0.0;
+    p.heat_capacity[i] = m.heat_capacity;
+    p.conductivity[i] = m.conductivity;
+    p.emissivity[i] = m.emissivity;
+    p.T[i] = m.temperature;
+  }
+
+  Barriers& b = s.barriers;
+  const int g = b.group_index("walls");
+  const Vec3 lo = d.lo, hi = d.hi;
+  const double h = hi.z;
+  std::int64_t next = 1;
+  add_wall(b, next, g, {lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, h}, {lo.x, lo.y, h});  // x = lo
+  add_wall(b, next, g, {hi.x, lo.y, lo.z}, {hi.x, lo.y, h}, {hi.x, hi.y, h}, {hi.x, hi.y, lo.z});  // x = hi
+  add_wall(b, next, g, {lo.x, lo.y, lo.z}, {lo.x, lo.y, h}, {hi.x, lo.y, h}, {hi.x, lo.y, lo.z});  // y = lo
+  add_wall(b, next, g, {lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, h}, {lo.x, hi.y, h});  // y = hi
+  add_wall(b, next, g, {lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z});  // floor
+}
+
+double kinetic_energy(const Particles& p) {
+  double e = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) e += 0.5 * p.mass[i] * norm2(p.v[i]);
+  return e;
+}
+
+double top(const Particles& p) {
+  double z = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < p.size(); ++i) z = std::max(z, p.x[i].z);
+  return z;
+}
+
+long peak_rss_kib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss;  // KiB on Linux
+}
+
+}  // namespace
+
+int bench_command(const BenchArgs& args) {
+  if (args.integrator != "verlet" && args.integrator != "trapezoidal")
+    throw InputError("", 0, "--integrator", "expected \"verlet\" or \"trapezoidal\"");
+  if (args.threads < 1) throw InputError("", 0, "--threads", "expected >= 1");
+  if (!(args.dt > 0.0) || !(args.skin >= 0.0) || args.relax < 0 || args.steps < 0)
+    throw InputError("", 0, "--dt/--skin/--relax/--steps", "expected dt > 0, skin >= 0, relax >= 0, steps >= 0");
+  omp_set_num_threads(args.threads);
+
+  const LammpsData d = read_lammps_data(args.data);
+  BenchArgs a = args;
+  if (a.steps == 0) a.steps = d.atoms.size() <= 50000 ? 5000 : 2000;
+  Scene scene;
+  build_scene(d, a, scene);
+  const std::size_t n = scene.particles.size();
+
+  Simulation sim(scene, RunOptions{{}, false, false});
+  for (long k = 0; k < a.relax; ++k) sim.advance(a.dt);
+
+  const std::uint64_t rebuilds0 = sim.interactions().stats().rebuilds;
+  std::uint64_t evaluations = 0;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (long k = 0; k < a.steps; ++k) evaluations += static_cast<std::uint64_t>(sim.advance(a.dt).evaluations);
+  const auto t1 = std::chrono::steady_clock::now();
+
+  const double seconds = std::chrono::duration<double>(t1 - t0).count();
+  const double psteps = static_cast<double>(n) * static_cast<double>(a.steps);
+  const InteractionStats& st = sim.interactions().stats();
+  const std::uint64_t rebuilds = st.rebuilds - rebuilds0;
+  const double pp_per_particle = n ? static_cast<double>(st.contacts_pp) / static_cast<double>(n) : 0.0;
+  const double coordination = 2.0 * pp_per_particle;  // each contact counted at both particles
+  const double pb_per_particle = n ? static_cast<double>(st.contacts_pb) / static_cast<double>(n) : 0.0;
+  const double evals_per_step = a.steps ? static_cast<double>(evaluations) / static_cast<double>(a.steps) : 0.0;
+  const double ke = kinetic_energy(sim.particles());
+  const double zmax = top(sim.particles());
+  const long rss = peak_rss_kib();
+  const std::string integ = a.integrator == "verlet" ? "verlet" : fmt::format("trapezoidal(phi={})", a.phi);
+
+  fmt::print("mpdem bench: {} particles, {} walls (triangles {}), {} threads, {}\n", n, 5, scene.barriers.size(),
+             a.threads, integ);
+  fmt::print("  steps: {} untimed + {} timed, dt = {:g} s, skin = {:g} m\n", a.relax, a.steps, a.dt, a.skin);
+  fmt::print("  wall time of timed steps   {:.3f} s\n", seconds);
+  fmt::print("  throughput                 {:.4g} particle-steps/s\n", seconds > 0 ? psteps / seconds : 0.0);
+  fmt::print("  cost                       {:.1f} ns/particle-step\n", psteps > 0 ? 1e9 * seconds / psteps : 0.0);
+  fmt::print("  force evaluations / step   {:.2f}\n", evals_per_step);
+  fmt::print("  neighbour rebuilds (timed) {}\n", rebuilds);
+  fmt::print("  contacts per particle      {:.3f} (coordination 2 pp/N; pp/N = {:.3f}, walls/N = {:.3f})\n",
+             coordination, pp_per_particle, pb_per_particle);
+  fmt::print("  final kinetic energy       {:.4g} J, top of bed z = {:.6g} m\n", ke, zmax);
+  fmt::print("  peak RSS                   {:.1f} MiB\n", static_cast<double>(rss) / 1024.0);
+  fmt::print(
+      "BENCH_RESULT code=mpdem integrator={} threads={} particles={} steps={} seconds={:.6f} psteps_per_s={:.6g} "
+      "ns_per_pstep={:.4f} evals_per_step={:.4f} rebuilds={} coordination={:.5f} wall_contacts_per_particle={:.5f} "
+      "ke={:.6g} zmax={:.9g} peak_rss_kib={}\n",
+      a.integrator == "verlet" ? "verlet" : "trapezoidal", a.threads, n, a.steps, seconds,
+      seconds > 0 ? psteps / seconds : 0.0, psteps > 0 ? 1e9 * seconds / psteps : 0.0, evals_per_step, rebuilds,
+      coordination, pb_per_particle, ke, zmax, rss);
+  return 0;
+}
+
+}  // namespace mpdem::cli

@@ -1,0 +1,168 @@
+// Regression tests for the findings of the libFuzzer campaign (docs/fuzzing.md, fuzz/). Each
+// finding's input is embedded byte for byte; the reader must reject it with an InputError (the
+// contract for bad input) - not crash, hang, or throw anything else - and the message must name
+// the file, so the CLI can report it.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "io/barrier_csv.hpp"
+#include "io/input_error.hpp"
+#include "io/particle_csv.hpp"
+#include "io/stl_reader.hpp"
+#include "model/scene.hpp"
+
+namespace fs = std::filesystem;
+using namespace mpdem;
+
+namespace {
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path = fs::temp_directory_path() / ("mpdem_fuzzreg_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  fs::path write(const std::string& name, const std::string& bytes) const {
+    const fs::path p = path / name;
+    std::ofstream(p, std::ios::binary) << bytes;
+    return p;
+  }
+};
+
+// Runs f; passes when it throws an InputError whose message names `file`.
+template <class F>
+void expect_input_error(F&& f, const fs::path& file, const std::string& what) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.filename().string()), std::string::npos) << what << ": " << e.what();
+    return;
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << what << ": expected an InputError, got another exception: " << e.what();
+    return;
+  }
+  ADD_FAILURE() << what << ": expected an InputError, nothing was thrown";
+}
+
+// UTF-8 encoding of a code point below U+10000.
+std::string utf8(char32_t c) {
+  std::string s;
+  if (c < 0x80) {
+    s += static_cast<char>(c);
+  } else if (c < 0x800) {
+    s += static_cast<char>(0xC0 | (c >> 6));
+    s += static_cast<char>(0x80 | (c & 0x3F));
+  } else {
+    s += static_cast<char>(0xE0 | (c >> 12));
+    s += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    s += static_cast<char>(0x80 | (c & 0x3F));
+  }
+  return s;
+}
+
+}  // namespace
+
+// Finding 1 (fuzz_scene): a non-ASCII letter inside a bare key ("dura\u024Fion") drove toml++
+// 3.3's is_non_ascii_horizontal_whitespace() into TOML_UNREACHABLE (a UBSan report in the
+// header-only build; upstream marzer/tomlplusplus #190/#295). The shipped build links the
+// system's compiled toml++; there it must come out as a TOML syntax error.
+TEST(FuzzRegressions, SceneNonAsciiInBareKeyIsASyntaxError) {
+  TempDir d;
+  const std::string input("[time]\ndura\xC9\x8Fion = 0\n dt =\n", 31);
+  ASSERT_EQ(input.size(), 31u);  // the artifact's length, byte for byte
+  const fs::path f = d.write("scene.toml", input);
+  expect_input_error([&] { (void)parse_scene_file(f); }, f, "U+024F in a bare key");
+}
+
+// The same finding, swept over every code point whose lookup reaches the faulty switch
+// default: U+00A1..U+0499 (child index 0) and U+F9F6..U+FEFE (index 63), each placed right after a
+// bare key, where toml++ asks whether it is whitespace. None is valid TOML there.
+TEST(FuzzRegressions, SceneNonAsciiAfterBareKeySweep) {
+  TempDir d;
+  int checked = 0;
+  for (char32_t c = 0xA1; c <= 0xFEFE; ++c) {
+    if (c > 0x499 && c < 0xF9F6) c = 0xF9F6;
+    const fs::path f = d.write("scene.toml", "[time]\nduration" + utf8(c) + " = 1\ndt = 0.1\n");
+    try {
+      (void)parse_scene_file(f);
+      ADD_FAILURE() << "U+" << std::hex << static_cast<std::uint32_t>(c) << " after a bare key was accepted";
+    } catch (const InputError&) {
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, (0x499 - 0xA1 + 1) + (0xFEFE - 0xF9F6 + 1));
+}
+
+namespace {
+
+Model one_material() {
+  Model m;
+  m.materials.resize(1);
+  m.materials[0].name = "glass";
+  return m;
+}
+
+}  // namespace
+
+// Finding 2 (code review while fuzzing, confirmed by fuzz_particle_csv's UBSan build): the id
+// INT64_MAX made "next free id = id + 1" a signed overflow. Such an id is now rejected, naming the
+// line and the `id` column; the largest accepted id is INT64_MAX - 1.
+TEST(FuzzRegressions, ParticleIdAtInt64MaxIsRejected) {
+  TempDir d;
+  const Model model = one_material();
+  const fs::path f = d.write("p.csv", "id,x,y,z,radius\n9223372036854775807,0,0,0,0.01\n");
+  Particles out;
+  expect_input_error([&] { read_particle_csv(f, model, 0, out); }, f, "particle id INT64_MAX");
+  try {
+    read_particle_csv(f, model, 0, out);
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.key(), "id");
+  }
+}
+
+// A row without id after id INT64_MAX - 1 would be given INT64_MAX: rejected the same way.
+TEST(FuzzRegressions, ParticleNextFreeIdPastInt64MaxIsRejected) {
+  TempDir d;
+  const Model model = one_material();
+  const fs::path f = d.write("p.csv", "id,x,y,z,radius\n9223372036854775806,0,0,0,0.01\n,1,0,0,0.01\n");
+  Particles out;
+  expect_input_error([&] { read_particle_csv(f, model, 0, out); }, f, "implicit id INT64_MAX");
+  ASSERT_EQ(out.size(), 1u);  // the first row (id INT64_MAX - 1) is valid and was read
+  EXPECT_EQ(out.id[0], 9223372036854775806);
+}
+
+// Finding 2, barrier side: same overflow in read_barrier_csv.
+TEST(FuzzRegressions, BarrierIdAtInt64MaxIsRejected) {
+  TempDir d;
+  const Model model = one_material();
+  BarrierSource src;
+  const fs::path f = d.write("b.csv", "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n9223372036854775807,0,0,0,1,0,0,0,1,0\n");
+  Barriers out;
+  expect_input_error([&] { read_barrier_csv(f, src, model, out); }, f, "barrier id INT64_MAX");
+  const fs::path g = d.write("b2.csv",
+                             "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n9223372036854775806,0,0,0,1,0,0,0,1,0\n,0,0,0,1,0,0,0,1,0\n");
+  Barriers out2;
+  expect_input_error([&] { read_barrier_csv(g, src, model, out2); }, g, "implicit barrier id INT64_MAX");
+}
+
+// Finding 3 (code review while fuzzing): finite but huge vertices made the barrier's area
+// overflow to infinity; Barriers::add accepted it with a NaN normal. The reader now rejects the
+// row (|edge| ~ 1e200 m: cross product ~ 1e400 > DBL_MAX ~ 1.8e308).
+TEST(FuzzRegressions, BarrierWithOverflowingAreaIsRejected) {
+  TempDir d;
+  const Model model = one_material();
+  BarrierSource src;
+  const fs::path f = d.write("b.csv", "x1,y1,z1,x2,y2,z2,x3,y3,z3\n0,0,0,1e200,0,0,0,1e200,0\n");
+  Barriers out;
+  expect_input_error([&] { read_barrier_csv(f, src, model, out); }, f, "overflowing area");
+  EXPECT_EQ(out.size(), 0u);
+}

@@ -15,42 +15,18 @@
 #include "io/csv_table.hpp"
 #include "io/input_error.hpp"
 #include "io/particle_csv.hpp"
+#include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;
+using mpdem::test::TempDir;
+using mpdem::test::error_of;
+using mpdem::test::expect_contains;
 
 namespace {
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = fs::temp_directory_path() / ("mpdem_csv_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path p = path / name;
-    std::ofstream(p) << text;
-    return p;
-  }
-};
 
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return "";
-}
 
-void expect_contains(const std::string& text, const std::vector<std::string>& parts) {
-  for (const std::string& p : parts) EXPECT_NE(text.find(p), std::string::npos) << "'" << p << "' not in: " << text;
-}
 
 Model two_materials() {
   Model m;
@@ -83,7 +59,7 @@ Model two_materials() {
 // ---------------------------------------------------------------- CsvTable
 
 TEST(CsvTable, TrimsSkipsCommentsAndTracksLines) {
-  TempDir d;
+  TempDir d("mpdem_csv");
   const fs::path f = d.write("t.csv", "# comment\n\n  a , b\t,c \r\n# another\n 1,2 , 3\n\n4,,6\n");
   const CsvTable t = CsvTable::read(f);
   EXPECT_EQ(t.header_line(), 3u);
@@ -98,7 +74,7 @@ TEST(CsvTable, TrimsSkipsCommentsAndTracksLines) {
 }
 
 TEST(CsvTable, NumberParsingIsStrict) {
-  TempDir d;
+  TempDir d("mpdem_csv");
   const CsvTable t = CsvTable::read(d.write("t.csv", "v\n+1.5e3\n1.5x\ninf\n1e999\n"));
   EXPECT_EQ(t.number(t.rows()[0], 0), 1500.0);
   expect_contains(error_of([&] { (void)t.number(t.rows()[1], 0); }), {"t.csv:3: 'v': expected a number, got '1.5x'"});
@@ -110,7 +86,7 @@ TEST(CsvTable, NumberParsingIsStrict) {
 // ---------------------------------------------------------------- Particle CSV
 
 TEST(ParticleCsv, ShuffledColumnsGiveTheSameParticles) {
-  TempDir d;
+  TempDir d("mpdem_csv");
   const Model model = two_materials();
   const fs::path a = d.write("a.csv",
                              "id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,density,young,poisson,charge,temperature,"
@@ -162,7 +138,7 @@ TEST(ParticleCsv, ShuffledColumnsGiveTheSameParticles) {
 }
 
 TEST(ParticleCsv, MissingColumnsTakeTheMaterialDefaults) {
-  TempDir d;
+  TempDir d("mpdem_csv");
   const Model model = two_materials();
   const fs::path f = d.write("p.csv", "x,y,z,radius,material\n0,0,0,0.01,\n1,0,0,0.01,glass\n2,0,0,0.01,1\n");
   Particles p;
@@ -185,7 +161,7 @@ TEST(ParticleCsv, MissingColumnsTakeTheMaterialDefaults) {
 }
 
 TEST(ParticleCsv, MassInertiaAndClearedState) {
-  TempDir d;
+  TempDir d("mpdem_csv");
   const Model model = two_materials();
   const fs::path f = d.write("p.csv", "x,y,z,radius,density\n0,0,0,0.0035,1234.5\n0,0,1,2.5,3000\n");
   Particles p;
@@ -207,7 +183,7 @@ TEST(ParticleCsv, MassInertiaAndClearedState) {
 }
 
 TEST(ParticleCsv, IdsContinueAfterTheLargestSeen) {
-  TempDir d;
+  TempDir d("mpdem_csv");
   const Model model = two_materials();
   Particles p;
   read_particle_csv(d.write("a.csv", "x,y,z,radius\n0,0,0,1\n0,0,0,1\n"), model, 0, p);  // 0, 1
@@ -250,7 +226,7 @@ TEST(ParticleCsv, ErrorsNameFileLineAndColumn) {
   const Model model = two_materials();
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);
-    TempDir d;
+    TempDir d("mpdem_csv");
     const fs::path f = d.write("p.csv", c.csv);
     Particles p;
     const std::string msg = error_of([&] { read_particle_csv(f, model, 0, p); });
@@ -260,7 +236,7 @@ TEST(ParticleCsv, ErrorsNameFileLineAndColumn) {
 }
 
 TEST(ParticleCsv, MissingFile) {
-  TempDir d;
+  TempDir d("mpdem_csv");
   Particles p;
   const std::string msg = error_of([&] { read_particle_csv(d.path / "none.csv", two_materials(), 0, p); });
   expect_contains(msg, {"none.csv", "does not exist"});
@@ -269,7 +245,7 @@ TEST(ParticleCsv, MissingFile) {
 // ---------------------------------------------------------------- Barrier CSV
 
 TEST(BarrierCsv, GeometryDefaultsAndMotionOverrides) {
-  TempDir d;
+  TempDir d("mpdem_csv");
   const Model model = two_materials();
   BarrierSource src;
   src.material = "steel";
@@ -306,7 +282,7 @@ TEST(BarrierCsv, GeometryDefaultsAndMotionOverrides) {
 }
 
 TEST(BarrierCsv, SourceGroupTemperatureAndFirstMaterial) {
-  TempDir d;
+  TempDir d("mpdem_csv");
   const Model model = two_materials();
   BarrierSource src;
   src.group = "walls";
@@ -348,7 +324,7 @@ TEST(BarrierCsv, ErrorsNameFileLineAndColumn) {
   const Model model = two_materials();
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);
-    TempDir d;
+    TempDir d("mpdem_csv");
     const fs::path f = d.write("w.csv", c.csv);
     Barriers b;
     const std::string msg = error_of([&] { read_barrier_csv(f, BarrierSource{}, model, b); });

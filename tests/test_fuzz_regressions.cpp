@@ -15,27 +15,16 @@
 #include "io/particle_csv.hpp"
 #include "io/stl_reader.hpp"
 #include "model/scene.hpp"
+#include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;
+using mpdem::test::TempDir;
+using mpdem::test::error_of;
+using mpdem::test::expect_contains;
 
 namespace {
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = fs::temp_directory_path() / ("mpdem_fuzzreg_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  fs::path write(const std::string& name, const std::string& bytes) const {
-    const fs::path p = path / name;
-    std::ofstream(p, std::ios::binary) << bytes;
-    return p;
-  }
-};
 
 // Runs f; passes when it throws an InputError whose message names `file`.
 template <class F>
@@ -75,7 +64,7 @@ std::string utf8(char32_t c) {
 // header-only build; upstream marzer/tomlplusplus #190/#295). The shipped build links the
 // system's compiled toml++; there it must come out as a TOML syntax error.
 TEST(FuzzRegressions, SceneNonAsciiInBareKeyIsASyntaxError) {
-  TempDir d;
+  TempDir d("mpdem_fuzzreg");
   const std::string input("[time]\ndura\xC9\x8Fion = 0\n dt =\n", 31);
   ASSERT_EQ(input.size(), 31u);  // the artifact's length, byte for byte
   const fs::path f = d.write("scene.toml", input);
@@ -86,7 +75,7 @@ TEST(FuzzRegressions, SceneNonAsciiInBareKeyIsASyntaxError) {
 // default: U+00A1..U+0499 (child index 0) and U+F9F6..U+FEFE (index 63), each placed right after a
 // bare key, where toml++ asks whether it is whitespace. None is valid TOML there.
 TEST(FuzzRegressions, SceneNonAsciiAfterBareKeySweep) {
-  TempDir d;
+  TempDir d("mpdem_fuzzreg");
   int checked = 0;
   for (char32_t c = 0xA1; c <= 0xFEFE; ++c) {
     if (c > 0x499 && c < 0xF9F6) c = 0xF9F6;
@@ -116,7 +105,7 @@ Model one_material() {
 // INT64_MAX made "next free id = id + 1" a signed overflow. Such an id is now rejected, naming the
 // line and the `id` column; the largest accepted id is INT64_MAX - 1.
 TEST(FuzzRegressions, ParticleIdAtInt64MaxIsRejected) {
-  TempDir d;
+  TempDir d("mpdem_fuzzreg");
   const Model model = one_material();
   const fs::path f = d.write("p.csv", "id,x,y,z,radius\n9223372036854775807,0,0,0,0.01\n");
   Particles out;
@@ -131,7 +120,7 @@ TEST(FuzzRegressions, ParticleIdAtInt64MaxIsRejected) {
 
 // A row without id after id INT64_MAX - 1 would be given INT64_MAX: rejected the same way.
 TEST(FuzzRegressions, ParticleNextFreeIdPastInt64MaxIsRejected) {
-  TempDir d;
+  TempDir d("mpdem_fuzzreg");
   const Model model = one_material();
   const fs::path f = d.write("p.csv", "id,x,y,z,radius\n9223372036854775806,0,0,0,0.01\n,1,0,0,0.01\n");
   Particles out;
@@ -142,7 +131,7 @@ TEST(FuzzRegressions, ParticleNextFreeIdPastInt64MaxIsRejected) {
 
 // Finding 2, barrier side: same overflow in read_barrier_csv.
 TEST(FuzzRegressions, BarrierIdAtInt64MaxIsRejected) {
-  TempDir d;
+  TempDir d("mpdem_fuzzreg");
   const Model model = one_material();
   BarrierSource src;
   const fs::path f = d.write("b.csv", "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n9223372036854775807,0,0,0,1,0,0,0,1,0\n");
@@ -158,7 +147,7 @@ TEST(FuzzRegressions, BarrierIdAtInt64MaxIsRejected) {
 // overflow to infinity; Barriers::add accepted it with a NaN normal. The reader now rejects the
 // row (|edge| ~ 1e200 m: cross product ~ 1e400 > DBL_MAX ~ 1.8e308).
 TEST(FuzzRegressions, BarrierWithOverflowingAreaIsRejected) {
-  TempDir d;
+  TempDir d("mpdem_fuzzreg");
   const Model model = one_material();
   BarrierSource src;
   const fs::path f = d.write("b.csv", "x1,y1,z1,x2,y2,z2,x3,y3,z3\n0,0,0,1e200,0,0,0,1e200,0\n");

@@ -21,28 +21,18 @@
 #include "tools/generator.hpp"
 #include "tools/mesh_builder.hpp"
 #include "tools/mesh_solid.hpp"
+#include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;
+using mpdem::test::TempDir;
+using mpdem::test::error_of;
+using mpdem::test::expect_contains;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = fs::temp_directory_path() / ("mpdem_gen_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name) << text;
-    return path / name;
-  }
-};
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -153,7 +143,7 @@ TEST(Generator, TiltedCylinderNoOverlapAllInside) {
 
 TEST(Generator, MeshRegionWithCavity) {
   // A unit box with a closed cubic cavity [0.3, 0.7]^3: a non-convex region of volume 1 - 0.064.
-  TempDir dir;
+  TempDir dir("mpdem_gen");
   TriangleMesh outer = make_box(1, 1, 1, true);
   outer.flip();  // normals out of the solid
   TriangleMesh inner = make_box(0.4, 0.4, 0.4, true);  // normals into the cavity = out of the solid
@@ -207,7 +197,7 @@ TEST(Generator, MeshRegionWithCavity) {
 }
 
 TEST(Generator, SameSeedSameFileOtherSeedDifferent) {
-  TempDir dir;
+  TempDir dir("mpdem_gen");
   GenerateSpec s = box_spec(0.05, 1500, 0.0);
   s.radius.law = RadiusLaw::Normal;
   s.radius.mean = 0.001;
@@ -381,7 +371,7 @@ TEST(Generator, Velocities) {
 }
 
 TEST(Generator, SceneInlineTable) {
-  TempDir dir;
+  TempDir dir("mpdem_gen");
   const fs::path scene = dir.write("scene.toml", R"(
 [time]
 duration = 1.0
@@ -445,7 +435,7 @@ generate = { region = "cylinder", base = [1, 0, 0], axis = [0, 0, 0.1], cylinder
 }
 
 TEST(Generator, CommandLine) {
-  TempDir dir;
+  TempDir dir("mpdem_gen");
   const auto run = [&](const std::string& args) {
     const std::string cmd = std::string("\"") + MPDEM_BINARY + "\" generate " + args + " > /dev/null 2> \"" +
                             (dir.path / "err.txt").string() + "\"";

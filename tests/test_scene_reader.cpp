@@ -13,53 +13,27 @@
 
 #include "io/input_error.hpp"
 #include "model/scene.hpp"
+#include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;
+using mpdem::test::TempDir;
+using mpdem::test::error_of;
+using mpdem::test::expect_contains;
 
 namespace {
 
 // A fresh folder under the system temp dir, removed at the end of the test.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = fs::temp_directory_path() /
-           ("mpdem_scene_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path p = path / name;
-    fs::create_directories(p.parent_path());
-    std::ofstream(p) << text;
-    return p;
-  }
-};
 
 // what() of the InputError `f` throws ("" and a test failure when it throws none).
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected an InputError";
-  return "";
-}
 
-void expect_contains(const std::string& text, const std::vector<std::string>& parts) {
-  for (const std::string& p : parts) EXPECT_NE(text.find(p), std::string::npos) << "'" << p << "' not in: " << text;
-}
 
 const char* kTime = "\n[time]\nduration = 1.0\ndt = 1e-5\n";
 
 }  // namespace
 
 TEST(SceneReader, FullSceneMapsEveryKey) {
-  TempDir d;
+  TempDir d("mpdem_scene");
   d.write("data/beads.csv", "x,y,z,radius\n0,0,0,0.001\n");
   d.write("walls.csv", "x1,y1,z1,x2,y2,z2,x3,y3,z3\n0,0,0,1,0,0,0,1,0\n");
   const fs::path scene = d.write("scene.toml", R"(
@@ -293,7 +267,7 @@ progress_every = 5.0
 
 // The defaults documented in docs/scene.md.
 TEST(SceneReader, DocumentedDefaults) {
-  TempDir d;
+  TempDir d("mpdem_scene");
   const Scene s = parse_scene_file(d.write("scene.toml", "[time]\nduration = 0.5\ndt = 2e-5\n"));
   const Params& p = s.model.params;
   EXPECT_EQ(p.time.duration, 0.5);
@@ -335,7 +309,7 @@ TEST(SceneReader, DocumentedDefaults) {
 }
 
 TEST(SceneReader, DtBoundsDefaultAroundAGivenDt) {
-  TempDir d;
+  TempDir d("mpdem_scene");
   // Only dt_max given: dt_min still defaults to dt / 1000.
   const Scene s = parse_scene_file(d.write("scene.toml", "[time]\nduration = 1\ndt = 1e-3\ndt_max = 1e-2\n"));
   EXPECT_EQ(s.model.params.time.dt_min, 1e-6);
@@ -343,14 +317,14 @@ TEST(SceneReader, DtBoundsDefaultAroundAGivenDt) {
 }
 
 TEST(SceneReader, DomainTableMeansBounded) {
-  TempDir d;
+  TempDir d("mpdem_scene");
   const Scene s = parse_scene_file(d.write("scene.toml", std::string(kTime) + "[domain]\nmin = [0,0,0]\nmax = [1,1,1]\n"));
   EXPECT_TRUE(s.model.params.domain.bounded);
   EXPECT_EQ(s.model.params.domain.on_exit, ExitPolicy::Stop);
 }
 
 TEST(SceneReader, ExplicitEmpiricalFalseWins) {
-  TempDir d;
+  TempDir d("mpdem_scene");
   const Scene s = parse_scene_file(
       d.write("scene.toml", std::string(kTime) + "[near_field]\na1 = 1.0\nempirical = false\n"));
   EXPECT_FALSE(s.model.params.near_field.empirical);
@@ -450,7 +424,7 @@ TEST(SceneReader, ErrorsNameFileLineKeyAndExpectation) {
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);
-    TempDir d;
+    TempDir d("mpdem_scene");
     d.write("p.csv", "x,y,z,radius\n0,0,0,1\n");
     d.write("w.csv", "x1,y1,z1,x2,y2,z2,x3,y3,z3\n0,0,0,1,0,0,0,1,0\n");
     const fs::path scene = d.write("scene.toml", c.toml);
@@ -464,7 +438,7 @@ TEST(SceneReader, ErrorsNameFileLineKeyAndExpectation) {
 }
 
 TEST(SceneReader, InputErrorCarriesFieldsSeparately) {
-  TempDir d;
+  TempDir d("mpdem_scene");
   const fs::path scene = d.write("scene.toml", "[time]\nduration = 1\ndt = 0\n");
   try {
     parse_scene_file(scene);
@@ -477,13 +451,13 @@ TEST(SceneReader, InputErrorCarriesFieldsSeparately) {
 }
 
 TEST(SceneReader, MissingSceneFile) {
-  TempDir d;
+  TempDir d("mpdem_scene");
   const std::string msg = error_of([&] { parse_scene_file(d.path / "absent.toml"); });
   expect_contains(msg, {"absent.toml", "does not exist"});
 }
 
 TEST(SceneReader, LoadSceneReadsSources) {
-  TempDir d;
+  TempDir d("mpdem_scene");
   d.write("beads.csv", "x,y,z,radius\n0,0,0.1,0.002\n0,0,0.2,0.003\n");
   d.write("more/beads2.csv", "id,x,y,z,radius,material\n7,1,0,0,0.001,glass\n");
   d.write("walls/floor.csv", "x1,y1,z1,x2,y2,z2,x3,y3,z3\n0,0,0,1,0,0,0,1,0\n0,0,0,0,1,0,-1,0,0\n");
@@ -532,7 +506,7 @@ motion = { B = [0, 0, 0.01], w2 = 2.0 }
 }
 
 TEST(SceneReader, StlSourceErrorsNameTheStlFile) {
-  TempDir d;
+  TempDir d("mpdem_scene");
   d.write("chute.stl", "solid x\nendsolid x\n");
   const fs::path scene = d.write("scene.toml", std::string(kTime) + "[[barriers]]\nstl = \"chute.stl\"\nscale = 0.001\n");
   const Scene parsed = parse_scene_file(scene);  // parsing accepts the source...
@@ -543,7 +517,7 @@ TEST(SceneReader, StlSourceErrorsNameTheStlFile) {
 }
 
 TEST(SceneReader, ErrorsInSourcesNameTheCsvFile) {
-  TempDir d;
+  TempDir d("mpdem_scene");
   d.write("beads.csv", "x,y,z,radius\n0,0,0,0.1\n0,0,0,-0.1\n");
   const fs::path scene = d.write("scene.toml", std::string(kTime) + "[[material]]\nname = \"m\"\n[[particles]]\nfile = \"beads.csv\"\n");
   const std::string msg = error_of([&] { load_scene(scene); });

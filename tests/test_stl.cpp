@@ -18,26 +18,16 @@
 #include "io/stl_writer.hpp"
 #include "model/scene.hpp"
 #include "tools/mesh_builder.hpp"
+#include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;
+using mpdem::test::TempDir;
+using mpdem::test::error_of;
+using mpdem::test::expect_contains;
 
 namespace {
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path = fs::temp_directory_path() / ("mpdem_stl_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name, std::ios::binary) << text;
-    return path / name;
-  }
-};
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -89,7 +79,7 @@ endsolid test
 }  // namespace
 
 TEST(Stl, AsciiAndBinaryLoadIdentically) {
-  TempDir dir;
+  TempDir dir("mpdem_stl");
   // Dyadic sizes: every coordinate is exact in float and double, so both files must agree bitwise.
   const auto box = soup(make_box(1.0, 0.5, 0.25, true));
   write_stl(dir.path / "box_a.stl", box, StlFormat::Ascii);
@@ -121,14 +111,14 @@ TEST(Stl, AsciiAndBinaryLoadIdentically) {
 }
 
 TEST(Stl, DegenerateTrianglesDroppedAndCounted) {
-  TempDir dir;
+  TempDir dir("mpdem_stl");
   const StlMesh m = read_stl(dir.write("d.stl", kFacets));
   EXPECT_EQ(m.triangles.size(), 2u);  // upper-case keywords accepted
   EXPECT_EQ(m.degenerate, 1u);        // the collinear (0,0,0), (1,1,0), (2,2,0)
 }
 
 TEST(Stl, MalformedFilesNameFileAndProblem) {
-  TempDir dir;
+  TempDir dir("mpdem_stl");
   // Truncated binary: 10 bytes short of what its header announces.
   write_stl(dir.path / "t.stl", soup(make_box(1, 1, 1, true)), StlFormat::Binary);
   std::string bin = slurp(dir.path / "t.stl");
@@ -170,7 +160,7 @@ TEST(Stl, MalformedFilesNameFileAndProblem) {
 }
 
 TEST(Stl, SceneBarriersWithTransformGroupMaterialMotion) {
-  TempDir dir;
+  TempDir dir("mpdem_stl");
   write_stl(dir.path / "bin.stl", soup(make_box(1.0, 0.5, 0.25, true)), StlFormat::Binary);
   dir.write("deg.stl", kFacets);
   const fs::path scene = dir.write("scene.toml", R"(
@@ -233,7 +223,7 @@ stl = "deg.stl"
 }
 
 TEST(Stl, MeshCommandWritesCsvAndStl) {
-  TempDir dir;
+  TempDir dir("mpdem_stl");
   const auto run = [&](const std::string& args) {
     const std::string cmd = std::string("\"") + MPDEM_BINARY + "\" mesh " + args + " > /dev/null 2>&1";
     const int raw = std::system(cmd.c_str());

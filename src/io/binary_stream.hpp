@@ -24,6 +24,7 @@ class BinaryWriter {
   void vector(const std::vector<T>& v) {
     static_assert(std::is_trivially_copyable_v<T>);
     value<std::uint64_t>(v.size());
+    if (v.empty()) return;  // an empty vector's data() may be null
     const auto* b = reinterpret_cast<const char*>(v.data());
     bytes_.insert(bytes_.end(), b, b + v.size() * sizeof(T));
   }
@@ -51,7 +52,7 @@ class BinaryReader {
     const auto n = value<std::uint64_t>();
     if (n > static_cast<std::uint64_t>(end_ - p_) / sizeof(T)) throw std::runtime_error("truncated or corrupted data");
     std::vector<T> v(n);
-    std::memcpy(v.data(), p_, n * sizeof(T));
+    if (n > 0) std::memcpy(v.data(), p_, n * sizeof(T));  // an empty vector's data() may be null
     p_ += n * sizeof(T);
     return v;
   }

@@ -133,7 +133,9 @@ TEST(Checkpoint, ResumedRunIsBitwiseIdentical) {
     advance(resumed, adaptive, 2000);
     EXPECT_GT(resumed.interactions().stats().rebuilds, rebuilds_at_checkpoint);  // lists were rebuilt after it
     expect_bitwise_equal(full, resumed);
-    if (adaptive) EXPECT_NE(dt_at_checkpoint, full.model().params.time.dt);  // the adaptive step had moved
+    if (adaptive) {
+      EXPECT_NE(dt_at_checkpoint, full.model().params.time.dt);  // the adaptive step had moved
+    }
   }
   fs::remove_all(dir);
 }

@@ -33,8 +33,9 @@ Quat quat_from_rodrigues(const Vec3& alpha);
 // theta: 2 tan(|theta|/2) theta/|theta|. The step increment (138), dt times an angular velocity,
 // is a rotation vector; converting it exactly makes a constant spin exact for any step.
 Vec3 rodrigues_from_rotation_vector(const Vec3& theta);
-// Orientation after the incremental rotation with rotation vector theta (fixed frame), applied
-// to q through its rescaled Rodrigues form and renormalised:                          (139)
+// Orientation after the incremental rotation with rotation vector theta (fixed frame), composed
+// after q and renormalised (139); equal to composing the quaternion of the increment's rescaled
+// Rodrigues vector, computed directly from theta's angle and axis.
 Quat rotate_by_increment(const Quat& q, const Vec3& theta);
 
 Mat3 mat_multiply(const Mat3& a, const Mat3& b);

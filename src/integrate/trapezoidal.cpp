@@ -94,8 +94,7 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
         wp_[i] = p.w[i];
         alphap_[i] = alpha_[i];
         p.w[i] = w;
-        alpha_[i] = alpha;
-        p.q[i] = rotate_by_increment(q0_[i], alpha);
+        alpha_[i] = alpha;  // q follows once, after convergence: no force law reads it
       }
       const double h1 = predictor ? h0_[i] : p.heat[i] / (p.mass[i] * p.heat_capacity[i]);
       const double T = thermal ? T0_[i] + dt * ((1.0 - phi) * h0_[i] + phi * h1) : T0_[i];
@@ -185,6 +184,11 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
       restore_start(p);
       return rep;
     }
+  }
+  // Orientation of the accepted end state (accept_midpoint has set it for a two-cycle).
+  if (rotation && !rep.two_cycle) {
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+    for (std::size_t i = 0; i < n; ++i) p.q[i] = rotate_by_increment(q0_[i], alpha_[i]);
   }
   req.commit = true;
   req.iteration = 0;

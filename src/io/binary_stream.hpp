@@ -17,21 +17,24 @@ class BinaryWriter {
   template <class T>
   void value(const T& v) {
     static_assert(std::is_trivially_copyable_v<T>);
-    const auto* b = reinterpret_cast<const char*>(&v);
-    bytes_.insert(bytes_.end(), b, b + sizeof(T));
+    append(&v, sizeof(T));
   }
   template <class T>
   void vector(const std::vector<T>& v) {
     static_assert(std::is_trivially_copyable_v<T>);
     value<std::uint64_t>(v.size());
     if (v.empty()) return;  // an empty vector's data() may be null
-    const auto* b = reinterpret_cast<const char*>(v.data());
-    bytes_.insert(bytes_.end(), b, b + v.size() * sizeof(T));
+    append(v.data(), v.size() * sizeof(T));
   }
   void string(const std::string& s) { vector(std::vector<char>(s.begin(), s.end())); }
   const std::vector<char>& bytes() const { return bytes_; }
 
  private:
+  void append(const void* data, std::size_t n) {
+    const std::size_t at = bytes_.size();
+    bytes_.resize(at + n);
+    std::memcpy(bytes_.data() + at, data, n);
+  }
   std::vector<char> bytes_;
 };
 

@@ -51,14 +51,26 @@ class BarrierContacts {
     Vec3 point;                 // m, contact point
     double overlap = 0.0;       // m
   };
+  struct FirstSlot {            // the first iteration's stick/slip decision of one contact
+    std::int32_t element = -1;
+    bool slipped = false;
+  };
   void resize(std::size_t n);
+  void recount();  // used_ from committed_ after restore/permute/compact
 
   ContactModel law_;
   BarrierTopology topo_;
   std::vector<Slot> committed_;    // [N * kSlots]
   std::vector<Slot> tentative_;    // [N * kSlots]
-  std::vector<Slot> first_;        // [N * kSlots] tentative slots of the step's first iteration
+  std::vector<FirstSlot> first_;   // [N * kSlots] contacts of the step's first iteration
   std::vector<Load> loads_;        // [N * kSlots]
+  // Filled slots per particle (slots are packed from 0; the rest are empty), so particles away
+  // from the walls cost neither clearing nor reading 8 slots per evaluation.
+  std::vector<std::uint8_t> committed_used_;   // [N] of committed_
+  std::vector<std::uint8_t> tentative_used_;   // [N] of tentative_ (may overestimate)
+  std::vector<std::uint8_t> first_used_;       // [N] of first_
+  std::vector<std::uint8_t> load_used_;        // [N] of loads_ (the last evaluation)
+  bool counts_valid_ = false;                  // false after restore/permute/compact
   std::uint64_t overflows_ = 0;
 };
 

@@ -69,12 +69,18 @@ class ParticleContacts {
   std::vector<Vec3> wr0_;           // rad/s, relative rotation at the step start (rolling law)
   std::vector<Vec3> spring_tent_;   // m, tentative spring of the current evaluation
   std::vector<Vec3> vt_tent_;       // m/s, tangential velocity of the current evaluation
+  std::vector<Vec3> wr_tent_;       // rad/s, relative rotation of a commit evaluation
   std::vector<Vec3> force_;         // N, force on the first member (the second gets -force)
   std::vector<Vec3> torque_first_;  // N m
   std::vector<Vec3> torque_second_; // N m
   std::vector<double> overlap_;      // m, overlap of touching slots
   std::vector<std::uint8_t> touching_;
   std::vector<std::uint8_t> slipped_;   // stick (0) / slip (1) decided by the first iteration
+  // Per particle [N], refreshed every evaluation (particles may be reordered in between):
+  std::vector<double> compliance_;        // 1/Pa, (1 - nu^2)/E
+  std::vector<double> shear_compliance_;  // 1/Pa, (2 - nu)/G
+  std::vector<double> inv_radius_;        // 1/m
+  std::vector<double> inv_mass_;          // 1/kg
 };
 
 }  // namespace mpdem

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "tools/generator.hpp"
+#include "model/particle_defaults.hpp"
 
 namespace mpdem {
 
@@ -18,13 +19,7 @@ void add_generated_particles(const GenerateSpec& spec, const Model& model, int d
     out.add(next_id++, mat, p.radius, m.density, p.x, p.v);
     const std::size_t i = out.size() - 1;
     out.w[i] = Vec3{};
-    out.young[i] = m.young;
-    out.poisson[i] = m.poisson;
-    out.charge[i] = m.charge;
-    out.heat_capacity[i] = m.heat_capacity;
-    out.conductivity[i] = m.conductivity;
-    out.emissivity[i] = m.emissivity;
-    out.T[i] = m.temperature;
+    take_material_properties(out, i, m);
     out.force[i] = Vec3{};
     out.torque[i] = Vec3{};
     out.heat[i] = 0.0;

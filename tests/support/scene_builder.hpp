@@ -1,6 +1,7 @@
 #pragma once
 // Builds scenes in code for tests: parameters with test-friendly defaults, one material, and
 // particles added one by one.
+#include "model/particle_defaults.hpp"
 #include "model/scene.hpp"
 
 namespace mpdem::test {
@@ -25,13 +26,7 @@ inline std::size_t add_particle(Scene& s, std::int64_t id, double radius, const 
   p.add(id, 0, radius, m.density, x, v);
   const std::size_t i = p.size() - 1;
   p.w[i] = w;
-  p.young[i] = m.young;
-  p.poisson[i] = m.poisson;
-  p.charge[i] = m.charge;
-  p.heat_capacity[i] = m.heat_capacity;
-  p.conductivity[i] = m.conductivity;
-  p.emissivity[i] = m.emissivity;
-  p.T[i] = m.temperature;
+  take_material_properties(p, i, m);
   return i;
 }
 

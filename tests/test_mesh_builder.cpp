@@ -6,7 +6,14 @@
 #include <map>
 #include <vector>
 
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "io/barrier_csv.hpp"
+#include "io/input_error.hpp"
 #include "tools/mesh_builder.hpp"
+#include "tools/mesh_output.hpp"
 
 using namespace mpdem;
 
@@ -239,4 +246,26 @@ TEST(MeshBuilder, TransformAndFlip) {
   EXPECT_NEAR(q.z, 1.0, 1e-15);
   m.flip();
   EXPECT_NEAR(signed_volume(m), 8 * 0.4 * 0.3 * 0.2, 1e-14);  // now outward
+}
+
+// Two generated meshes in one scene: --first-id keeps their triangle ids apart.
+TEST(MeshBuilder, FirstIdLetsMeshesShareAScene) {
+  const auto dir = std::filesystem::temp_directory_path() / ("mpdem_mesh_ids_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const TriangleMesh floor = make_rectangle(0.1, 0.1, 2, 2);
+  write_mesh_csv(dir / "floor.csv", floor, "floor");
+  write_mesh_csv(dir / "lid.csv", floor, "lid", static_cast<std::int64_t>(floor.size()));
+  mpdem::Model model;
+  model.materials.push_back(mpdem::Material{});
+  mpdem::Barriers b;
+  mpdem::BarrierSource src;
+  mpdem::read_barrier_csv(dir / "floor.csv", src, model, b);
+  EXPECT_NO_THROW(mpdem::read_barrier_csv(dir / "lid.csv", src, model, b));
+  ASSERT_EQ(b.size(), 2 * floor.size());
+  for (std::size_t e = 0; e < b.size(); ++e) EXPECT_EQ(b.id[e], static_cast<std::int64_t>(e));
+  // Without the offset the second file's ids clash and the reader says so.
+  mpdem::Barriers c;
+  mpdem::read_barrier_csv(dir / "floor.csv", src, model, c);
+  EXPECT_THROW(mpdem::read_barrier_csv(dir / "floor.csv", src, model, c), mpdem::InputError);
+  std::filesystem::remove_all(dir);
 }

@@ -19,6 +19,7 @@ struct MeshArgs {
   std::filesystem::path output;
   std::string format;                         // csv, stl, stl-ascii ("" = by extension)
   std::string group;
+  std::int64_t first_id = 0;  // id of the first triangle (CSV)
   bool flip = false;
   std::vector<double> rotate_deg{0, 0, 0}, translate{0, 0, 0};
   // shape parameters (m, deg)
@@ -53,7 +54,7 @@ int write(const MeshArgs& a, const std::string& shape, const std::function<Trian
   if (a.flip) m.flip();
   transform_mesh(m, 1.0, {a.rotate_deg[0], a.rotate_deg[1], a.rotate_deg[2]},
                  {a.translate[0], a.translate[1], a.translate[2]});
-  write_mesh(a.output, m, format, a.group);
+  write_mesh(a.output, m, format, a.group, a.first_id);
   fmt::print("{}: {} triangles, area {:.6g} m^2 -> {}\n", shape, m.size(), total_area(m), a.output.string());
   return 0;
 }
@@ -65,6 +66,7 @@ CLI::App* shape(CLI::App& mesh, const std::string& name, const std::string& help
   c->add_option("-o,--output", a->output, "file to write (.csv barrier CSV, .stl STL)")->required();
   c->add_option("--format", a->format, "csv, stl (binary) or stl-ascii (default: from the extension)");
   c->add_option("--group", a->group, "group column of the CSV / solid name of the STL");
+  c->add_option("--first-id", a->first_id, "id of the first triangle in a CSV (default 0), to combine meshes in one scene");
   c->add_flag("--flip", a->flip, "reverse all normals");
   c->add_option("--rotate-deg", a->rotate_deg, "rotation about x, then y, then z (deg)")->expected(3);
   c->add_option("--translate", a->translate, "translation after the rotation (m)")->expected(3);

@@ -6,14 +6,11 @@
 #include <map>
 #include <vector>
 
-#include <unistd.h>
-
-#include <filesystem>
-
 #include "io/barrier_csv.hpp"
 #include "io/input_error.hpp"
 #include "tools/mesh_builder.hpp"
 #include "tools/mesh_output.hpp"
+#include "support/temp_dir.hpp"
 
 using namespace mpdem;
 
@@ -250,8 +247,8 @@ TEST(MeshBuilder, TransformAndFlip) {
 
 // Two generated meshes in one scene: --first-id keeps their triangle ids apart.
 TEST(MeshBuilder, FirstIdLetsMeshesShareAScene) {
-  const auto dir = std::filesystem::temp_directory_path() / ("mpdem_mesh_ids_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const mpdem::test::TempDir tmp("mpdem_mesh");
+  const auto& dir = tmp.path;
   const TriangleMesh floor = make_rectangle(0.1, 0.1, 2, 2);
   write_mesh_csv(dir / "floor.csv", floor, "floor");
   write_mesh_csv(dir / "lid.csv", floor, "lid", static_cast<std::int64_t>(floor.size()));
@@ -267,5 +264,4 @@ TEST(MeshBuilder, FirstIdLetsMeshesShareAScene) {
   mpdem::Barriers c;
   mpdem::read_barrier_csv(dir / "floor.csv", src, model, c);
   EXPECT_THROW(mpdem::read_barrier_csv(dir / "floor.csv", src, model, c), mpdem::InputError);
-  std::filesystem::remove_all(dir);
 }

@@ -241,13 +241,8 @@ struct Snapshot {
   std::size_t contacts_pp = 0, contacts_pb = 0;
 };
 
-Snapshot run_dense(double skin, Integrator integ, int steps, int nx, int ny, int nz, unsigned seed) {
-  const double r0 = 1e-3, dt = 4e-6;
-  Scene s = dense_scene(nx, ny, nz, r0, 0.05, 2.12 * r0, 0.15, seed, dt);
-  s.model.params.time.integrator = integ;
-  s.model.params.neighbor.skin = skin;
-  Simulation sim(s, RunOptions{{}, false, false});
-  for (int k = 0; k < steps; ++k) sim.advance(dt);
+// States by id plus the counters, at the end of a run.
+Snapshot snapshot_of(Simulation& sim) {
   Snapshot out;
   const Particles& p = sim.particles();
   for (std::size_t i = 0; i < p.size(); ++i) out.xvw[p.id[i]] = {p.x[i], p.v[i], p.w[i]};
@@ -255,6 +250,16 @@ Snapshot run_dense(double skin, Integrator integ, int steps, int nx, int ny, int
   out.contacts_pp = sim.interactions().stats().contacts_pp;
   out.contacts_pb = sim.interactions().stats().contacts_pb;
   return out;
+}
+
+Snapshot run_dense(double skin, Integrator integ, int steps, int nx, int ny, int nz, unsigned seed) {
+  const double r0 = 1e-3, dt = 4e-6;
+  Scene s = dense_scene(nx, ny, nz, r0, 0.05, 2.12 * r0, 0.15, seed, dt);
+  s.model.params.time.integrator = integ;
+  s.model.params.neighbor.skin = skin;
+  Simulation sim(s, RunOptions{{}, false, false});
+  for (int k = 0; k < steps; ++k) sim.advance(dt);
+  return snapshot_of(sim);
 }
 
 // max over particles |a - b| / max over particles |a|, per field.
@@ -423,13 +428,7 @@ Snapshot run_threads(int threads, Integrator integ, int steps) {
   s.model.params.time.phi = 0.5;
   Simulation sim(s, RunOptions{{}, false, false});
   for (int k = 0; k < steps; ++k) sim.advance(dt);
-  Snapshot out;
-  const Particles& p = sim.particles();
-  for (std::size_t i = 0; i < p.size(); ++i) out.xvw[p.id[i]] = {p.x[i], p.v[i], p.w[i]};
-  out.rebuilds = sim.interactions().stats().rebuilds;
-  out.contacts_pp = sim.interactions().stats().contacts_pp;
-  out.contacts_pb = sim.interactions().stats().contacts_pb;
-  return out;
+  return snapshot_of(sim);
 }
 
 void expect_bitwise_equal(const Snapshot& a, const Snapshot& b) {

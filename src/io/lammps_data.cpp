@@ -57,17 +57,24 @@ LammpsData read_lammps_data(const std::filesystem::path& file) {
   std::size_t lineno = 0;
   std::getline(in, line);  // first line: title, always skipped
   ++lineno;
+  // Next non-blank line of the current block into t; false at the end of the file or at a
+  // section keyword line (a line not starting with a number), whose keyword goes to `section`.
+  std::string section;
+  std::vector<std::string_view> t;
+  auto next_row = [&] {
+    while (std::getline(in, line)) {
+      ++lineno;
+      t = tokens(line);
+      if (t.empty()) continue;
+      if (is_number(t[0])) return true;
+      section = std::string(t[0]);
+      return false;
+    }
+    return false;
+  };
 
   // Header: counts and bounds until the first section keyword.
-  std::string section;
-  while (std::getline(in, line)) {
-    ++lineno;
-    const auto t = tokens(line);
-    if (t.empty()) continue;
-    if (!is_number(t[0])) {
-      section = std::string(t[0]);
-      break;
-    }
+  while (next_row()) {
     if (t.size() == 2 && t[1] == "atoms") {
       if (!parse_int(t[0], declared_atoms)) throw InputError(name, lineno, "atoms", "expected a count of atoms");
       have_atoms_count = true;
@@ -95,14 +102,7 @@ LammpsData read_lammps_data(const std::filesystem::path& file) {
     const bool atoms = section == "Atoms";
     if (atoms) seen_atoms = true;
     section.clear();
-    while (std::getline(in, line)) {
-      ++lineno;
-      const auto t = tokens(line);
-      if (t.empty()) continue;
-      if (!is_number(t[0])) {
-        section = std::string(t[0]);
-        break;
-      }
+    while (next_row()) {
       if (!atoms) continue;
       if (t.size() != 7 && t.size() != 10)
         throw InputError(name, lineno, "Atoms", "expected 'id type diameter density x y z' (7 columns, or 10 with image flags)");

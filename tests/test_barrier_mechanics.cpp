@@ -5,16 +5,23 @@
 //   - rolling down an incline at 5/7 g sin(a);
 //   - seams: weight over a 6-triangle vertex, rolling over many seams without speed jumps;
 //   - a square hole: a small sphere falls through untouched, a large one rests on the rim;
-//   - a settled bed of 2000 spheres in an open box: floor force = weight, energy bookkeeping.
+//   - a settled bed of 2000 spheres in an open box: floor force = weight, energy bookkeeping;
+//   - bitwise identical loads for 1 and 2 threads; history kept through a reordering rebuild.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <map>
 #include <random>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "sim/energy.hpp"
+#include "sim/interactions.hpp"
 #include "sim/simulation.hpp"
 #include "support/contact_scenes.hpp"
 #include "support/scene_builder.hpp"
@@ -433,4 +440,135 @@ TEST(SettledBed, FloorCarriesWeightAndEnergyIsBookkept) {
   EXPECT_NEAR(-(Fb.z + Fw.z) / weight, 1.0, 2e-3);  // floor + wall friction carry it all
   EXPECT_LT(worst_drift, 0.15 * dissipated);
   EXPECT_GT(dissipated, 0.0);
+}
+
+namespace {
+
+// A layer of nx x nx spheres on the floor of an open box (4 x 4-cell floor: seams), sliding
+// and spinning with random velocities; `gap` x R between neighbours' surfaces.
+Scene sliding_layer(Integrator integ, int nx, double gap, double dt) {
+  const double R = 0.002, spacing = (2.0 + gap) * R, W = nx * spacing;
+  Scene s = base_scene(integ, dt, {0.0, 0.0, -kG});
+  test::add_open_box(s.barriers, W, 4.0 * R, 4, kE, kNu);
+  ContactLawParams& c = s.model.params.contact.particle_barrier;
+  c.restitution = 0.3;
+  c.mu_static = 0.5;
+  c.mu_dynamic = 0.3;
+  c.mu_rolling = 0.02;
+  c.tangential_damping = 0.3;
+  s.model.params.contact.particle_particle = c;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  std::int64_t id = 0;
+  for (int j = 0; j < nx; ++j)
+    for (int i = 0; i < nx; ++i) {
+      // Outer rows pressed slightly into the walls, so wall elements carry loads too.
+      const double x = i == 0 ? 0.999 * R : (i == nx - 1 ? W - 0.999 * R : (i + 0.5) * spacing);
+      const double y = j == 0 ? 0.999 * R : (j == nx - 1 ? W - 0.999 * R : (j + 0.5) * spacing);
+      test::add_particle(s, ++id, R, {x, y, 0.998 * R}, 0.2 * Vec3{U(rng), U(rng), 0.0},
+                         (0.2 / R) * Vec3{U(rng), U(rng), U(rng)});
+    }
+  return s;
+}
+
+struct Loads {
+  std::vector<Vec3> bf, bm, pf, pt;  // barrier force N, moment N m; particle force N, torque N m (by index)
+  std::size_t contacts_pb = 0;
+};
+
+Loads run_layer(int threads, Integrator integ) {
+  omp_set_num_threads(threads);
+  const double dt = 2e-5;
+  Scene s = sliding_layer(integ, 50, 0.1, dt);
+  Simulation sim(s, RunOptions{{}, false, false});
+  for (int k = 0; k < 40; ++k) sim.advance(dt);
+  Loads l{sim.barriers().force, sim.barriers().moment, sim.particles().force, sim.particles().torque,
+          sim.interactions().stats().contacts_pb};
+  return l;
+}
+
+std::size_t bitwise_differences(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  if (a.size() != b.size()) return std::max(a.size(), b.size());
+  std::size_t d = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) d += std::memcmp(&a[i], &b[i], sizeof(Vec3)) != 0;
+  return d;
+}
+
+}  // namespace
+
+// 2500 spheres against 64 triangles (floor and walls), more than kParallelThreshold of them near
+// a barrier: the element loads (force, moment) and the particle forces and torques are bitwise
+// identical for 1 and 2 OpenMP threads.
+TEST(BarrierContactsParallel, BitwiseIdenticalForOneAndTwoThreads) {
+  static_assert(50 * 50 > kParallelThreshold, "the barrier contacts must take the parallel paths");
+  for (Integrator integ : {Integrator::Verlet, Integrator::Trapezoidal}) {
+    const Loads one = run_layer(1, integ);
+    const Loads two = run_layer(2, integ);
+    EXPECT_GT(one.contacts_pb, kParallelThreshold);
+    std::size_t loaded = 0;
+    for (const Vec3& f : one.bf) loaded += norm2(f) > 0.0;
+    EXPECT_GT(loaded, 32u);  // the 32 floor elements and wall elements
+    EXPECT_EQ(one.contacts_pb, two.contacts_pb);
+    EXPECT_EQ(bitwise_differences(one.bf, two.bf), 0u) << name(integ);
+    EXPECT_EQ(bitwise_differences(one.bm, two.bm), 0u) << name(integ);
+    EXPECT_EQ(bitwise_differences(one.pf, two.pf), 0u) << name(integ);
+    EXPECT_EQ(bitwise_differences(one.pt, two.pt), 0u) << name(integ);
+  }
+  omp_set_num_threads(omp_get_num_procs());
+}
+
+// Spheres sliding and rolling on a seamed floor and against walls, apart from each other (each
+// particle's forces then come from its barrier contacts alone). After the springs have built up,
+// a forced rebuild that reorders the particles, and the removal of some particles, leave the
+// forces and torques of an evaluation (which uses the springs, the start-of-step tangential
+// velocities and rotations) bitwise unchanged for every remaining particle; without the history
+// they would differ.
+TEST(BarrierContactHistory, SurvivesReorderingRebuildAndRemoval) {
+  const double dt = 2e-5;
+  Scene s = sliding_layer(Integrator::Trapezoidal, 12, 4.0, dt);
+  const Scene fresh_scene = s;
+  Simulation sim(s, RunOptions{{}, false, false});
+  for (int k = 0; k < 150; ++k) sim.advance(dt);
+  Particles& p = sim.particles();
+  Barriers& b = sim.barriers();
+  Interactions& in = sim.interactions();
+  const EvalRequest req{sim.time() + dt, dt, 0.5, false, 1};  // an iteration: uses every history field
+  const auto by_id = [&p] {
+    std::map<std::int64_t, std::array<Vec3, 2>> m;
+    for (std::size_t i = 0; i < p.size(); ++i) m[p.id[i]] = {p.force[i], p.torque[i]};
+    return m;
+  };
+  const auto equal = [](const std::map<std::int64_t, std::array<Vec3, 2>>& a,
+                        const std::map<std::int64_t, std::array<Vec3, 2>>& c) {
+    std::size_t d = 0;
+    for (const auto& [id, ft] : c) d += std::memcmp(&a.at(id), &ft, sizeof ft) != 0;
+    return d;
+  };
+  in.evaluate(p, b, req);
+  const auto before = by_id();
+  EXPECT_GT(in.stats().contacts_pb, p.size() / 2);  // on the floor, some also on walls
+  EXPECT_EQ(in.stats().contacts_pp, 0u);
+
+  std::vector<std::int64_t> ids_before(p.id.begin(), p.id.end());
+  in.force_rebuild(p, b, true);
+  EXPECT_NE(ids_before, p.id);  // the rebuild did reorder
+  in.evaluate(p, b, req);
+  EXPECT_EQ(equal(before, by_id()), 0u);
+
+  std::vector<char> keep(p.size(), 1);
+  for (std::size_t i = 0; i < p.size(); ++i) keep[i] = p.id[i] % 5 != 2;
+  in.remove_particles(p, b, keep);
+  in.evaluate(p, b, req);
+  EXPECT_LT(p.size(), ids_before.size());
+  EXPECT_EQ(equal(before, by_id()), 0u);
+
+  // The same state without any history gives other forces: the test sees the history.
+  Scene bare = fresh_scene;
+  bare.particles = p;
+  Interactions fresh(bare.model, bare.particles, bare.barriers);
+  fresh.evaluate(bare.particles, bare.barriers, req);
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    differ += std::memcmp(&bare.particles.force[i], &p.force[i], sizeof(Vec3)) != 0;
+  EXPECT_GT(differ, p.size() / 2);
 }

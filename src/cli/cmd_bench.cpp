@@ -12,6 +12,7 @@
 #include "cli/bench_command.hpp"
 #include "io/input_error.hpp"
 #include "io/lammps_data.hpp"
+#include "sim/neighbor_search.hpp"
 #include "sim/simulation.hpp"
 
 namespace mpdem::cli {
@@ -153,6 +154,8 @@ int bench_command(const BenchArgs& args) {
   fmt::print("  cost                       {:.1f} ns/particle-step\n", psteps > 0 ? 1e9 * seconds / psteps : 0.0);
   fmt::print("  force evaluations / step   {:.2f}\n", evals_per_step);
   fmt::print("  neighbour rebuilds (timed) {}\n", rebuilds);
+  fmt::print("  listed pairs per particle  {:.3f}\n",
+             n ? static_cast<double>(sim.interactions().search().pairs().num_pairs()) / static_cast<double>(n) : 0.0);
   fmt::print("  contacts per particle      {:.3f} (coordination 2 pp/N; pp/N = {:.3f}, walls/N = {:.3f})\n",
              coordination, pp_per_particle, pb_per_particle);
   fmt::print("  final kinetic energy       {:.4g} J, top of bed z = {:.6g} m\n", ke, zmax);

@@ -114,9 +114,14 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
     const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
     const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
 #pragma omp single
-    if (thread_buf_.size() < nt) thread_buf_.resize(nt);
+    {
+      if (thread_buf_.size() < nt) thread_buf_.resize(nt);
+      if (thread_active_.size() < nt) thread_active_.resize(nt);
+    }
     std::vector<std::uint32_t>& buf = thread_buf_[t];
+    std::vector<std::uint32_t>& act = thread_active_[t];
     buf.clear();
+    act.clear();
     const std::size_t lo = n * t / nt, hi = n * (t + 1) / nt;
     std::uint32_t stack[128];  // depth of a median-split tree is ~log2(M) < 33
     for (std::size_t i = lo; i < hi && !nodes_.empty(); ++i) {
@@ -140,16 +145,22 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
       }
       std::sort(buf.begin() + static_cast<std::ptrdiff_t>(first), buf.end());
       offset_[i + 1] = buf.size() - first;
+      if (buf.size() > first) act.push_back(static_cast<std::uint32_t>(i));
     }
 #pragma omp barrier
 #pragma omp single
     {
       for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
       index_.resize(offset_[n]);
+      active_start_.assign(nt + 1, 0);
+      for (std::size_t k = 0; k < nt; ++k) active_start_[k + 1] = active_start_[k] + thread_active_[k].size();
+      active_.resize(active_start_[nt]);
     }
     std::copy(buf.begin(), buf.end(), index_.begin() + static_cast<std::ptrdiff_t>(offset_[lo]));
+    std::copy(act.begin(), act.end(), active_.begin() + static_cast<std::ptrdiff_t>(active_start_[t]));
   }
   built_ = true;
+  ++generation_;
 }
 
 double BarrierBroadphase::max_barrier_displacement(const Barriers& barriers) const {

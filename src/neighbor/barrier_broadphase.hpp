@@ -44,6 +44,8 @@ class BarrierBroadphase {
   }
   const std::vector<std::size_t>& offsets() const { return offset_; }   // [N+1]
   const std::vector<std::uint32_t>& indices() const { return index_; }  // [num_candidates]
+  // Particles with at least one candidate, ascending (so per-contact work can skip the rest).
+  const std::vector<std::uint32_t>& active() const { return active_; }
 
   // Largest |u_e - u_e(build)| over elements (m); +infinity if the element count changed.
   double max_barrier_displacement(const Barriers& barriers) const;
@@ -52,6 +54,8 @@ class BarrierBroadphase {
   bool needs_rebuild(const Barriers& barriers, double max_particle_displacement) const;
 
   double skin() const { return skin_; }  // m
+  // Incremented by every build(), so users of the lists can tell that they changed.
+  std::uint64_t generation() const { return generation_; }
 
  private:
   struct Node {
@@ -63,6 +67,7 @@ class BarrierBroadphase {
 
   double skin_ = 0.0;                      // m
   bool built_ = false;
+  std::uint64_t generation_ = 0;
   std::vector<Vec3> lo_, hi_;              // [M] m, vertex box of each element (unexpanded)
   std::vector<double> grow_;               // [M] m, t_b/2 + skin of each element
   std::vector<Vec3> centroid_;             // [M] m, box centres, for splitting
@@ -71,7 +76,10 @@ class BarrierBroadphase {
   std::vector<Vec3> offset_build_;         // [M] m, barrier offsets u(t) at build
   std::vector<std::size_t> offset_{0};     // [N+1] CSR offsets
   std::vector<std::uint32_t> index_;       // [candidates] element indices
+  std::vector<std::uint32_t> active_;      // [particles with candidates] indices, ascending
   std::vector<std::vector<std::uint32_t>> thread_buf_;
+  std::vector<std::vector<std::uint32_t>> thread_active_;
+  std::vector<std::size_t> active_start_;  // [threads + 1] where each thread's active particles go
 };
 
 }  // namespace mpdem

@@ -71,17 +71,22 @@ struct NormalForce {
 // -F_el * normal_rate (elastic, since d|delta|/dt = -normal_rate), so the power removed is
 // (F_el - f_n) * normal_rate: = d* rate^2 unclamped, = F_el * rate when clamped (the elastic
 // energy left at separation is released without doing work).
-inline NormalForce normal_contact_force(double E_star, double r_star, double m_star, double xi_n,
-                                        double overlap, double normal_rate) {
+// The same from the elastic force f_el (N) and damping coefficient d* (N s/m) of the overlap.
+inline NormalForce damped_normal_force(double f_el, double d_star, double normal_rate) {
   NormalForce out;
-  if (overlap <= 0.0) return out;
-  out.elastic = hertz_elastic_force(E_star, r_star, overlap);
-  const double d = normal_damping_coefficient(xi_n, m_star, E_star, r_star, overlap);
-  const double f = out.elastic - d * normal_rate;
+  out.elastic = f_el;
+  const double f = f_el - d_star * normal_rate;
   out.clamped = f < 0.0;
   out.magnitude = out.clamped ? 0.0 : f;
   out.dissipated_power = (out.elastic - out.magnitude) * normal_rate;
   return out;
+}
+
+inline NormalForce normal_contact_force(double E_star, double r_star, double m_star, double xi_n,
+                                        double overlap, double normal_rate) {
+  if (overlap <= 0.0) return NormalForce{};
+  return damped_normal_force(hertz_elastic_force(E_star, r_star, overlap),
+                             normal_damping_coefficient(xi_n, m_star, E_star, r_star, overlap), normal_rate);
 }
 
 }  // namespace mpdem

@@ -6,13 +6,17 @@
 // History: each particle keeps up to kSlots contacts (element, spring, start-of-step tangential
 // velocity, normal). A contact that moves onto a neighbouring element of the same surface (a
 // sphere rolling across a seam) inherits the spring of the contact that just ended there, so
-// tangential forces do not jump at seams. Loads on the elements (force, moment about the centre,
-// pressure) are accumulated in particle order, independent of the thread count.
+// tangential forces do not jump at seams. The records live in a BarrierContactStore, only for
+// the particles near a barrier; an evaluation visits only those, in parallel. Loads on the
+// elements (force, moment about the centre, pressure) are summed per element in particle order,
+// independent of the thread count.
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "physics/barrier_contact_detect.hpp"
 #include "physics/contact_model.hpp"
+#include "sim/barrier_contact_store.hpp"
 #include "sim/interactions.hpp"
 #include "sim/neighbor_search.hpp"
 #include "sim/particle_contacts.hpp"
@@ -22,55 +26,32 @@ namespace mpdem {
 
 class BarrierContacts {
  public:
-  static constexpr int kSlots = 8;  // simultaneous barrier contacts per particle
+  static constexpr int kSlots = BarrierContactStore::kSlots;  // simultaneous barrier contacts per particle
 
   BarrierContacts(const ContactModel& law, const Barriers& b);
 
   // Adds contact forces/torques to the particles and loads to the barriers.
   PairStats evaluate(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req);
-  // Keeps the per-particle history aligned when particles are reordered or removed.
-  void permute(const std::vector<std::uint32_t>& order);
-  void compact(const std::vector<char>& keep);
+  // Keeps the history with its particles when they are reordered or removed.
+  void permute(const std::vector<std::uint32_t>& order) { store_.permute(order); }
+  void compact(const std::vector<char>& keep) { store_.compact(keep); }
   std::uint64_t overflows() const { return overflows_; }  // contacts dropped beyond kSlots
   OverlapReport max_overlap(const Particles& p, const Barriers& b) const;
   void save(BinaryWriter& w) const;  // checkpoints: the committed history
   void restore(BinaryReader& r, std::size_t particles);
+  std::size_t memory_bytes() const { return store_.bytes(); }  // B, held by the contact records
 
  private:
-  struct Slot {
-    std::int32_t element = -1;  // -1 = empty
-    Vec3 spring;                // m
-    Vec3 vt0;                   // m/s
-    Vec3 normal;                // -, contact normal (towards the particle)
-    bool slipped = false;       // the Coulomb limit was hit
-    Vec3 wr0;                   // rad/s, the particle's rotation at the step start (rolling law)
-  };
-  struct Load {                 // one contact's action on its element
-    std::int32_t element = -1;
-    Vec3 force;                 // N, on the element
-    Vec3 point;                 // m, contact point
-    double overlap = 0.0;       // m
-  };
-  struct FirstSlot {            // the first iteration's stick/slip decision of one contact
-    std::int32_t element = -1;
-    bool slipped = false;
-  };
-  void resize(std::size_t n);
-  void recount();  // used_ from committed_ after restore/permute/compact
+  // Contacts of active particle k: fills its tentative history and loads, adds to its force and
+  // torque, and to acc = {contacts, elastic energy J, damping power W, friction power W, dropped}.
+  void particle_contacts(std::size_t k, Particles& p, const Barriers& b, const BarrierBroadphase& broad,
+                         const EvalRequest& req, std::array<double, 5>& acc);
+  void element_loads(Barriers& b);  // sums the loads of the last evaluation onto the elements
 
   ContactModel law_;
   BarrierTopology topo_;
-  std::vector<Slot> committed_;    // [N * kSlots]
-  std::vector<Slot> tentative_;    // [N * kSlots]
-  std::vector<FirstSlot> first_;   // [N * kSlots] contacts of the step's first iteration
-  std::vector<Load> loads_;        // [N * kSlots]
-  // Filled slots per particle (slots are packed from 0; the rest are empty), so particles away
-  // from the walls cost neither clearing nor reading 8 slots per evaluation.
-  std::vector<std::uint8_t> committed_used_;   // [N] of committed_
-  std::vector<std::uint8_t> tentative_used_;   // [N] of tentative_ (may overestimate)
-  std::vector<std::uint8_t> first_used_;       // [N] of first_
-  std::vector<std::uint8_t> load_used_;        // [N] of loads_ (the last evaluation)
-  bool counts_valid_ = false;                  // false after restore/permute/compact
+  BarrierContactStore store_;
+  std::vector<std::array<double, 5>> partial_;  // [groups] sums of one evaluation, per group
   std::uint64_t overflows_ = 0;
 };
 

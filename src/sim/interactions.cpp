@@ -24,10 +24,12 @@ Interactions::Interactions(const Model& model, const Particles& p, const Barrier
       // The list reaches beyond contact by the near-field cutoff (0 when the near field is off).
       search_(std::make_unique<NeighborSearch>(default_skin(model, p),
                                                near_field_extra_range(model.params.near_field, p))),
-      pp_(std::make_unique<ParticleContacts>(ContactModel::from(model.params.contact.particle_particle))),
+      pp_(std::make_unique<ParticleContacts>(ContactModel::from(model.params.contact.particle_particle),
+                                             model.params.time.integrator != Integrator::Verlet)),
       pb_(std::make_unique<BarrierContacts>(ContactModel::from(model.params.contact.particle_barrier), b)) {
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
   if (model.params.analysis.thermal) heat_ = std::make_unique<HeatTransfer>(model, b);
+  search_->set_incoming_index(near_ || heat_);
 }
 
 Interactions::~Interactions() = default;
@@ -62,21 +64,16 @@ void Interactions::remove_particles(Particles& p, const Barriers& b, const std::
 }
 
 void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
-  const std::size_t n = p.size();
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-  for (std::size_t i = 0; i < n; ++i) {
-    p.force[i] = Vec3{};
-    p.torque[i] = Vec3{};
-    p.heat[i] = 0.0;
-  }
   b.move_to(req.time);
   std::fill(b.force.begin(), b.force.end(), Vec3{});
   std::fill(b.moment.begin(), b.moment.end(), Vec3{});
   std::fill(b.pressure.begin(), b.pressure.end(), 0.0);
-  // Within a step the particles cannot be reordered (the integrator holds their start state).
-  if (search_->needs_rebuild(p, b)) rebuild(p, b, false);
+  // Reordering is safe only at a commit evaluation outside the fixed-point iteration: it is the
+  // last thing an integrator does with the state of a step (the trapezoidal rule holds its start
+  // state by index during the iteration). Velocity Verlet evaluates only such states.
+  if (search_->needs_rebuild(p, b)) rebuild(p, b, req.commit && req.iteration == 0);
 
-  add_field_forces(p);
+  start_accumulators(p);
   if (near_) stats_.near_field_energy = near_->evaluate(p, *search_);
   const PairStats pp = pp_->evaluate(p, *search_, req);
   const PairStats pb = pb_->evaluate(p, b, *search_, req);
@@ -131,18 +128,21 @@ void Interactions::restore(BinaryReader& r, const Particles& p, const Barriers& 
 }
 
 OverlapReport Interactions::max_overlap(const Particles& p, const Barriers& b) const {
-  const OverlapReport pp = pp_->max_overlap(p, *search_);
+  const OverlapReport pp = pp_->max_overlap();
   const OverlapReport pb = pb_->max_overlap(p, b);
   return pb.ratio > pp.ratio ? pb : pp;
 }
 
-void Interactions::add_field_forces(Particles& p) const {
+void Interactions::start_accumulators(Particles& p) const {
+  // One pass: the field forces start the force sums, torque and heat start at zero.
   const FieldParams& f = model_.params.fields;
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
-    p.force[i] += gravity_force(p.mass[i], f.gravity) + electric_force(p.charge[i], f.electric) +
-                  magnetic_force(p.charge[i], p.v[i], f.magnetic);
+    p.force[i] = gravity_force(p.mass[i], f.gravity) + electric_force(p.charge[i], f.electric) +
+                 magnetic_force(p.charge[i], p.v[i], f.magnetic);
+    p.torque[i] = Vec3{};
+    p.heat[i] = 0.0;
   }
 }
 

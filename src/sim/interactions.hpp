@@ -57,8 +57,11 @@ class Interactions {
 
   // Between steps: rebuilds the lists if needed, reordering the particles spatially (ids are
   // kept; contact history follows the particles). Force accumulators are permuted too.
+  // evaluate() does the same at commit evaluations, so a run needs no separate call.
   void prepare_step(Particles& p, const Barriers& b);
   // Fills force, torque, heat of every particle (and the barriers' loads) for the current state.
+  // Rebuilds the lists first when needed; at a commit evaluation with iteration 0 (the accepted
+  // end of a step) it may then reorder the particles.
   void evaluate(Particles& p, Barriers& b, const EvalRequest& req);
   // Removes the particles whose keep[i] is 0, keeping everyone else's contact history.
   void remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep);
@@ -78,7 +81,7 @@ class Interactions {
   std::uint64_t convection_clamps() const;
 
  private:
-  void add_field_forces(Particles& p) const;
+  void start_accumulators(Particles& p) const;  // force = field forces, torque = heat = 0
   void commit_heat(const HeatFlows& h, const EvalRequest& req);
   void rebuild(Particles& p, const Barriers& b, bool reorder);
 

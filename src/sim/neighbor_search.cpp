@@ -9,8 +9,9 @@ namespace mpdem {
 
 bool NeighborSearch::needs_rebuild(const Particles& p, const Barriers& b) const {
   if (list_.size() != p.size() || broad_.num_elements() != b.size()) return true;
-  if (list_.needs_rebuild(p.x)) return true;
-  return b.size() > 0 && broad_.needs_rebuild(b, list_.max_displacement(p.x));
+  // One pass over the particles: the barrier rule needs the displacement itself.
+  if (b.size() == 0) return list_.needs_rebuild(p.x);
+  return broad_.needs_rebuild(b, list_.max_displacement(p.x));
 }
 
 void NeighborSearch::rebuild(const Particles& p, const Barriers& b) {
@@ -35,9 +36,17 @@ void NeighborSearch::restore(BinaryReader& r, const Particles& p, const Barriers
 }
 
 void NeighborSearch::build(std::span<const Vec3> x, std::span<const double> radius, const Barriers& b) {
+  ++generation_;
   list_.build(x, radius, skin_, extra_);
   broad_.build(x, radius, b, skin_);
   barrier_offsets_build_ = b.offset;
+  blocks_.build(list_);
+  if (!want_incoming_) {
+    first_ = {};
+    in_offset_ = {};
+    in_slot_ = {};
+    return;
+  }
   const std::size_t n = x.size();
   // Transposed index: counting sort of the slots by their second member keeps them ascending.
   const auto& off = list_.offsets();

@@ -1,162 +1,108 @@
 #include "sim/particle_contacts.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <type_traits>
 
-#include "core/deterministic_sum.hpp"
 #include "core/parallel.hpp"
-#include "physics/contact_geometry.hpp"
-#include "physics/hertz.hpp"
-#include "physics/rolling.hpp"
 #include "physics/tangential.hpp"
+#include "sim/pair_batch.hpp"
 
 namespace mpdem {
 
-PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req) {
-  const VerletList& list = search.pairs();
-  const std::size_t n = p.size();
-  const std::size_t pairs = list.num_pairs();
-  if (spring_.size() != pairs) {  // first use: no history yet
-    spring_.assign(pairs, Vec3{});
-    vt0_.assign(pairs, Vec3{});
-    wr0_.assign(pairs, Vec3{});
-  }
-  spring_tent_.resize(pairs);
-  vt_tent_.resize(pairs);
-  if (req.commit) wr_tent_.resize(pairs);
-  force_.resize(pairs);
-  torque_first_.resize(pairs);
-  torque_second_.resize(pairs);
-  touching_.resize(pairs);
-  overlap_.resize(pairs);
-  slipped_.resize(pairs);
-  const auto& off = list.offsets();
-  const auto& idx = list.indices();
-  const double dt = req.dt, phi = req.phi;
-  const ContactModel law = law_;
-  const bool commit = req.commit;
+void ParticleContacts::ensure_history(std::size_t pairs) {
+  if (spring_.size() == pairs) return;  // first use: no history yet
+  spring_.assign(pairs, Vec3{});
+  vt0_.assign(step_start_ ? pairs : 0, Vec3{});
+  wr0_.assign(step_start_ && law_.mu_r > 0.0 ? pairs : 0, Vec3{});
+  slipped_.assign(step_start_ ? pairs : 0, 0);
+}
 
-  // Per-particle halves of (51)-(53) and the Mindlin G*: each effective value is then one
-  // division per pair, 1/(a_i + a_j), instead of eight divisions per contact and evaluation.
-  compliance_.resize(n);
-  shear_compliance_.resize(n);
-  inv_radius_.resize(n);
-  inv_mass_.resize(n);
+void ParticleContacts::refresh_terms(const Particles& p, std::uint64_t generation) {
+  const std::size_t n = p.size();
+  terms_.resize(n);
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
     const double nu = p.poisson[i];
-    compliance_[i] = (1.0 - nu * nu) / p.young[i];                           // 1/Pa, (51)
-    shear_compliance_[i] = (2.0 - nu) / shear_modulus(p.young[i], nu);       // 1/Pa, Mindlin G*
-    inv_radius_[i] = 1.0 / p.radius[i];                                      // 1/m, (52)
-    inv_mass_[i] = 1.0 / p.mass[i];                                          // 1/kg, (53)
+    terms_[i] = {(1.0 - nu * nu) / p.young[i],                      // (51)
+                 (2.0 - nu) / shear_modulus(p.young[i], nu),        // Mindlin G*
+                 1.0 / p.radius[i],                                 // (52)
+                 1.0 / p.mass[i]};                                  // (53)
   }
-
-  // 1. Pair laws, one slot at a time; each slot is written by exactly one thread.
-  const auto sums = deterministic_sums<4>(n, [&](std::size_t i, std::array<double, 4>& acc) {
-    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
-      const std::size_t j = idx[k];
-      // Cheap rejection of clearly separated listed pairs (about a third at skin 0.1 d) before
-      // the square root and division; the margin leaves the exact decision to pair_geometry.
-      const double reach = p.radius[i] + p.radius[j];
-      const bool apart = norm2(p.x[i] - p.x[j]) > reach * reach * (1.0 + 1e-9);
-      const PairGeometry g = apart ? PairGeometry{} : pair_geometry(p.x[i], p.radius[i], p.x[j], p.radius[j]);
-      if (!(g.overlap > 0.0)) {
-        // Zero tentative history, so that a commit is a swap of the arrays.
-        touching_[k] = 0;
-        force_[k] = torque_first_[k] = torque_second_[k] = Vec3{};  // the gather needs no branch
-        spring_tent_[k] = Vec3{};
-        vt_tent_[k] = Vec3{};
-        if (commit) wr_tent_[k] = Vec3{};
-        continue;
-      }
-      touching_[k] = 1;
-      overlap_[k] = g.overlap;
-      const double E = 1.0 / (compliance_[i] + compliance_[j]);                               // (51)
-      const double r = 1.0 / (inv_radius_[i] + inv_radius_[j]);                               // (52)
-      const double m = 1.0 / (inv_mass_[i] + inv_mass_[j]);                                   // (53)
-      const Vec3 vrel = contact_relative_velocity(p.v[i], p.w[i], g.r_Pi, p.v[j], p.w[j], g.r_Pj);  // (60)
-      const double vn = normal_rate(vrel, g.normal);
-      const Vec3 vt = tangential_part(vrel, g.normal);                                         // (61)
-      const NormalForce fn = normal_contact_force(E, r, m, law.xi_n, g.overlap, vn);          // (49)-(50)
-      // Tangential spring (57)-(70): the stored spring on the current tangent plane plus the
-      // trapezoidal increment (64).
-      const double G = 1.0 / (shear_compliance_[i] + shear_compliance_[j]);
-      const double kt = tangential_stiffness(G, r, g.overlap);                                 // (65)
-      const double dtc = tangential_damping_coefficient(law.xi_t, m, kt);                      // (67)
-      const Vec3 ds = dt * ((1.0 - phi) * vt0_[k] + phi * vt);
-      const SlipDecision decide = req.iteration >= 2 ? (slipped_[k] ? SlipDecision::Slip : SlipDecision::Stick)
-                                                     : SlipDecision::Free;
-      const TangentialResult ft = tangential_force(project_spring(spring_[k], g.normal), ds, vt, kt, dtc, law.mu_s,
-                                                   law.mu_d, fn.magnitude, decide);
-      if (req.iteration == 1) slipped_[k] = ft.slipped;
-      // Torques: tangential force at the contact point (62) and rolling resistance (71).
-      // Rolling resistance (71) acts against the relative rotation of the step start (the state
-      // itself at a commit evaluation, which starts the next step): a torque that is constant
-      // during the iteration, since its direction flips where w_rel = 0 (docs/contact_model.md).
-      const Vec3 wrel = p.w[i] - p.w[j];
-      const Vec3 roll = rolling_resistance_torque(req.iteration > 0 ? wr0_[k] : wrel, law.mu_r, r, fn.magnitude,
-                                                  rolling_inertia_pair(p.inertia[i], p.inertia[j]), dt);
-      force_[k] = fn.magnitude * g.normal + ft.force;
-      torque_first_[k] = cross(g.r_Pi, ft.force) + roll;
-      torque_second_[k] = cross(g.r_Pj, -ft.force) - roll;
-      spring_tent_[k] = ft.spring;
-      vt_tent_[k] = vt;
-      if (commit) wr_tent_[k] = wrel;
-      acc[0] += 1.0;
-      acc[1] += hertz_elastic_energy(E, r, g.overlap) + 0.5 * kt * norm2(ft.spring);
-      acc[2] += fn.dissipated_power + (ft.slipped ? 0.0 : ft.dissipated_power);
-      acc[3] += (ft.slipped ? ft.dissipated_power : 0.0) - dot(roll, wrel);
-    }
-  });
-
-  // 2. Gather per particle in a fixed order: own slots, then incoming slots.
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-  for (std::size_t i = 0; i < n; ++i) {
-    Vec3 f{}, t{};
-    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
-      f += force_[k];
-      t += torque_first_[k];
-    }
-    for (std::uint32_t k : search.incoming(i)) {
-      f -= force_[k];
-      t += torque_second_[k];
-    }
-    p.force[i] += f;
-    p.torque[i] += t;
-  }
-
-  // 3. Commit: springs of touching pairs are kept, opened contacts forget theirs.
-  // The tentative arrays hold zeros for open slots, so committing is swapping.
-  if (commit) {
-    spring_.swap(spring_tent_);
-    vt0_.swap(vt_tent_);
-    wr0_.swap(wr_tent_);
-  }
-  return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3]};
+  terms_generation_ = generation;
 }
 
-OverlapReport ParticleContacts::max_overlap(const Particles& p, const NeighborSearch& search) const {
-  OverlapReport r;
-  const auto& idx = search.pairs().indices();
-  if (touching_.size() != idx.size()) return r;
-  std::size_t best = idx.size();
-  const auto& off = search.pairs().offsets();
-  for (std::size_t i = 0; i + 1 < off.size(); ++i)
-    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
-      if (!touching_[k]) continue;
-      // Divide only for a candidate deeper than the best so far (checked every step).
-      const double rmin = std::min(p.radius[i], p.radius[idx[k]]);
-      if (!(overlap_[k] > r.ratio * rmin)) continue;
-      const double ratio = overlap_[k] / rmin;
-      if (ratio > r.ratio) {
-        r.ratio = ratio;
-        best = k;
+PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req) {
+  if (!step_start_ && req.phi != 1.0)
+    throw std::logic_error("particle contacts: phi < 1 needs the step-start history (trapezoidal integrator)");
+  const VerletList& list = search.pairs();
+  const PairBlocks& blocks = search.blocks();
+  const std::size_t n = p.size();
+  ensure_history(list.num_pairs());
+  slipped_.resize(step_start_ ? list.num_pairs() : 0);
+  const bool rolling = law_.mu_r > 0.0;
+  cross_force_.resize(blocks.num_cross());
+  cross_arm_.resize(blocks.num_cross());
+  cross_roll_.resize(rolling ? blocks.num_cross() : 0);
+
+  // Constant properties: refreshed only when the particles may have been reordered or changed.
+  if (terms_.size() != n || terms_generation_ != search.generation()) refresh_terms(p, search.generation());
+
+  const PairPass q{p.x.data(), p.v.data(), p.w.data(), p.radius.data(), p.inertia.data(), p.id.data(),
+                   terms_.data(), list.offsets().data(), list.indices().data(), p.force.data(), p.torque.data(),
+                   spring_.data(), vt0_.empty() ? nullptr : vt0_.data(), wr0_.empty() ? nullptr : wr0_.data(),
+                   slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_arm_.data(),
+                   rolling ? cross_roll_.data() : nullptr, law_, req.dt, req.phi, req.iteration, req.commit, n};
+  static_assert(std::is_same_v<ParticleContacts::Terms, ContactTerms>);
+
+  // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
+  const std::size_t nb = blocks.num_blocks();
+  block_sums_.resize(nb);
+#pragma omp parallel for schedule(dynamic, 1) if (n > kParallelThreshold)
+  for (std::size_t b = 0; b < nb; ++b)
+    block_sums_[b] = contact_block(q, b * PairBlocks::kBlock, std::min(n, (b + 1) * PairBlocks::kBlock),
+                                   blocks.cross_base(b));
+
+  // 2. Cross pairs, per member in a fixed order (own slots, then incoming).
+  const auto& members = blocks.cross_particles();
+#pragma omp parallel for schedule(static) if (members.size() > kParallelThreshold)
+  for (std::size_t mb = 0; mb < members.size(); ++mb) {
+    const std::size_t a = members[mb];
+    const double ra = p.radius[a];
+    Vec3 f{}, t{};
+    for (std::uint32_t e : blocks.entries(mb)) {
+      const std::size_t c = e >> 1;
+      const bool second = (e & 1u) != 0;
+      const Vec3 roll = rolling ? cross_roll_[c] : Vec3{};
+      if (second) {
+        f -= cross_force_[c];
+        t -= roll + ra * cross_arm_[c];
+      } else {
+        f += cross_force_[c];
+        t += roll - ra * cross_arm_[c];
       }
     }
-  if (best < idx.size()) {
-    r.particle = p.id[search.first_of(best)];
-    r.other = p.id[idx[best]];
+    p.force[a] += f;
+    p.torque[a] += t;
   }
-  return r;
+
+  // 3. Totals in block order (independent of the thread count).
+  PairStats st;
+  deepest_ = OverlapReport{};
+  for (const PairBlockSums& s : block_sums_) {
+    st.contacts += static_cast<std::size_t>(s.contacts);
+    st.elastic_energy += s.elastic_energy;
+    st.damping_power += s.damping_power;
+    st.friction_power += s.friction_power;
+    if (s.deepest.ratio > deepest_.ratio) deepest_ = {s.deepest.ratio, s.deepest.first, s.deepest.second, -1};
+  }
+  return st;
+}
+
+std::size_t ParticleContacts::memory_bytes() const {
+  return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() +
+          cross_arm_.capacity() + cross_roll_.capacity()) * sizeof(Vec3) +
+         slipped_.capacity() + terms_.capacity() * sizeof(Terms) + block_sums_.capacity() * sizeof(PairBlockSums);
 }
 
 void ParticleContacts::save(BinaryWriter& w, const Particles& p, const NeighborSearch& search) const {
@@ -173,19 +119,22 @@ std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, co
   if (spring_.size() != list.num_pairs() || list.size() != p.size()) return h;
   const auto& off = list.offsets();
   const auto& idx = list.indices();
+  const bool vt = !vt0_.empty(), wr = !wr0_.empty();
   for (std::size_t i = 0; i < list.size(); ++i)
-    for (std::size_t k = off[i]; k < off[i + 1]; ++k)
-      if (norm2(spring_[k]) > 0.0 || norm2(vt0_[k]) > 0.0 || norm2(wr0_[k]) > 0.0)
-        h.push_back({p.id[i], p.id[idx[k]], spring_[k], vt0_[k], wr0_[k]});
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
+      const Vec3 v0 = vt ? vt0_[k] : Vec3{}, w0 = wr ? wr0_[k] : Vec3{};
+      if (norm2(spring_[k]) > 0.0 || norm2(v0) > 0.0 || norm2(w0) > 0.0)
+        h.push_back({p.id[i], p.id[idx[k]], spring_[k], v0, w0});
+    }
   return h;
 }
 
 void ParticleContacts::import_history(const Particles& p, const NeighborSearch& search, std::vector<PairHistory> h) {
   const VerletList& list = search.pairs();
-  spring_.assign(list.num_pairs(), Vec3{});
-  vt0_.assign(list.num_pairs(), Vec3{});
-  wr0_.assign(list.num_pairs(), Vec3{});
+  spring_.clear();
+  ensure_history(list.num_pairs());
   if (h.empty()) return;
+  const bool vt = !vt0_.empty(), wr = !wr0_.empty();
   // Orient every record as (smaller id, larger id); look slots up by binary search.
   for (PairHistory& r : h)
     if (r.id_first > r.id_second) {
@@ -208,8 +157,8 @@ void ParticleContacts::import_history(const Particles& p, const NeighborSearch& 
       auto it = std::lower_bound(h.begin(), h.end(), key, key_less);
       if (it == h.end() || it->id_first != key.id_first || it->id_second != key.id_second) continue;
       spring_[k] = flip ? -it->spring : it->spring;
-      vt0_[k] = flip ? -it->vt0 : it->vt0;
-      wr0_[k] = flip ? -it->wr0 : it->wr0;
+      if (vt) vt0_[k] = flip ? -it->vt0 : it->vt0;
+      if (wr) wr0_[k] = flip ? -it->wr0 : it->wr0;
     }
 }
 

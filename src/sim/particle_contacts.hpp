@@ -13,6 +13,7 @@
 #include "physics/contact_model.hpp"
 #include "sim/interactions.hpp"
 #include "sim/neighbor_search.hpp"
+#include "sim/pair_batch.hpp"
 
 namespace mpdem {
 
@@ -42,7 +43,11 @@ struct OverlapReport {
 
 class ParticleContacts {
  public:
-  explicit ParticleContacts(const ContactModel& law) : law_(law) {}
+  // step_start: keep each contact's tangential velocity (and relative rotation, with rolling
+  // resistance) of the step start and the first iteration's stick/slip decisions - what the
+  // trapezoidal rule's increment (64) needs. Velocity Verlet (phi = 1, one evaluation a step)
+  // needs only the spring.
+  ParticleContacts(const ContactModel& law, bool step_start) : law_(law), step_start_(step_start) {}
 
   // Adds contact forces and torques to p.force / p.torque; list must be current for p.x.
   PairStats evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req);
@@ -52,7 +57,8 @@ class ParticleContacts {
   // ... and back onto the slots of the rebuilt list (spring sign follows the pair's orientation).
   void import_history(const Particles& p, const NeighborSearch& search, std::vector<PairHistory> h);
 
-  OverlapReport max_overlap(const Particles& p, const NeighborSearch& search) const;
+  // The deepest contact of the last evaluation.
+  OverlapReport max_overlap() const { return deepest_; }
 
   // Checkpoints (the list must be restored first).
   void save(BinaryWriter& w, const Particles& p, const NeighborSearch& search) const;
@@ -60,27 +66,29 @@ class ParticleContacts {
 
   // For tests: the committed spring of the pair (i, j), or zero when none.
   Vec3 spring_between(const NeighborSearch& search, std::size_t i, std::size_t j) const;
+  std::size_t memory_bytes() const;
+
+  using Terms = ContactTerms;  // per-particle halves of (51)-(53), sim/pair_batch.hpp
 
  private:
+  void ensure_history(std::size_t pairs);
+  void refresh_terms(const Particles& p, std::uint64_t generation);
+
   ContactModel law_;
-  // Per pair slot [pairs]:
-  std::vector<Vec3> spring_;        // m, committed tangential spring of the slot's first member
-  std::vector<Vec3> vt0_;           // m/s, tangential relative velocity at the step start
-  std::vector<Vec3> wr0_;           // rad/s, relative rotation at the step start (rolling law)
-  std::vector<Vec3> spring_tent_;   // m, tentative spring of the current evaluation
-  std::vector<Vec3> vt_tent_;       // m/s, tangential velocity of the current evaluation
-  std::vector<Vec3> wr_tent_;       // rad/s, relative rotation of a commit evaluation
-  std::vector<Vec3> force_;         // N, force on the first member (the second gets -force)
-  std::vector<Vec3> torque_first_;  // N m
-  std::vector<Vec3> torque_second_; // N m
-  std::vector<double> overlap_;      // m, overlap of touching slots
-  std::vector<std::uint8_t> touching_;
-  std::vector<std::uint8_t> slipped_;   // stick (0) / slip (1) decided by the first iteration
-  // Per particle [N], refreshed every evaluation (particles may be reordered in between):
-  std::vector<double> compliance_;        // 1/Pa, (1 - nu^2)/E
-  std::vector<double> shear_compliance_;  // 1/Pa, (2 - nu)/G
-  std::vector<double> inv_radius_;        // 1/m
-  std::vector<double> inv_mass_;          // 1/kg
+  bool step_start_;
+  // Per pair slot [pairs]; the committed history is updated in place by commit evaluations.
+  std::vector<Vec3> spring_;         // m, committed tangential spring of the slot's first member
+  std::vector<Vec3> vt0_;            // m/s, tangential velocity at the step start (step_start)
+  std::vector<Vec3> wr0_;            // rad/s, w_first - w_second at the step start (step_start, mu_r > 0)
+  std::vector<std::uint8_t> slipped_;  // stick (0) / slip (1) of the first iteration (step_start)
+  // Per cross pair [PairBlocks::num_cross()], added to both members after the block pass:
+  std::vector<Vec3> cross_force_;    // N, force on the first member
+  std::vector<Vec3> cross_arm_;      // N, n x f_t: the tangential torque on a member is -R arm (62)
+  std::vector<Vec3> cross_roll_;     // N m, rolling torque on the first member (mu_r > 0)
+  std::vector<Terms> terms_;         // [N], from the particles' constant properties
+  std::uint64_t terms_generation_ = 0;  // NeighborSearch::generation() they were computed at
+  std::vector<PairBlockSums> block_sums_;  // [blocks]
+  OverlapReport deepest_;
 };
 
 }  // namespace mpdem

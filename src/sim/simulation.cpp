@@ -35,13 +35,13 @@ void Simulation::initialize() {
   interactions_->evaluate(scene_.particles, scene_.barriers, EvalRequest{time_, 0.0, 1.0, true});
   ++evaluations_;
   initialized_ = true;
-  check_energy();  // the reference for the first step
+  const Params& prm = scene_.model.params;
+  check_energy(scan_state(scene_.particles, prm.fields, prm.domain));  // the reference for the first step
 }
 
 StepReport Simulation::advance(double dt) {
   initialize();
   const Params& prm = scene_.model.params;
-  interactions_->prepare_step(scene_.particles, scene_.barriers);
   StepReport rep;
   if (prm.time.integrator == Integrator::Verlet) {
     rep = verlet_.step(scene_.particles, scene_.barriers, *interactions_, time_, dt);
@@ -67,7 +67,6 @@ StepReport Simulation::advance(double dt) {
 StepReport Simulation::advance_adaptive(double limit) {
   initialize();
   const Params& prm = scene_.model.params;
-  interactions_->prepare_step(scene_.particles, scene_.barriers);
   for (;;) {
     const double h = std::min(dt_, limit);
     StepReport rep = trapezoidal_.step(scene_.particles, scene_.barriers, *interactions_, time_, h,
@@ -96,23 +95,18 @@ StepReport Simulation::advance_adaptive(double limit) {
   }
 }
 
-double Simulation::energy_balance(const ParticleEnergy& e) const {
-  const Particles& p = scene_.particles;
-  const FieldParams& f = scene_.model.params.fields;
-  double electric = 0.0;  // potential of the uniform field, -q E.x
-  if (norm2(f.electric) > 0.0)
-    for (std::size_t i = 0; i < p.size(); ++i) electric -= p.charge[i] * dot(f.electric, p.x[i]);
-  const InteractionStats& s = interactions_->stats();
-  return e.kinetic + e.rotational + e.potential + electric + s.elastic_energy + s.damping_dissipated +
-         s.friction_dissipated;
+double Simulation::energy_balance(const StateScan& s) const {
+  const InteractionStats& st = interactions_->stats();
+  return s.energy.kinetic + s.energy.rotational + s.energy.potential + s.electric + st.elastic_energy +
+         st.damping_dissipated + st.friction_dissipated;
 }
 
-void Simulation::check_energy() {
+void Simulation::check_energy(const StateScan& s) {
   const Params& prm = scene_.model.params;
   // The near field's potential is not in the balance, so its scenes cannot be checked this way.
   if (!(prm.checks.energy_jump > 0.0) || prm.near_field.cutoff > 0.0) return;
-  const ParticleEnergy e = particle_energy(scene_.particles, prm.fields.gravity);
-  const double balance = energy_balance(e);
+  const ParticleEnergy& e = s.energy;
+  const double balance = energy_balance(s);
   const double active = e.kinetic + e.rotational + interactions_->stats().elastic_energy;
   if (energy_checked_) {
     const double rise = balance - last_balance_;
@@ -155,23 +149,29 @@ void Simulation::check_overlap() {
 
 void Simulation::check_state() {
   Particles& p = scene_.particles;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (!isfinite(p.x[i]) || !isfinite(p.v[i]) || !isfinite(p.w[i]) || !std::isfinite(p.T[i]))
-      throw RunError(fmt::format("non-finite state of particle id {} at step {} (t = {:.9g} s): x = ({}, {}, {}), "
-                                 "v = ({}, {}, {}). The run is unstable; reduce time.dt.",
-                                 p.id[i], steps_, time_, p.x[i].x, p.x[i].y, p.x[i].z, p.v[i].x, p.v[i].y, p.v[i].z));
-  }
+  const Params& prm = scene_.model.params;
+  const StateScan scan = scan_state(p, prm.fields, prm.domain);  // one pass; culprits searched only if needed
+  if (scan.nonfinite > 0)
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (!isfinite(p.x[i]) || !isfinite(p.v[i]) || !isfinite(p.w[i]) || !std::isfinite(p.T[i]))
+        throw RunError(fmt::format("non-finite state of particle id {} at step {} (t = {:.9g} s): x = ({}, {}, {}), "
+                                   "v = ({}, {}, {}). The run is unstable; reduce time.dt.",
+                                   p.id[i], steps_, time_, p.x[i].x, p.x[i].y, p.x[i].z, p.v[i].x, p.v[i].y,
+                                   p.v[i].z));
+    }
   check_overlap();
-  check_energy();
+  check_energy(scan);
+  if (scan.outside > 0) remove_outside();
+}
+
+void Simulation::remove_outside() {
+  Particles& p = scene_.particles;
   const DomainParams& d = scene_.model.params.domain;
-  if (!d.bounded) return;
   std::vector<char> keep(p.size(), 1);
   std::size_t gone = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Vec3& x = p.x[i];
-    const bool inside = x.x >= d.min.x && x.x <= d.max.x && x.y >= d.min.y && x.y <= d.max.y && x.z >= d.min.z &&
-                        x.z <= d.max.z;
-    if (inside) continue;
+    if (inside_domain(d, x)) continue;
     if (d.on_exit == ExitPolicy::Stop)
       throw RunError(fmt::format("particle id {} left the domain at step {} (t = {:.9g} s) at ({:.6g}, {:.6g}, {:.6g}); "
                                  "domain.on_exit = \"stop\"",

@@ -11,6 +11,7 @@
 #include "integrate/verlet.hpp"
 #include "model/scene.hpp"
 #include "sim/energy.hpp"
+#include "sim/state_scan.hpp"
 #include "sim/interactions.hpp"
 
 namespace mpdem {
@@ -64,10 +65,11 @@ class Simulation {
 
  private:
   void check_state();                // NaN / infinity, energy jumps, domain exits
-  void check_energy();
+  void check_energy(const StateScan& s);
   void check_overlap();
-  // J, mechanical energy + cumulative dissipation, from the particles' energies e.
-  double energy_balance(const ParticleEnergy& e) const;
+  void remove_outside();             // domain.on_exit: stop or remove
+  // J, mechanical energy + cumulative dissipation, from the scan of the particles.
+  double energy_balance(const StateScan& s) const;
 
   Scene& scene_;
   RunOptions options_;

@@ -1,0 +1,76 @@
+#pragma once
+// The particle-particle contact kernel (physics.md sections 5-6) for one block of particles
+// (neighbor/pair_blocks.hpp), evaluated in batches.
+//
+// Why batches: one Hertz-Mindlin contact is a long chain of dependent square roots and divisions
+// (distance -> overlap -> sqrt(r* delta) -> damping root -> force -> Coulomb test), so a loop that
+// finishes one contact before starting the next waits on latency. The kernel first collects up
+// to kBatch candidate pairs, then runs each stage (geometry, normal law, tangential law) over the
+// whole batch - independent iterations the processor overlaps - and finally adds the results to
+// the particles in slot order, so every particle's sum has a fixed order for any thread count.
+#include <cstddef>
+#include <cstdint>
+
+#include "core/vec3.hpp"
+#include "physics/contact_model.hpp"
+
+namespace mpdem {
+
+// Per-particle halves of the effective properties (51)-(53) and Mindlin's G*: a pair's value
+// is one division, 1/(a_i + a_j).
+struct ContactTerms {
+  double compliance = 0.0;        // 1/Pa, (1 - nu^2)/E
+  double shear_compliance = 0.0;  // 1/Pa, (2 - nu)/G
+  double inv_radius = 0.0;        // 1/m
+  double inv_mass = 0.0;          // 1/kg
+};
+
+// The deepest contact, relative to the smaller radius.
+struct DeepestPair {
+  double ratio = 0.0;          // -, overlap / min(R_i, R_j)
+  std::int64_t first = -1;     // particle ids
+  std::int64_t second = -1;
+};
+
+// Sums over one block, added in block order by the caller.
+struct PairBlockSums {
+  double contacts = 0.0;
+  double elastic_energy = 0.0;  // J
+  double damping_power = 0.0;   // W, normal + tangential dashpots
+  double friction_power = 0.0;  // W, sliding + rolling friction
+  DeepestPair deepest;
+};
+
+// Everything the kernel reads and writes, as plain pointers into distinct arrays.
+struct PairPass {
+  const Vec3* __restrict x;                  // [N] m
+  const Vec3* __restrict v;                  // [N] m/s
+  const Vec3* __restrict w;                  // [N] rad/s
+  const double* __restrict radius;           // [N] m
+  const double* __restrict inertia;          // [N] kg m^2
+  const std::int64_t* __restrict id;         // [N]
+  const ContactTerms* __restrict terms;      // [N]
+  const std::size_t* __restrict off;         // [N+1] half-list CSR offsets
+  const std::uint32_t* __restrict idx;       // [pairs] second members
+  Vec3* __restrict force;                    // [N] N, accumulated
+  Vec3* __restrict torque;                   // [N] N m, accumulated
+  Vec3* __restrict spring;                   // [pairs] m, committed spring (updated at commits)
+  Vec3* __restrict vt0;                      // [pairs] m/s step-start tangential velocity, or null
+  Vec3* __restrict wr0;                      // [pairs] rad/s step-start w_i - w_j, or null
+  std::uint8_t* __restrict slipped;          // [pairs] first iteration's slip, or null
+  Vec3* __restrict cross_force;              // [cross] N, force on the first member
+  Vec3* __restrict cross_arm;                // [cross] N, n x f_t
+  Vec3* __restrict cross_roll;               // [cross] N m, rolling torque on the first member, or null
+  ContactModel law;
+  double dt = 0.0;                           // s
+  double phi = 1.0;                          // -
+  int iteration = 0;
+  bool commit = false;
+  std::size_t n = 0;                         // particles
+};
+
+// Evaluates the pairs whose first member is in [lo, hi), one PairBlocks block; its cross pairs
+// are numbered from cross_first on.
+PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t cross_first);
+
+}  // namespace mpdem

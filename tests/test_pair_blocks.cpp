@@ -1,0 +1,135 @@
+// PairBlocks (neighbor/pair_blocks.hpp) and the shared-root contact coefficients
+// (physics/contact_coefficients.hpp): the structures behind the race-free, thread-count
+// independent pair loop.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "neighbor/pair_blocks.hpp"
+#include "neighbor/verlet_list.hpp"
+#include "physics/contact_coefficients.hpp"
+#include "physics/hertz.hpp"
+#include "physics/tangential.hpp"
+
+namespace mpdem {
+namespace {
+
+// A random dense cloud of 3000 spheres (three blocks), radii 1-5 mm.
+VerletList random_list(std::size_t n, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 0.08), rr(1e-3, 5e-3);
+  std::vector<Vec3> x(n);
+  std::vector<double> r(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = {u(rng), u(rng), u(rng)};
+    r[i] = rr(rng);
+  }
+  VerletList list;
+  list.build(x, r, 1e-4);
+  return list;
+}
+
+TEST(PairBlocks, EveryCrossPairHasBothMembersAndInternalPairsStayInTheirBlock) {
+  const std::size_t n = 3000;
+  const VerletList list = random_list(n, 3);
+  PairBlocks blocks;
+  blocks.build(list);
+  ASSERT_EQ(blocks.num_blocks(), (n + PairBlocks::kBlock - 1) / PairBlocks::kBlock);
+  const auto& off = list.offsets();
+  const auto& idx = list.indices();
+
+  // Expected: cross pairs in slot order, numbered from 0; per block the count.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> cross;  // (first, second) by cross index
+  std::vector<std::size_t> per_block(blocks.num_blocks(), 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t end = (i / PairBlocks::kBlock + 1) * PairBlocks::kBlock;
+    ASSERT_EQ(PairBlocks::block_end(i, n), std::min(end, n));
+    bool seen_cross = false;
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
+      const bool is_cross = idx[k] >= end;
+      EXPECT_TRUE(!seen_cross || is_cross) << "cross slots must be the tail of a particle's range";
+      seen_cross = seen_cross || is_cross;
+      if (is_cross) {
+        cross.emplace_back(static_cast<std::uint32_t>(i), idx[k]);
+        ++per_block[i / PairBlocks::kBlock];
+      }
+    }
+  }
+  ASSERT_GT(cross.size(), 100u) << "the test needs cross pairs";
+  ASSERT_EQ(blocks.num_cross(), cross.size());
+  std::size_t base = 0;
+  for (std::size_t b = 0; b < blocks.num_blocks(); ++b) {
+    EXPECT_EQ(blocks.cross_base(b), base);
+    base += per_block[b];
+  }
+
+  // Each cross index appears exactly once as first member (at its first particle) and once as
+  // second member (at its second particle); own entries come first, each group ascending.
+  std::vector<int> as_first(cross.size(), 0), as_second(cross.size(), 0);
+  const auto& members = blocks.cross_particles();
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    long last_first = -1, last_second = -1;
+    bool in_second = false;
+    for (std::uint32_t e : blocks.entries(m)) {
+      const std::size_t c = e >> 1;
+      ASSERT_LT(c, cross.size());
+      if (e & 1u) {
+        in_second = true;
+        EXPECT_EQ(cross[c].second, members[m]);
+        EXPECT_GT(static_cast<long>(c), last_second);
+        last_second = static_cast<long>(c);
+        ++as_second[c];
+      } else {
+        EXPECT_FALSE(in_second) << "own cross slots precede the incoming ones";
+        EXPECT_EQ(cross[c].first, members[m]);
+        EXPECT_GT(static_cast<long>(c), last_first);
+        last_first = static_cast<long>(c);
+        ++as_first[c];
+      }
+    }
+  }
+  for (std::size_t c = 0; c < cross.size(); ++c) {
+    EXPECT_EQ(as_first[c], 1) << c;
+    EXPECT_EQ(as_second[c], 1) << c;
+  }
+}
+
+TEST(PairBlocks, SmallSetsHaveNoCrossPairs) {
+  const VerletList list = random_list(500, 5);  // one block
+  PairBlocks blocks;
+  blocks.build(list);
+  EXPECT_EQ(blocks.num_blocks(), 1u);
+  EXPECT_EQ(blocks.num_cross(), 0u);
+  EXPECT_TRUE(blocks.cross_particles().empty());
+}
+
+// The shared-root coefficients equal the single-law functions (relative 1e-14: only the order
+// of the multiplications differs).
+TEST(ContactCoefficients, EqualTheSingleLawFunctions) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> lg(-1.0, 1.0);
+  for (int trial = 0; trial < 1000; ++trial) {
+    const double E = 1e7 * std::pow(10.0, 3 * lg(rng)), G = 0.4 * E, r = 1e-3 * std::pow(10.0, lg(rng));
+    const double m = 1e-5 * std::pow(10.0, 2 * lg(rng)), d = 1e-3 * r * std::pow(10.0, lg(rng));
+    const double xi_n = 0.2 + 0.1 * lg(rng), xi_t = trial % 2 ? 0.0 : 0.3;
+    const ContactCoefficients c = contact_coefficients(E, G, r, m, xi_n, xi_t, d);
+    auto rel = [](double a, double b) { return std::abs(a - b) / std::abs(b); };
+    EXPECT_LT(rel(c.k_n, hertz_stiffness(E, r, d)), 1e-14);
+    EXPECT_LT(rel(c.f_el, hertz_elastic_force(E, r, d)), 1e-14);
+    EXPECT_LT(rel(c.d_n, normal_damping_coefficient(xi_n, m, E, r, d)), 1e-14);
+    EXPECT_LT(rel(c.k_t, tangential_stiffness(G, r, d)), 1e-14);
+    if (xi_t > 0.0)
+      EXPECT_LT(rel(c.d_t, tangential_damping_coefficient(xi_t, m, c.k_t)), 1e-14);
+    else
+      EXPECT_EQ(c.d_t, 0.0);
+    EXPECT_LT(rel(hertz_energy_from_force(c.f_el, d), hertz_elastic_energy(E, r, d)), 1e-14);
+  }
+}
+
+}  // namespace
+}  // namespace mpdem

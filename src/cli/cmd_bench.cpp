@@ -65,6 +65,7 @@ void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
   s.model.materials.push_back(m);
 
   Particles& p = s.particles;
+  p.reserve(d.atoms.size());
   for (const LammpsAtom& at : d.atoms) {
     p.add(at.id, 0, 0.5 * at.diameter, at.density, at.x, Vec3{});
     const std::size_t i = p.size() - 1;
@@ -117,11 +118,13 @@ int bench_command(const BenchArgs& args) {
     throw InputError("", 0, "--dt/--skin/--relax/--steps", "expected dt > 0, skin >= 0, relax >= 0, steps >= 0");
   omp_set_num_threads(args.threads);
 
-  const LammpsData d = read_lammps_data(args.data);
   BenchArgs a = args;
-  if (a.steps == 0) a.steps = d.atoms.size() <= 50000 ? 5000 : 2000;
   Scene scene;
-  build_scene(d, a, scene);
+  {  // the parsed file is not needed once the scene holds the particles (peak memory counts)
+    const LammpsData d = read_lammps_data(args.data);
+    if (a.steps == 0) a.steps = d.atoms.size() <= 50000 ? 5000 : 2000;
+    build_scene(d, a, scene);
+  }
   const std::size_t n = scene.particles.size();
 
   Simulation sim(scene, RunOptions{{}, false, false});

@@ -153,6 +153,10 @@ void CellGrid::build(std::span<const Vec3> x, double cell_side, bool find_neighb
   morton_fast_ = std::max({mx, my, mz}) < kMortonLimit;
   sort_particles(n);
   index_cells(find_neighbors);
+  // Sort scratch and per-particle coordinates are not needed after the build (peak memory).
+  pcoord_ = {};
+  keys_ = {};
+  keys_tmp_ = {};
 }
 
 void CellGrid::sort_particles(std::size_t n) {
@@ -234,11 +238,7 @@ void CellGrid::index_cells(bool find_neighbors) {
       static_cast<double>(dims_[0]) * static_cast<double>(dims_[1]) * static_cast<double>(dims_[2]);
   table_.clear();
   dense_.clear();
-  if (!find_neighbors) {
-    nbr_.clear();
-    nbr_count_.clear();
-    return;
-  }
+  if (!find_neighbors) return;
   if (n > 0 && box_cells <= kDenseFactor * static_cast<double>(n)) {
     dense_.assign(static_cast<std::size_t>(box_cells), kNone);
     for (std::size_t c = 0; c < ncell; ++c) {
@@ -256,37 +256,32 @@ void CellGrid::index_cells(bool find_neighbors) {
     }
   }
 
-  // The 27-cell neighbourhood of each occupied cell, found once per build rather than per
-  // particle. Interior cells of the dense index need no bounds checks: fixed slot offsets.
-  nbr_.resize(27 * ncell);
-  nbr_count_.resize(ncell);
-  std::int64_t dense_offset[27];
   for (int k = 0; k < 27; ++k)
-    dense_offset[k] = ((k / 9 - 1) * dims_[1] + (k / 3 % 3 - 1)) * dims_[0] + (k % 3 - 1);
-#pragma omp parallel for schedule(static) if(ncell >= kNeighborParallelMin)
-  for (std::size_t c = 0; c < ncell; ++c) {
-    std::uint32_t* out = nbr_.data() + 27 * c;
-    int count = 0;
-    const CellCoord& cc = coord_[c];
-    const bool interior = !dense_.empty() && cc.x > 0 && cc.y > 0 && cc.z > 0 && cc.x + 1 < dims_[0] &&
-                          cc.y + 1 < dims_[1] && cc.z + 1 < dims_[2];
-    if (interior) {
-      const std::int64_t base = (cc.z * dims_[1] + cc.y) * dims_[0] + cc.x;
-      for (int k = 0; k < 27; ++k) {
-        const std::uint32_t f = dense_[static_cast<std::size_t>(base + dense_offset[k])];
-        out[count] = f;  // branch-free: occupancy is a coin flip for the predictor
-        count += f != kNone;
-      }
-    } else {
-      for (std::int64_t dz = -1; dz <= 1; ++dz)
-        for (std::int64_t dy = -1; dy <= 1; ++dy)
-          for (std::int64_t dx = -1; dx <= 1; ++dx) {
-            const std::uint32_t f = find({cc.x + dx, cc.y + dy, cc.z + dz});
-            if (f != kNone) out[count++] = f;
-          }
+    dense_offset_[k] = ((k / 9 - 1) * dims_[1] + (k / 3 % 3 - 1)) * dims_[0] + (k % 3 - 1);
+}
+
+int CellGrid::neighbor_cells(std::size_t c, std::uint32_t out[27]) const {
+  // Interior cells of the dense index need no bounds checks: fixed slot offsets.
+  int count = 0;
+  const CellCoord& cc = coord_[c];
+  const bool interior = !dense_.empty() && cc.x > 0 && cc.y > 0 && cc.z > 0 && cc.x + 1 < dims_[0] &&
+                        cc.y + 1 < dims_[1] && cc.z + 1 < dims_[2];
+  if (interior) {
+    const std::int64_t base = (cc.z * dims_[1] + cc.y) * dims_[0] + cc.x;
+    for (int k = 0; k < 27; ++k) {
+      const std::uint32_t f = dense_[static_cast<std::size_t>(base + dense_offset_[k])];
+      out[count] = f;  // branch-free: occupancy is a coin flip for the predictor
+      count += f != kNone;
     }
-    nbr_count_[c] = static_cast<std::uint8_t>(count);
+  } else {
+    for (std::int64_t dz = -1; dz <= 1; ++dz)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dx = -1; dx <= 1; ++dx) {
+          const std::uint32_t f = find({cc.x + dx, cc.y + dy, cc.z + dz});
+          if (f != kNone) out[count++] = f;
+        }
   }
+  return count;
 }
 
 std::size_t CellGrid::memory_bytes() const {
@@ -294,7 +289,7 @@ std::size_t CellGrid::memory_bytes() const {
          dense_.capacity() * sizeof(std::uint32_t) + sorted_.capacity() * sizeof(std::uint32_t) +
          cell_of_.capacity() * sizeof(std::uint32_t) + coord_.capacity() * sizeof(CellCoord) +
          start_.capacity() * sizeof(std::uint32_t) + table_.capacity() * sizeof(std::uint32_t) +
-         nbr_.capacity() * sizeof(std::uint32_t) + nbr_count_.capacity() * sizeof(std::uint8_t);
+         0;
 }
 
 }  // namespace mpdem

@@ -57,10 +57,10 @@ class CellGrid {
   }
   std::uint32_t cell_of(std::size_t i) const { return cell_of_[i]; }  // cell of particle i
   const CellCoord& coord(std::size_t c) const { return coord_[c]; }
-  // Occupied cells among the 3x3x3 block around cell c (c included), in (dz, dy, dx) order.
-  std::span<const std::uint32_t> neighbor_cells(std::size_t c) const {
-    return {nbr_.data() + 27 * c, nbr_count_[c]};
-  }
+  // Occupied cells among the 3x3x3 block around cell c (c included), in (dz, dy, dx) order,
+  // written to out; returns how many. Found on demand (a stored 27-slot table per cell would
+  // be the largest array of the grid).
+  int neighbor_cells(std::size_t c, std::uint32_t out[27]) const;
 
   CellCoord coord_of(const Vec3& p) const;     // cell containing point p (may be unoccupied)
   std::uint32_t find(const CellCoord& c) const; // cell index, or kNone if no particle is in it
@@ -91,16 +91,15 @@ class CellGrid {
   Vec3 origin_{};                          // m
   bool morton_fast_ = true;
   std::int64_t dims_[3] = {0, 0, 0};       // cells per axis spanned by the particles
-  std::vector<CellCoord> pcoord_;          // [N] cell coordinates of each particle
-  std::vector<KeyIndex> keys_, keys_tmp_;  // [N] sort scratch (Morton-key path only)
+  std::vector<CellCoord> pcoord_;          // [N] cell coordinates of each particle (build only)
+  std::vector<KeyIndex> keys_, keys_tmp_;  // [N] sort scratch (Morton-key path only, build only)
   std::vector<std::uint32_t> sorted_;      // [N] particle index in cell order
   std::vector<std::uint32_t> cell_of_;     // [N] cell index of each particle
   std::vector<CellCoord> coord_;           // [C] occupied cells, Morton order
   std::vector<std::uint32_t> start_;       // [C+1] offsets into sorted_
   std::vector<std::uint32_t> table_;       // [power of two >= 2C] hash slots -> cell (sparse sets)
   std::vector<std::uint32_t> dense_;       // [<= 8N] x-fastest box cells -> cell (compact sets)
-  std::vector<std::uint32_t> nbr_;         // [27 C] occupied neighbour cells, fixed stride 27
-  std::vector<std::uint8_t> nbr_count_;    // [C] how many of the 27 slots are used
+  std::int64_t dense_offset_[27] = {};     // slot offsets of the 27 neighbours in dense_
 };
 
 }  // namespace mpdem

@@ -44,17 +44,21 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
   extra_ = extra_range;
   max_radius_ = rmax;
   // Any listed pair is closer than 2 R_max + extra + skin, so it lies in adjacent cells.
-  grid_.build(x, 2.0 * rmax + extra_range + skin);
+  CellGrid grid;
+  grid.build(x, 2.0 * rmax + extra_range + skin);
+  grid_stats_ = {grid.num_cells(), grid.hash_slots(), grid.dense_slots(), grid.memory_bytes(),
+                 grid.uses_morton_key(), grid.uses_dense_index()};
 
   // Centres and radii in cell order: the inner loop then streams contiguous memory.
-  const auto sorted = grid_.sorted();
-  const auto start = grid_.cell_start();
-  xs_.resize(n);
-  rs_.resize(n);
+  const auto sorted = grid.sorted();
+  const auto start = grid.cell_start();
+  std::vector<Vec3> xs(n);     // m
+  std::vector<double> rs(n);   // m
+  std::vector<std::vector<std::uint32_t>> thread_buf;  // per-thread pair buffers
 #pragma omp parallel for schedule(static) if(n >= kNeighborParallelMin)
   for (std::size_t k = 0; k < n; ++k) {
-    xs_[k] = x[sorted[k]];
-    rs_[k] = radius[sorted[k]];
+    xs[k] = x[sorted[k]];
+    rs[k] = radius[sorted[k]];
   }
   x_build_.assign(x.begin(), x.end());
   offset_.assign(n + 1, 0);
@@ -66,15 +70,23 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
     const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
     const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
 #pragma omp single
-    if (thread_buf_.size() < nt) thread_buf_.resize(nt);
-    std::vector<std::uint32_t>& buf = thread_buf_[t];
+    thread_buf.resize(nt);
+    std::vector<std::uint32_t>& buf = thread_buf[t];
     std::size_t used = 0;  // entries of buf in use
     const std::size_t lo = n * t / nt, hi = n * (t + 1) / nt;
+    std::uint32_t cell_buf[27];
+    int ncells = 0;
+    std::uint32_t last_cell = CellGrid::kNone;
     for (std::size_t i = lo; i < hi; ++i) {
       const std::size_t first = used;
       const Vec3 xi = x[i];
       const double ri = radius[i];
-      const auto cells = grid_.neighbor_cells(grid_.cell_of(i));
+      const std::uint32_t cell = grid.cell_of(i);
+      if (cell != last_cell) {  // particles come in space-filling-curve order: cells repeat
+        ncells = grid.neighbor_cells(cell, cell_buf);
+        last_cell = cell;
+      }
+      const std::span<const std::uint32_t> cells(cell_buf, static_cast<std::size_t>(ncells));
       std::size_t candidates = 0;
       for (std::uint32_t nc : cells) candidates += start[nc + 1] - start[nc];
       if (buf.size() < used + candidates) buf.resize(std::max(2 * buf.size(), used + candidates));
@@ -84,8 +96,8 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
       for (std::uint32_t nc : cells) {
         for (std::uint32_t k = start[nc]; k < start[nc + 1]; ++k) {
           const std::uint32_t j = sorted[k];
-          const Vec3 d = xs_[k] - xi;
-          const double cut = ri + rs_[k] + extra_range + skin;  // documented pair criterion
+          const Vec3 d = xs[k] - xi;
+          const double cut = ri + rs[k] + extra_range + skin;  // documented pair criterion
           out[used] = j;
           used += static_cast<std::size_t>((j > i) & (norm2(d) < cut * cut));
         }
@@ -127,11 +139,8 @@ bool VerletList::needs_rebuild(std::span<const Vec3> x) const {
 }
 
 std::size_t VerletList::memory_bytes() const {
-  std::size_t b = grid_.memory_bytes() + x_build_.capacity() * sizeof(Vec3) +
-                  offset_.capacity() * sizeof(std::size_t) + index_.capacity() * sizeof(std::uint32_t) +
-                  xs_.capacity() * sizeof(Vec3) + rs_.capacity() * sizeof(double);
-  for (const auto& v : thread_buf_) b += v.capacity() * sizeof(std::uint32_t);
-  return b;
+  return x_build_.capacity() * sizeof(Vec3) + offset_.capacity() * sizeof(std::size_t) +
+         index_.capacity() * sizeof(std::uint32_t);
 }
 
 }  // namespace mpdem

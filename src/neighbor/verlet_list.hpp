@@ -48,22 +48,25 @@ class VerletList {
   const std::vector<Vec3>& build_positions() const { return x_build_; }  // [N] m, at the last build
   double extra_range() const { return extra_; }         // m
   double max_radius() const { return max_radius_; }     // m, at build
-  const CellGrid& grid() const { return grid_; }
-  std::size_t memory_bytes() const;                     // bytes held, grid included
+  // The cell grid of the last build. It and the build's scratch are freed when the build ends
+  // (rebuilds are rare; between them the memory matters more), so only its figures are kept.
+  struct GridStats {
+    std::size_t cells = 0, hash_slots = 0, dense_slots = 0;
+    std::size_t bytes = 0;          // held by the grid during the build
+    bool morton_key = false, dense_index = false;
+  };
+  const GridStats& grid_stats() const { return grid_stats_; }
+  std::size_t memory_bytes() const;                     // bytes held between builds
 
  private:
   double skin_ = 0.0;                        // m
   double extra_ = 0.0;                       // m
   double max_radius_ = 0.0;                  // m
   bool built_ = false;
-  CellGrid grid_;
+  GridStats grid_stats_;
   std::vector<Vec3> x_build_;                // [N] m, centres at build time
   std::vector<std::size_t> offset_{0};       // [N+1] CSR offsets
   std::vector<std::uint32_t> index_;         // [pairs] neighbour indices
-  // Scratch reused between builds: centres and radii in cell order, per-thread pair buffers.
-  std::vector<Vec3> xs_;                     // [N] m
-  std::vector<double> rs_;                   // [N] m
-  std::vector<std::vector<std::uint32_t>> thread_buf_;
 };
 
 }  // namespace mpdem

@@ -38,11 +38,13 @@ inline double tangential_damping_coefficient(double xi_t, double m_star, double 
 // current contact normal n (unit), then rescale it to its previous length, so a rigid rotation
 // of the pair turns the spring with it instead of shrinking it. A spring parallel to n (no
 // tangential direction left) becomes zero.
+// Branch-free (selects, no early return), so that the pair kernel's loops over batches of
+// contacts vectorise.
 inline Vec3 project_spring(const Vec3& s, const Vec3& n) {
   const Vec3 p = s - dot(s, n) * n;
-  const double lp2 = norm2(p);
-  if (lp2 <= 1e-30 * norm2(s)) return Vec3{};  // also covers s = 0
-  return p * std::sqrt(norm2(s) / lp2);
+  const double lp2 = norm2(p), s2 = norm2(s);
+  const bool keep = lp2 > 1e-30 * s2;  // false also for s = 0
+  return p * (keep ? std::sqrt(s2 / (keep ? lp2 : 1.0)) : 0.0);
 }
 
 struct TangentialResult {
@@ -77,20 +79,19 @@ inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Ve
   const Vec3 f_trial = -(k_t * s_tent + d_t * v_t);  // (57)
   const double ft2 = norm2(f_trial);
   const double limit_s = mu_s * std::abs(f_n);
-  const bool stick = decide == SlipDecision::Free ? ft2 <= limit_s * limit_s
-                                                  : decide == SlipDecision::Stick || ft2 == 0.0;
-  if (stick) {                                       // stick (68)
-    out.force = f_trial;
-    out.spring = s_tent;
-    out.dissipated_power = d_t * norm2(v_t);
-    return out;
-  }
-  const Vec3 t = f_trial / std::sqrt(ft2);           // (70), ft2 > 0 here
+  const bool coulomb = ft2 <= limit_s * limit_s;                        // (68)
+  const bool imposed = (decide == SlipDecision::Stick) | (ft2 == 0.0);  // | : no short circuit
+  const bool stick = decide == SlipDecision::Free ? coulomb : imposed;
+  // Both outcomes are computed and one is selected (no branch, see project_spring); the slip
+  // values use safe operands when sticking (ft2 > 0 whenever it slips).
+  const Vec3 t = f_trial * (1.0 / std::sqrt(stick ? 1.0 : ft2));    // (70)
   const double f_slide = mu_d * std::abs(f_n);
-  out.force = f_slide * t;
-  out.spring = k_t > 0.0 ? -(f_slide / k_t) * t : Vec3{};  // (69) at the dynamic limit
-  out.slipped = true;
-  out.dissipated_power = -dot(out.force, v_t);
+  const Vec3 f_slip = f_slide * t;
+  const double s_slip = k_t > 0.0 ? -f_slide / (k_t > 0.0 ? k_t : 1.0) : 0.0;  // (69), dynamic limit
+  out.force = stick ? f_trial : f_slip;              // stick (68) or slide
+  out.spring = stick ? s_tent : s_slip * t;
+  out.slipped = !stick;
+  out.dissipated_power = stick ? d_t * norm2(v_t) : -dot(f_slip, v_t);
   return out;
 }
 

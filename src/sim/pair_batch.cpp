@@ -17,70 +17,127 @@ namespace {
 constexpr std::size_t kBatch = 64;                  // candidate pairs per batch
 constexpr std::uint32_t kInternal = 0xffffffffu;    // "no cross index"
 
-// One batch: the candidates, then each stage's results (arrays over the batch).
+// One batch: the candidates, then each stage's results, structure-of-arrays so that the stage
+// loops vectorise.
 struct Batch {
   std::size_t count = 0;
   std::uint32_t i[kBatch], j[kBatch];  // members
   std::size_t slot[kBatch];            // pair slot
   std::uint32_t cross[kBatch];         // cross index, or kInternal
   // Stage 1: geometry and kinematics.
-  bool touching[kBatch];
   double overlap[kBatch];              // m, 0 when apart
-  Vec3 normal[kBatch];                 // -, n_ij, from j to i
-  Vec3 vt[kBatch];                     // m/s, tangential relative velocity (61)
+  double nx[kBatch], ny[kBatch], nz[kBatch];     // -, n_ij, from j to i
+  double vtx[kBatch], vty[kBatch], vtz[kBatch];  // m/s, tangential relative velocity (61)
   double vn[kBatch];                   // m/s, normal rate
   double E[kBatch], G[kBatch], r[kBatch], m[kBatch];  // Pa, Pa, m, kg (51)-(53), Mindlin G*
   // Stage 2: normal law.
-  ContactCoefficients cc[kBatch];
-  NormalForce fn[kBatch];
+  double f_el[kBatch];                 // N, elastic Hertz force
+  double fn[kBatch];                   // N, net normal force (clamped at 0)
+  double pn[kBatch];                   // W, normal damping power
+  double kt[kBatch], dtc[kBatch];      // N/m, N s/m
   // Stage 3: tangential law.
-  TangentialResult ft[kBatch];
+  double ftx[kBatch], fty[kBatch], ftz[kBatch];  // N, tangential force on i
+  double sx[kBatch], sy[kBatch], sz[kBatch];     // m, spring for the next step
+  double pt[kBatch];                   // W, tangential dissipation
+  std::uint8_t slip[kBatch];           // 1 when sliding
+  Vec3 normal(std::size_t t) const { return {nx[t], ny[t], nz[t]}; }
+  Vec3 vt(std::size_t t) const { return {vtx[t], vty[t], vtz[t]}; }
 };
 
 // Stage 1 (60)-(62): overlap, normal, relative velocity at the contact point.
 void geometry(const PairPass& q, Batch& b) {
-  for (std::size_t t = 0; t < b.count; ++t) {
+  const std::size_t count = b.count;
+  // 1a. Gather the members' values (indexed loads, scalar), combined where the laws only need
+  //     the combination.
+  double dx[kBatch], dy[kBatch], dz[kBatch];     // m, x_i - x_j
+  double dvx[kBatch], dvy[kBatch], dvz[kBatch];  // m/s, v_i - v_j
+  double wsx[kBatch], wsy[kBatch], wsz[kBatch];  // m/s, R_i w_i + R_j w_j
+  double reach[kBatch];                          // m, R_i + R_j
+  double sc[kBatch], ss[kBatch], sr[kBatch], sm[kBatch];  // sums of the ContactTerms halves
+  for (std::size_t t = 0; t < count; ++t) {
     const std::size_t i = b.i[t], j = b.j[t];
-    const Vec3 d = q.x[i] - q.x[j];
     const double ri = q.radius[i], rj = q.radius[j];
-    const double dist = std::sqrt(norm2(d));
-    const double ov = ri + rj - dist;
-    b.touching[t] = ov > 0.0;
-    b.overlap[t] = ov > 0.0 ? ov : 0.0;
-    // Coincident centres get +z, so nothing becomes NaN.
-    const Vec3 nrm = dist > 0.0 ? d * (1.0 / dist) : Vec3{0.0, 0.0, 1.0};
-    b.normal[t] = nrm;
+    const Vec3 d = q.x[i] - q.x[j], dv = q.v[i] - q.v[j], ws = ri * q.w[i] + rj * q.w[j];
+    dx[t] = d.x, dy[t] = d.y, dz[t] = d.z;
+    dvx[t] = dv.x, dvy[t] = dv.y, dvz[t] = dv.z;
+    wsx[t] = ws.x, wsy[t] = ws.y, wsz[t] = ws.z;
+    reach[t] = ri + rj;
     const ContactTerms& ti = q.terms[i];
     const ContactTerms& tj = q.terms[j];
-    b.E[t] = 1.0 / (ti.compliance + tj.compliance);              // (51)
-    b.G[t] = 1.0 / (ti.shear_compliance + tj.shear_compliance);  // Mindlin G*
-    b.r[t] = 1.0 / (ti.inv_radius + tj.inv_radius);              // (52)
-    b.m[t] = 1.0 / (ti.inv_mass + tj.inv_mass);                  // (53)
+    sc[t] = ti.compliance + tj.compliance;
+    ss[t] = ti.shear_compliance + tj.shear_compliance;
+    sr[t] = ti.inv_radius + tj.inv_radius;
+    sm[t] = ti.inv_mass + tj.inv_mass;
+  }
+  // 1b. The arithmetic, over contiguous arrays (vectorised).
+  for (std::size_t t = 0; t < count; ++t) {
+    const Vec3 d{dx[t], dy[t], dz[t]};
+    const double dist = std::sqrt(norm2(d));
+    const double ov = reach[t] - dist;
+    b.overlap[t] = ov > 0.0 ? ov : 0.0;
+    // Coincident centres get +z, so nothing becomes NaN.
+    const double inv = 1.0 / (dist > 0.0 ? dist : 1.0);
+    const Vec3 nrm = dist > 0.0 ? d * inv : Vec3{0.0, 0.0, 1.0};
+    b.nx[t] = nrm.x;
+    b.ny[t] = nrm.y;
+    b.nz[t] = nrm.z;
+    b.E[t] = 1.0 / sc[t];  // (51)
+    b.G[t] = 1.0 / ss[t];  // Mindlin G*
+    b.r[t] = 1.0 / sr[t];  // (52)
+    b.m[t] = 1.0 / sm[t];  // (53)
     // (60) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
-    const Vec3 vrel = (q.v[i] - q.v[j]) - cross(ri * q.w[i] + rj * q.w[j], nrm);
-    b.vn[t] = dot(vrel, nrm);
-    b.vt[t] = vrel - b.vn[t] * nrm;                              // (61)
+    const Vec3 vrel = Vec3{dvx[t], dvy[t], dvz[t]} - cross(Vec3{wsx[t], wsy[t], wsz[t]}, nrm);
+    const double vn = dot(vrel, nrm);
+    const Vec3 vt = vrel - vn * nrm;  // (61)
+    b.vn[t] = vn;
+    b.vtx[t] = vt.x;
+    b.vty[t] = vt.y;
+    b.vtz[t] = vt.z;
   }
 }
 
 // Stage 2 (49)-(50), (65), (67); an apart candidate (overlap 0) gets zero coefficients.
 void normal_law(const PairPass& q, Batch& b) {
+  const double xi_n = q.law.xi_n, xi_t = q.law.xi_t;
   for (std::size_t t = 0; t < b.count; ++t) {
-    b.cc[t] = contact_coefficients(b.E[t], b.G[t], b.r[t], b.m[t], q.law.xi_n, q.law.xi_t, b.overlap[t]);
-    b.fn[t] = damped_normal_force(b.cc[t].f_el, b.cc[t].d_n, b.vn[t]);
+    const ContactCoefficients cc = contact_coefficients(b.E[t], b.G[t], b.r[t], b.m[t], xi_n, xi_t, b.overlap[t]);
+    const NormalForce fn = damped_normal_force(cc.f_el, cc.d_n, b.vn[t]);
+    b.f_el[t] = cc.f_el;
+    b.fn[t] = fn.magnitude;
+    b.pn[t] = fn.dissipated_power;
+    b.kt[t] = cc.k_t;
+    b.dtc[t] = cc.d_t;
   }
 }
 
 // Stage 3 (57)-(70): the stored spring on the current tangent plane plus the trapezoidal
 // increment (64) (Verlet: phi = 1), Coulomb stick or slip.
 void tangential_law(const PairPass& q, Batch& b) {
+  const double dt = q.dt, phi = q.phi, mu_s = q.law.mu_s, mu_d = q.law.mu_d;
+  // Increment (64) and the imposed stick/slip decisions first, so the main loop has no branch.
+  double dsx[kBatch], dsy[kBatch], dsz[kBatch];  // m
+  double s0x[kBatch], s0y[kBatch], s0z[kBatch];  // m, stored spring
+  SlipDecision decide[kBatch];
   for (std::size_t t = 0; t < b.count; ++t) {
     const std::size_t k = b.slot[t];
-    const Vec3 ds = q.vt0 ? q.dt * ((1.0 - q.phi) * q.vt0[k] + q.phi * b.vt[t]) : (q.dt * q.phi) * b.vt[t];
-    const SlipDecision decide = q.iteration >= 2 ? (q.slipped[k] ? SlipDecision::Slip : SlipDecision::Stick)
-                                                 : SlipDecision::Free;
-    b.ft[t] = tangential_force(project_spring(q.spring[k], b.normal[t]), ds, b.vt[t], b.cc[t].k_t, b.cc[t].d_t,
-                               q.law.mu_s, q.law.mu_d, b.fn[t].magnitude, decide);
+    const Vec3 ds = q.vt0 ? dt * ((1.0 - phi) * q.vt0[k] + phi * b.vt(t)) : (dt * phi) * b.vt(t);
+    dsx[t] = ds.x, dsy[t] = ds.y, dsz[t] = ds.z;
+    const Vec3 s0 = q.spring[k];
+    s0x[t] = s0.x, s0y[t] = s0.y, s0z[t] = s0.z;
+    decide[t] = q.iteration < 2 ? SlipDecision::Free : q.slipped[k] ? SlipDecision::Slip : SlipDecision::Stick;
+  }
+  for (std::size_t t = 0; t < b.count; ++t) {
+    const TangentialResult ft = tangential_force(project_spring({s0x[t], s0y[t], s0z[t]}, b.normal(t)),
+                                                 {dsx[t], dsy[t], dsz[t]}, b.vt(t), b.kt[t], b.dtc[t], mu_s, mu_d,
+                                                 b.fn[t], decide[t]);
+    b.ftx[t] = ft.force.x;
+    b.fty[t] = ft.force.y;
+    b.ftz[t] = ft.force.z;
+    b.sx[t] = ft.spring.x;
+    b.sy[t] = ft.spring.y;
+    b.sz[t] = ft.spring.z;
+    b.pt[t] = ft.dissipated_power;
+    b.slip[t] = ft.slipped;
   }
 }
 
@@ -89,7 +146,7 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
   const bool rolling = q.law.mu_r > 0.0;
   for (std::size_t t = 0; t < b.count; ++t) {
     const std::size_t i = b.i[t], j = b.j[t], k = b.slot[t];
-    if (!b.touching[t]) {  // a candidate within the margin but apart: forget its history
+    if (!(b.overlap[t] > 0.0)) {  // a candidate within the margin but apart: forget its history
       if (q.commit) {
         q.spring[k] = Vec3{};
         if (q.vt0) q.vt0[k] = Vec3{};
@@ -97,24 +154,25 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
       }
       continue;
     }
-    const Vec3& nrm = b.normal[t];
-    const TangentialResult& ft = b.ft[t];
-    const NormalForce& fn = b.fn[t];
-    if (q.iteration == 1) q.slipped[k] = ft.slipped;
+    const Vec3 nrm = b.normal(t);
+    const Vec3 ft{b.ftx[t], b.fty[t], b.ftz[t]};
+    const Vec3 spring{b.sx[t], b.sy[t], b.sz[t]};
+    const bool slipped = b.slip[t] != 0;
+    if (q.iteration == 1) q.slipped[k] = b.slip[t];
     // Rolling resistance against the relative rotation of the step start (the state itself
     // outside the iteration): constant during the iteration (docs/contact_model.md).
     const Vec3 wrel = q.w[i] - q.w[j];
     Vec3 roll{};
     if (rolling)
-      roll = rolling_resistance_torque(q.iteration > 0 ? q.wr0[k] : wrel, q.law.mu_r, b.r[t], fn.magnitude,
+      roll = rolling_resistance_torque(q.iteration > 0 ? q.wr0[k] : wrel, q.law.mu_r, b.r[t], b.fn[t],
                                        rolling_inertia_pair(q.inertia[i], q.inertia[j]), q.dt);
     if (q.commit) {
-      q.spring[k] = ft.spring;
-      if (q.vt0) q.vt0[k] = b.vt[t];
+      q.spring[k] = spring;
+      if (q.vt0) q.vt0[k] = b.vt(t);
       if (q.wr0) q.wr0[k] = wrel;
     }
-    const Vec3 f = fn.magnitude * nrm + ft.force;
-    const Vec3 arm = cross(nrm, ft.force);  // torque r_P x f_t = -R n x f_t on both members (62)
+    const Vec3 f = b.fn[t] * nrm + ft;
+    const Vec3 arm = cross(nrm, ft);  // torque r_P x f_t = -R n x f_t on both members (62)
     if (b.cross[t] == kInternal) {
       q.force[i] += f;
       q.torque[i] += roll - q.radius[i] * arm;
@@ -126,9 +184,9 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
       if (rolling) q.cross_roll[b.cross[t]] = roll;
     }
     out.contacts += 1.0;
-    out.elastic_energy += hertz_energy_from_force(b.cc[t].f_el, b.overlap[t]) + 0.5 * b.cc[t].k_t * norm2(ft.spring);
-    out.damping_power += fn.dissipated_power + (ft.slipped ? 0.0 : ft.dissipated_power);
-    out.friction_power += (ft.slipped ? ft.dissipated_power : 0.0) - dot(roll, wrel);
+    out.elastic_energy += hertz_energy_from_force(b.f_el[t], b.overlap[t]) + 0.5 * b.kt[t] * norm2(spring);
+    out.damping_power += b.pn[t] + (slipped ? 0.0 : b.pt[t]);
+    out.friction_power += (slipped ? b.pt[t] : 0.0) - dot(roll, wrel);
     // Divide only for a contact deeper than the deepest so far.
     const double rmin = std::min(q.radius[i], q.radius[j]);
     if (b.overlap[t] > out.deepest.ratio * rmin) out.deepest = {b.overlap[t] / rmin, q.id[i], q.id[j]};

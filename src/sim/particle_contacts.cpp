@@ -105,6 +105,74 @@ std::size_t ParticleContacts::memory_bytes() const {
          slipped_.capacity() + terms_.capacity() * sizeof(Terms) + block_sums_.capacity() * sizeof(PairBlockSums);
 }
 
+ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborSearch& search) {
+  CarriedHistory h;
+  const VerletList& list = search.pairs();
+  if (spring_.size() != list.num_pairs()) return h;
+  const auto& off = list.offsets();
+  const auto& idx = list.indices();
+  const std::size_t n = list.size();
+  const bool vt = !vt0_.empty(), wr = !wr0_.empty();
+  auto kept = [&](std::size_t k) {
+    return norm2(spring_[k]) > 0.0 || (vt && norm2(vt0_[k]) > 0.0) || (wr && norm2(wr0_[k]) > 0.0);
+  };
+  h.offset.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint32_t c = 0;
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) c += kept(k);
+    h.offset[i + 1] = h.offset[i] + c;
+  }
+  const std::size_t total = h.offset[n];
+  h.second.resize(total);
+  h.spring.resize(total);
+  if (vt) h.vt0.resize(total);
+  if (wr) h.wr0.resize(total);
+  std::size_t c = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
+      if (!kept(k)) continue;
+      h.second[c] = idx[k];
+      h.spring[c] = spring_[k];
+      if (vt) h.vt0[c] = vt0_[k];
+      if (wr) h.wr0[c] = wr0_[k];
+      ++c;
+    }
+  // The slot arrays are rebuilt for the new list; free them now (peak memory).
+  spring_ = {};
+  vt0_ = {};
+  wr0_ = {};
+  slipped_ = {};
+  return h;
+}
+
+void ParticleContacts::restore_history(const NeighborSearch& search, CarriedHistory h,
+                                       const std::vector<std::uint32_t>& old_index) {
+  const VerletList& list = search.pairs();
+  spring_.clear();
+  ensure_history(list.num_pairs());
+  if (h.second.empty()) return;
+  const auto& off = list.offsets();
+  const auto& idx = list.indices();
+  const std::size_t n = list.size();
+  const bool vt = !vt0_.empty() && !h.vt0.empty(), wr = !wr0_.empty() && !h.wr0.empty();
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
+      // The old pair was stored under its smaller old index; the spring acts on that member.
+      const std::uint32_t a = old_index[i], b = old_index[idx[k]];
+      const bool flip = a > b;
+      const std::uint32_t first = flip ? b : a, second = flip ? a : b;
+      if (static_cast<std::size_t>(second) + 1 >= h.offset.size()) continue;  // not in the old list
+      for (std::uint32_t c = h.offset[first]; c < h.offset[first + 1]; ++c) {
+        if (h.second[c] != second) continue;
+        spring_[k] = flip ? -h.spring[c] : h.spring[c];
+        if (vt) vt0_[k] = flip ? -h.vt0[c] : h.vt0[c];
+        if (wr) wr0_[k] = flip ? -h.wr0[c] : h.wr0[c];
+        break;
+      }
+    }
+}
+
 void ParticleContacts::save(BinaryWriter& w, const Particles& p, const NeighborSearch& search) const {
   w.vector(export_history(p, search));
 }

@@ -52,7 +52,18 @@ class ParticleContacts {
   // Adds contact forces and torques to p.force / p.torque; list must be current for p.x.
   PairStats evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req);
 
-  // History of the touching pairs (ids, springs), before a rebuild or reordering ...
+  // The contact history across a neighbour rebuild, keyed by the particles' indices before it:
+  // taken out before the particles are permuted or removed and the list is rebuilt ...
+  struct CarriedHistory {
+    std::vector<std::uint32_t> offset{0};  // [N_old + 1] CSR over the old first member
+    std::vector<std::uint32_t> second;     // [kept] old index of the second member, ascending
+    std::vector<Vec3> spring, vt0, wr0;    // [kept] m, m/s, rad/s (vt0, wr0 empty when unused)
+  };
+  CarriedHistory carry_history(const NeighborSearch& search);
+  // ... and put back onto the rebuilt list; old_index[i] is the old index of particle i.
+  void restore_history(const NeighborSearch& search, CarriedHistory h, const std::vector<std::uint32_t>& old_index);
+
+  // History of the touching pairs (ids, springs), for checkpoints ...
   std::vector<PairHistory> export_history(const Particles& p, const NeighborSearch& search) const;
   // ... and back onto the slots of the rebuilt list (spring sign follows the pair's orientation).
   void import_history(const Particles& p, const NeighborSearch& search, std::vector<PairHistory> h);

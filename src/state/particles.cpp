@@ -18,6 +18,10 @@ void Particles::resize(std::size_t n) {
   for_each_array(*this, [n](auto& a) { a.resize(n); });
 }
 
+void Particles::reserve(std::size_t n) {
+  for_each_array(*this, [n](auto& a) { a.reserve(n); });
+}
+
 void Particles::update_mass(std::size_t i) {
   const double r = radius[i];
   mass[i] = 4.0 / 3.0 * std::numbers::pi * r * r * r * density[i];

@@ -39,6 +39,7 @@ struct Particles {
 
   std::size_t size() const { return id.size(); }
   void resize(std::size_t n);
+  void reserve(std::size_t n);  // capacity for n particles, so add() does not over-allocate
   // Appends one particle; derived mass and inertia are computed from radius and density.
   void add(std::int64_t pid, int mat, double r, double rho, const Vec3& pos, const Vec3& vel);
   // Recomputes mass and inertia of particle i from its radius and density.

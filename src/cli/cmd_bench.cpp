@@ -131,10 +131,12 @@ int bench_command(const BenchArgs& args) {
   for (long k = 0; k < a.relax; ++k) sim.advance(a.dt);
 
   const std::uint64_t rebuilds0 = sim.interactions().stats().rebuilds;
+  const PhaseTimes times0 = sim.interactions().times();
   std::uint64_t evaluations = 0;
   const auto t0 = std::chrono::steady_clock::now();
   for (long k = 0; k < a.steps; ++k) evaluations += static_cast<std::uint64_t>(sim.advance(a.dt).evaluations);
   const auto t1 = std::chrono::steady_clock::now();
+  const PhaseTimes& times1 = sim.interactions().times();
 
   const double seconds = std::chrono::duration<double>(t1 - t0).count();
   const double psteps = static_cast<double>(n) * static_cast<double>(a.steps);
@@ -163,6 +165,16 @@ int bench_command(const BenchArgs& args) {
              coordination, pp_per_particle, pb_per_particle);
   fmt::print("  final kinetic energy       {:.4g} J, top of bed z = {:.6g} m\n", ke, zmax);
   fmt::print("  peak RSS                   {:.1f} MiB\n", static_cast<double>(rss) / 1024.0);
+  // Where the time goes, ns per particle-step: the evaluation's parts, and the rest of the step
+  // (integration, the per-step checks).
+  const auto per = [&](double t1s, double t0s) { return psteps > 0 ? 1e9 * (t1s - t0s) / psteps : 0.0; };
+  const double eval = per(times1.search + times1.fields + times1.pairs + times1.barriers + times1.other,
+                          times0.search + times0.fields + times0.pairs + times0.barriers + times0.other);
+  fmt::print("  ns/particle-step by part   search {:.1f}, fields {:.1f}, pairs {:.1f}, barriers {:.1f}, other {:.1f}, "
+             "integration + checks {:.1f}\n",
+             per(times1.search, times0.search), per(times1.fields, times0.fields), per(times1.pairs, times0.pairs),
+             per(times1.barriers, times0.barriers), per(times1.other, times0.other),
+             psteps > 0 ? 1e9 * seconds / psteps - eval : 0.0);
   fmt::print(
       "BENCH_RESULT code=mpdem integrator={} threads={} particles={} steps={} seconds={:.6f} psteps_per_s={:.6g} "
       "ns_per_pstep={:.4f} evals_per_step={:.4f} rebuilds={} coordination={:.5f} wall_contacts_per_particle={:.5f} "

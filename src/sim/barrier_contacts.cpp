@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/parallel.hpp"
+#include "physics/contact_coefficients.hpp"
 #include "physics/contact_geometry.hpp"
 #include "physics/hertz.hpp"
 #include "physics/rolling.hpp"
@@ -98,11 +99,12 @@ void BarrierContacts::particle_contacts(std::size_t k, Particles& p, const Barri
     const Vec3 vrel = contact_relative_velocity_barrier(p.v[i], p.w[i], rP, b.velocity[e]);
     const double vn = normal_rate(vrel, nrm);
     const Vec3 vt = tangential_part(vrel, nrm);
-    const NormalForce fn = normal_contact_force(E, r, m, law.xi_n, bc.overlap, vn);
     const double G = effective_shear_modulus(shear_modulus(p.young[i], p.poisson[i]), p.poisson[i],
                                              shear_modulus(b.young[e], b.poisson[e]), b.poisson[e]);
-    const double kt = tangential_stiffness(G, r, bc.overlap);
-    const double dtc = tangential_damping_coefficient(law.xi_t, m, kt);
+    // (49)-(50), (65), (67) sharing one sqrt(r* delta).
+    const ContactCoefficients cc = contact_coefficients(E, G, r, m, law.xi_n, law.xi_t, bc.overlap);
+    const NormalForce fn = damped_normal_force(cc.f_el, cc.d_n, vn);
+    const double kt = cc.k_t, dtc = cc.d_t;
     const Vec3 s0 = hist ? project_spring(hist->spring, nrm) : Vec3{};
     const Vec3 vt0 = hist ? hist->vt0 : Vec3{};
     // Later iterations keep the first iteration's stick/slip decision (physics/tangential.hpp).
@@ -125,7 +127,7 @@ void BarrierContacts::particle_contacts(std::size_t k, Particles& p, const Barri
     load[c] = BarrierLoad{-f, bc.point, bc.overlap, el};
     if (req.iteration == 1) first[c] = BarrierFirst{el, slipped};
     acc[0] += 1.0;
-    acc[1] += hertz_elastic_energy(E, r, bc.overlap) + 0.5 * kt * norm2(ft.spring);
+    acc[1] += hertz_energy_from_force(cc.f_el, bc.overlap) + 0.5 * kt * norm2(ft.spring);
     acc[2] += fn.dissipated_power + (ft.slipped ? 0.0 : ft.dissipated_power);
     acc[3] += (ft.slipped ? ft.dissipated_power : 0.0) - dot(roll, p.w[i]);
   }

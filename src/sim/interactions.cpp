@@ -1,6 +1,7 @@
 #include "sim/interactions.hpp"
 
 #include <algorithm>
+#include <chrono>
 
 #include "core/parallel.hpp"
 #include "physics/field_forces.hpp"
@@ -78,16 +79,29 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   // Reordering is safe only at a commit evaluation outside the fixed-point iteration: it is the
   // last thing an integrator does with the state of a step (the trapezoidal rule holds its start
   // state by index during the iteration). Velocity Verlet evaluates only such states.
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
   if (search_->needs_rebuild(p, b)) rebuild(p, b, req.commit && req.iteration == 0);
-
+  const auto t1 = Clock::now();
   start_accumulators(p);
+  const auto t2 = Clock::now();
   if (near_) stats_.near_field_energy = near_->evaluate(p, *search_);
+  const auto t3 = Clock::now();
   const PairStats pp = pp_->evaluate(p, *search_, req);
+  const auto t4 = Clock::now();
   const PairStats pb = pb_->evaluate(p, b, *search_, req);
+  const auto t5 = Clock::now();
   if (heat_) {
     const HeatFlows h = heat_->evaluate(p, b, *search_);
     if (req.commit) commit_heat(h, req);
   }
+  const auto t6 = Clock::now();
+  auto secs = [](Clock::time_point a, Clock::time_point z) { return std::chrono::duration<double>(z - a).count(); };
+  times_.search += secs(t0, t1);
+  times_.fields += secs(t1, t2);
+  times_.pairs += secs(t3, t4);
+  times_.barriers += secs(t4, t5);
+  times_.other += secs(t2, t3) + secs(t5, t6);
 
   stats_.contacts_pp = pp.contacts;
   stats_.contacts_pb = pb.contacts;

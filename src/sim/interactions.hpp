@@ -41,6 +41,16 @@ struct InteractionStats {
   double heat_radiated = 0.0;       // J, radiated by the particles to the surroundings
 };
 
+// Wall time spent per part of the evaluations (s, cumulative; not checkpointed), for the
+// benchmark's breakdown of where a step goes.
+struct PhaseTimes {
+  double search = 0.0;      // rebuild checks and rebuilds (with reordering)
+  double fields = 0.0;      // accumulators reset, field forces
+  double pairs = 0.0;       // particle-particle contacts
+  double barriers = 0.0;    // particle-barrier contacts and element loads
+  double other = 0.0;       // near field, heat
+};
+
 struct OverlapReport;
 class NeighborSearch;
 class ParticleContacts;
@@ -69,6 +79,7 @@ class Interactions {
   void force_rebuild(Particles& p, const Barriers& b, bool reorder);
 
   const InteractionStats& stats() const { return stats_; }
+  const PhaseTimes& times() const { return times_; }
   // Checkpoints: statistics, neighbour lists and contact history.
   void save(BinaryWriter& w, const Particles& p) const;
   void restore(BinaryReader& r, const Particles& p, const Barriers& b);
@@ -87,6 +98,7 @@ class Interactions {
 
   const Model& model_;
   InteractionStats stats_;
+  PhaseTimes times_;
   std::unique_ptr<NeighborSearch> search_;
   std::unique_ptr<ParticleContacts> pp_;
   std::unique_ptr<BarrierContacts> pb_;

@@ -58,7 +58,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
   const std::size_t nb = blocks.num_blocks();
   block_sums_.resize(nb);
-#pragma omp parallel for schedule(dynamic, 1) if (n > kParallelThreshold)
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t b = 0; b < nb; ++b)
     block_sums_[b] = contact_block(q, b * PairBlocks::kBlock, std::min(n, (b + 1) * PairBlocks::kBlock),
                                    blocks.cross_base(b));

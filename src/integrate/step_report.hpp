@@ -4,6 +4,8 @@
 #include <array>
 #include <cstdint>
 
+#include "sim/state_scan.hpp"
+
 namespace mpdem {
 
 enum Field : int { kPosition = 0, kVelocity, kRotation, kAngularVelocity, kTemperature, kFieldCount };
@@ -21,6 +23,9 @@ struct StepReport {
   std::array<double, kFieldCount> last_error{};
   int worst_field = kPosition;           // field with the largest eps_K / TOL
   std::int64_t worst_particle = -1;      // id of the particle with the largest last change there
+  // The health scan of the end state, when the integrator fused it into its last pass.
+  bool scanned = false;
+  StateScan scan;
 };
 
 }  // namespace mpdem

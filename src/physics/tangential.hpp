@@ -81,7 +81,8 @@ inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Ve
   const double limit_s = mu_s * std::abs(f_n);
   const bool coulomb = ft2 <= limit_s * limit_s;                        // (68)
   const bool imposed = (decide == SlipDecision::Stick) | (ft2 == 0.0);  // | : no short circuit
-  const bool stick = decide == SlipDecision::Free ? coulomb : imposed;
+  const bool free = decide == SlipDecision::Free;
+  const bool stick = (free & coulomb) | (!free & imposed);  // bitwise: a select, not a branch
   // Both outcomes are computed and one is selected (no branch, see project_spring); the slip
   // values use safe operands when sticking (ft2 > 0 whenever it slips).
   const Vec3 t = f_trial * (1.0 / std::sqrt(stick ? 1.0 : ft2));    // (70)

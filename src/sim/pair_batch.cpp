@@ -24,6 +24,12 @@ struct Batch {
   std::uint32_t i[kBatch], j[kBatch];  // members
   std::size_t slot[kBatch];            // pair slot
   std::uint32_t cross[kBatch];         // cross index, or kInternal
+  // Stage 1a: the members' values, combined where the laws only need the combination.
+  double dx[kBatch], dy[kBatch], dz[kBatch];     // m, x_i - x_j
+  double dvx[kBatch], dvy[kBatch], dvz[kBatch];  // m/s, v_i - v_j
+  double wsx[kBatch], wsy[kBatch], wsz[kBatch];  // m/s, R_i w_i + R_j w_j
+  double reach[kBatch];                          // m, R_i + R_j
+  double sc[kBatch], ss[kBatch], sr[kBatch], sm[kBatch];  // 1/Pa, 1/Pa, 1/m, 1/kg: sums of ContactTerms
   // Stage 1: geometry and kinematics.
   double overlap[kBatch];              // m, 0 when apart
   double nx[kBatch], ny[kBatch], nz[kBatch];     // -, n_ij, from j to i
@@ -35,6 +41,10 @@ struct Batch {
   double fn[kBatch];                   // N, net normal force (clamped at 0)
   double pn[kBatch];                   // W, normal damping power
   double kt[kBatch], dtc[kBatch];      // N/m, N s/m
+  // Stage 3a: history.
+  double s0x[kBatch], s0y[kBatch], s0z[kBatch];  // m, stored spring
+  double dsx[kBatch], dsy[kBatch], dsz[kBatch];  // m, increment (64)
+  SlipDecision decide[kBatch];
   // Stage 3: tangential law.
   double ftx[kBatch], fty[kBatch], ftz[kBatch];  // N, tangential force on i
   double sx[kBatch], sy[kBatch], sz[kBatch];     // m, spring for the next step
@@ -44,36 +54,36 @@ struct Batch {
   Vec3 vt(std::size_t t) const { return {vtx[t], vty[t], vtz[t]}; }
 };
 
-// Stage 1 (60)-(62): overlap, normal, relative velocity at the contact point.
-void geometry(const PairPass& q, Batch& b) {
+// Stage 1a: the members' values for the batch (indexed loads). Kept scalar: vectorised, the
+// compiler emulates the gathers element by element, which is slower than plain loads.
+__attribute__((optimize("no-tree-vectorize"))) void gather_members(const PairPass& q, Batch& b) {
   const std::size_t count = b.count;
-  // 1a. Gather the members' values (indexed loads, scalar), combined where the laws only need
-  //     the combination.
-  double dx[kBatch], dy[kBatch], dz[kBatch];     // m, x_i - x_j
-  double dvx[kBatch], dvy[kBatch], dvz[kBatch];  // m/s, v_i - v_j
-  double wsx[kBatch], wsy[kBatch], wsz[kBatch];  // m/s, R_i w_i + R_j w_j
-  double reach[kBatch];                          // m, R_i + R_j
-  double sc[kBatch], ss[kBatch], sr[kBatch], sm[kBatch];  // sums of the ContactTerms halves
   for (std::size_t t = 0; t < count; ++t) {
     const std::size_t i = b.i[t], j = b.j[t];
     const double ri = q.radius[i], rj = q.radius[j];
     const Vec3 d = q.x[i] - q.x[j], dv = q.v[i] - q.v[j], ws = ri * q.w[i] + rj * q.w[j];
-    dx[t] = d.x, dy[t] = d.y, dz[t] = d.z;
-    dvx[t] = dv.x, dvy[t] = dv.y, dvz[t] = dv.z;
-    wsx[t] = ws.x, wsy[t] = ws.y, wsz[t] = ws.z;
-    reach[t] = ri + rj;
+    b.dx[t] = d.x, b.dy[t] = d.y, b.dz[t] = d.z;
+    b.dvx[t] = dv.x, b.dvy[t] = dv.y, b.dvz[t] = dv.z;
+    b.wsx[t] = ws.x, b.wsy[t] = ws.y, b.wsz[t] = ws.z;
+    b.reach[t] = ri + rj;
     const ContactTerms& ti = q.terms[i];
     const ContactTerms& tj = q.terms[j];
-    sc[t] = ti.compliance + tj.compliance;
-    ss[t] = ti.shear_compliance + tj.shear_compliance;
-    sr[t] = ti.inv_radius + tj.inv_radius;
-    sm[t] = ti.inv_mass + tj.inv_mass;
+    b.sc[t] = ti.compliance + tj.compliance;
+    b.ss[t] = ti.shear_compliance + tj.shear_compliance;
+    b.sr[t] = ti.inv_radius + tj.inv_radius;
+    b.sm[t] = ti.inv_mass + tj.inv_mass;
   }
+}
+
+// Stage 1 (60)-(62): overlap, normal, relative velocity at the contact point.
+void geometry(const PairPass& q, Batch& b) {
+  const std::size_t count = b.count;
+  gather_members(q, b);
   // 1b. The arithmetic, over contiguous arrays (vectorised).
   for (std::size_t t = 0; t < count; ++t) {
-    const Vec3 d{dx[t], dy[t], dz[t]};
+    const Vec3 d{b.dx[t], b.dy[t], b.dz[t]};
     const double dist = std::sqrt(norm2(d));
-    const double ov = reach[t] - dist;
+    const double ov = b.reach[t] - dist;
     b.overlap[t] = ov > 0.0 ? ov : 0.0;
     // Coincident centres get +z, so nothing becomes NaN.
     const double inv = 1.0 / (dist > 0.0 ? dist : 1.0);
@@ -81,12 +91,12 @@ void geometry(const PairPass& q, Batch& b) {
     b.nx[t] = nrm.x;
     b.ny[t] = nrm.y;
     b.nz[t] = nrm.z;
-    b.E[t] = 1.0 / sc[t];  // (51)
-    b.G[t] = 1.0 / ss[t];  // Mindlin G*
-    b.r[t] = 1.0 / sr[t];  // (52)
-    b.m[t] = 1.0 / sm[t];  // (53)
+    b.E[t] = 1.0 / b.sc[t];  // (51)
+    b.G[t] = 1.0 / b.ss[t];  // Mindlin G*
+    b.r[t] = 1.0 / b.sr[t];  // (52)
+    b.m[t] = 1.0 / b.sm[t];  // (53)
     // (60) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
-    const Vec3 vrel = Vec3{dvx[t], dvy[t], dvz[t]} - cross(Vec3{wsx[t], wsy[t], wsz[t]}, nrm);
+    const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
     const double vn = dot(vrel, nrm);
     const Vec3 vt = vrel - vn * nrm;  // (61)
     b.vn[t] = vn;
@@ -112,24 +122,27 @@ void normal_law(const PairPass& q, Batch& b) {
 
 // Stage 3 (57)-(70): the stored spring on the current tangent plane plus the trapezoidal
 // increment (64) (Verlet: phi = 1), Coulomb stick or slip.
-void tangential_law(const PairPass& q, Batch& b) {
-  const double dt = q.dt, phi = q.phi, mu_s = q.law.mu_s, mu_d = q.law.mu_d;
-  // Increment (64) and the imposed stick/slip decisions first, so the main loop has no branch.
-  double dsx[kBatch], dsy[kBatch], dsz[kBatch];  // m
-  double s0x[kBatch], s0y[kBatch], s0z[kBatch];  // m, stored spring
-  SlipDecision decide[kBatch];
+// Stage 3a: each slot's stored spring, the increment (64) and the imposed stick/slip decision
+// (indexed loads, scalar like gather_members), so that the law's loop has no branch.
+__attribute__((optimize("no-tree-vectorize"))) void gather_history(const PairPass& q, Batch& b) {
+  const double dt = q.dt, phi = q.phi;
   for (std::size_t t = 0; t < b.count; ++t) {
     const std::size_t k = b.slot[t];
     const Vec3 ds = q.vt0 ? dt * ((1.0 - phi) * q.vt0[k] + phi * b.vt(t)) : (dt * phi) * b.vt(t);
-    dsx[t] = ds.x, dsy[t] = ds.y, dsz[t] = ds.z;
+    b.dsx[t] = ds.x, b.dsy[t] = ds.y, b.dsz[t] = ds.z;
     const Vec3 s0 = q.spring[k];
-    s0x[t] = s0.x, s0y[t] = s0.y, s0z[t] = s0.z;
-    decide[t] = q.iteration < 2 ? SlipDecision::Free : q.slipped[k] ? SlipDecision::Slip : SlipDecision::Stick;
+    b.s0x[t] = s0.x, b.s0y[t] = s0.y, b.s0z[t] = s0.z;
+    b.decide[t] = q.iteration < 2 ? SlipDecision::Free : q.slipped[k] ? SlipDecision::Slip : SlipDecision::Stick;
   }
+}
+
+void tangential_law(const PairPass& q, Batch& b) {
+  const double mu_s = q.law.mu_s, mu_d = q.law.mu_d;
+  gather_history(q, b);
   for (std::size_t t = 0; t < b.count; ++t) {
-    const TangentialResult ft = tangential_force(project_spring({s0x[t], s0y[t], s0z[t]}, b.normal(t)),
-                                                 {dsx[t], dsy[t], dsz[t]}, b.vt(t), b.kt[t], b.dtc[t], mu_s, mu_d,
-                                                 b.fn[t], decide[t]);
+    const TangentialResult ft = tangential_force(project_spring({b.s0x[t], b.s0y[t], b.s0z[t]}, b.normal(t)),
+                                                 {b.dsx[t], b.dsy[t], b.dsz[t]}, b.vt(t), b.kt[t], b.dtc[t], mu_s,
+                                                 mu_d, b.fn[t], b.decide[t]);
     b.ftx[t] = ft.force.x;
     b.fty[t] = ft.force.y;
     b.ftz[t] = ft.force.z;
@@ -231,10 +244,15 @@ PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, s
       b.cross[b.count] = cross;
       b.count += cand;
       if (q.commit) {
-        const double keep = cand ? 1.0 : 0.0;
-        q.spring[k] *= keep;
-        if (q.vt0) q.vt0[k] *= keep;
-        if (q.wr0) q.wr0[k] *= keep;
+        // Only a contact that just opened has history to forget: test without a data-dependent
+        // branch (about a third of the slots are apart) and store only then (rare).
+        const Vec3& s0 = q.spring[k];
+        const bool held = (s0.x != 0.0) | (s0.y != 0.0) | (s0.z != 0.0) | (q.vt0 != nullptr) | (q.wr0 != nullptr);
+        if (!cand & held) {
+          q.spring[k] = Vec3{};
+          if (q.vt0) q.vt0[k] = Vec3{};
+          if (q.wr0) q.wr0[k] = Vec3{};
+        }
       }
       if (b.count == kBatch) run(q, b, out);
     }

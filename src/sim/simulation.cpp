@@ -60,7 +60,7 @@ StepReport Simulation::advance(double dt) {
   evaluations_ += static_cast<std::uint64_t>(rep.evaluations);
   time_ += dt;
   ++steps_;
-  check_state();
+  check_state(rep);
   return rep;
 }
 
@@ -78,7 +78,7 @@ StepReport Simulation::advance_adaptive(double limit) {
       ++steps_;
       // A step shortened to land on `limit` says nothing about the step to take next.
       if (h == dt_) dt_ = std::clamp(factor * h, prm.time.dt_min, prm.time.dt_max);
-      check_state();
+      check_state(rep);
       return rep;
     }
     if (h <= prm.time.dt_min * (1.0 + 1e-12))
@@ -147,10 +147,11 @@ void Simulation::check_overlap() {
       100.0 * r.ratio, between, steps_, time_, 100.0 * limit));
 }
 
-void Simulation::check_state() {
+void Simulation::check_state(const StepReport& rep) {
   Particles& p = scene_.particles;
   const Params& prm = scene_.model.params;
-  const StateScan scan = scan_state(p, prm.fields, prm.domain);  // one pass; culprits searched only if needed
+  // One pass (or none, when the integrator fused it into its own); culprits searched only if needed.
+  const StateScan scan = rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain);
   if (scan.nonfinite > 0)
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (!isfinite(p.x[i]) || !isfinite(p.v[i]) || !isfinite(p.w[i]) || !std::isfinite(p.T[i]))

@@ -64,7 +64,7 @@ class Simulation {
   const Model& model() const { return scene_.model; }
 
  private:
-  void check_state();                // NaN / infinity, energy jumps, domain exits
+  void check_state(const StepReport& rep);  // NaN / infinity, energy jumps, domain exits
   void check_energy(const StateScan& s);
   void check_overlap();
   void remove_outside();             // domain.on_exit: stop or remove

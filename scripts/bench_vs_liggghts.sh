@@ -11,6 +11,7 @@
 #   RELAX      untimed steps first (default 1000)
 #   TRAP_STEPS timed steps of the trapezoidal runs (default: STEPS; it costs ~5 evaluations a step,
 #              so a shorter window keeps the script's run time reasonable - the bed is static)
+#   TRAP_RELAX untimed steps of the trapezoidal runs (default: RELAX)
 #   SHARED     folder with the reference inputs (default: ../shared/bench beside the repository)
 #   NO_INSTALL=1  do not apt-get install missing LIGGGHTS / Open MPI / GNU time
 # Exit status 1 when the two codes' contact counts differ by more than 2 %.
@@ -60,46 +61,53 @@ for bed in "${BEDS[@]}"; do
   n=$(awk '$2 == "atoms" {print $1; exit}' "$data")
   echo "== bed $bed: $n particles, $RELAX untimed + $steps timed steps, $RUNS runs per configuration =="
 
-  declare -A NS=() RSS=() CONT=() REB=() EVAL=()
+  declare -A NS=() RSS=() CONT=() REB=() EVAL=() SAMPLES=() MEMS=()
+  # Runs interleave the codes (LIGGGHTS, mpdem Verlet, mpdem trapezoidal, then again), so that
+  # a slow phase of a shared machine hits all of them alike.
   for th in $THREADS; do
-    # LIGGGHTS: "Loop time" of the timed run (the run after TIMED_RUN_BEGIN); one MPI rank per "thread".
-    lt=(); lm=(); lc=""
     for r in $(seq 1 "$RUNS"); do
+      # LIGGGHTS: "Loop time" of the timed run; one MPI rank per thread. Memory: every rank's own
+      # peak RSS (GNU time around each rank), summed - the whole job's memory, like one mpdem process.
       log="$WORK/liggghts_${bed}_np${th}_r$r"
+      rm -f "$log".rank*
       cmd=(liggghts -in "$SHARED/liggghts_bench.in" -log "$log.log" -var data "$data" -var nrelax "$RELAX"
            -var nsteps "$steps" -var dt 4e-6)
-      [ "$th" -gt 1 ] && cmd=(mpirun -np "$th" --allow-run-as-root --oversubscribe "${cmd[@]}")
-      (cd "$WORK" && OMP_NUM_THREADS=1 /usr/bin/time -v "${cmd[@]}" > "$log.out" 2> "$log.time")
+      wrap=(sh -c '/usr/bin/time -f "%M" -o "$0.rank${OMPI_COMM_WORLD_RANK:-0}" "$@"' "$log")
+      if [ "$th" -gt 1 ]; then
+        (cd "$WORK" && OMP_NUM_THREADS=1 mpirun -np "$th" --allow-run-as-root --oversubscribe "${wrap[@]}" "${cmd[@]}" > "$log.out" 2>&1)
+      else
+        (cd "$WORK" && OMP_NUM_THREADS=1 "${wrap[@]}" "${cmd[@]}" > "$log.out" 2>&1)
+      fi
       secs=$(awk '/TIMED_RUN_BEGIN/ {t=1} t && /^Loop time of/ {print $4; exit}' "$log.out")
-      lt+=("$(awk -v s="$secs" -v n="$n" -v k="$steps" 'BEGIN {printf "%.3f", 1e9 * s / (n * k)}')")
-      lm+=("$(peak_kib "$log.time")")
-      lc=$(grep '^BENCH_STATE' "$log.out" | field contacts_per_particle)
-      echo "  liggghts np=$th run $r: ${secs} s timed, ${lt[-1]} ns/particle-step, contacts/particle $lc"
-    done
-    NS[liggghts,$th]=$(echo "${lt[*]}" | median); RSS[liggghts,$th]=$(echo "${lm[*]}" | median)
-    CONT[liggghts,$th]=$lc; REB[liggghts,$th]="-"; EVAL[liggghts,$th]=1
+      SAMPLES[liggghts,$th]+=" $(awk -v s="$secs" -v n="$n" -v k="$steps" 'BEGIN {printf "%.3f", 1e9 * s / (n * k)}')"
+      MEMS[liggghts,$th]+=" $(cat "$log".rank* | awk '{s += $1} END {print s}')"
+      CONT[liggghts,$th]=$(grep '^BENCH_STATE' "$log.out" | field contacts_per_particle)
+      REB[liggghts,$th]="-"; EVAL[liggghts,$th]=1
+      echo "  liggghts np=$th run $r: ${secs} s timed, contacts/particle ${CONT[liggghts,$th]}"
 
-    for integ in verlet trapezoidal; do
-      mt=(); mm=(); mc=""
-      for r in $(seq 1 "$RUNS"); do
+      for integ in verlet trapezoidal; do
         log="$WORK/mpdem_${bed}_${integ}_t${th}_r$r"
-        k=$steps; [ "$integ" = trapezoidal ] && k=${TRAP_STEPS:-$steps}
-        /usr/bin/time -v "$MPDEM" bench "$data" --integrator "$integ" --phi 0.5 --threads "$th" --steps "$k" \
-          --relax "$RELAX" > "$log.out" 2> "$log.time"
+        k=$steps; rx=$RELAX
+        [ "$integ" = trapezoidal ] && k=${TRAP_STEPS:-$steps} && rx=${TRAP_RELAX:-$RELAX}
+        OMP_PROC_BIND=close /usr/bin/time -v "$MPDEM" bench "$data" --integrator "$integ" --phi 0.5 --threads "$th" \
+          --steps "$k" --relax "$rx" > "$log.out" 2> "$log.time"
         line=$(grep '^BENCH_RESULT' "$log.out")
-        mt+=("$(echo "$line" | field ns_per_pstep)")
-        mm+=("$(peak_kib "$log.time")")
-        mc=$(echo "$line" | field coordination)
+        SAMPLES[$integ,$th]+=" $(echo "$line" | field ns_per_pstep)"
+        MEMS[$integ,$th]+=" $(peak_kib "$log.time")"
+        CONT[$integ,$th]=$(echo "$line" | field coordination)
         REB[$integ,$th]=$(echo "$line" | field rebuilds)
         EVAL[$integ,$th]=$(echo "$line" | field evals_per_step)
-        echo "  mpdem $integ threads=$th run $r: ${mt[-1]} ns/particle-step, contacts/particle $mc, rebuilds ${REB[$integ,$th]}"
+        echo "  mpdem $integ threads=$th run $r: $(echo "$line" | field ns_per_pstep) ns/particle-step, contacts/particle ${CONT[$integ,$th]}, rebuilds ${REB[$integ,$th]}"
       done
-      NS[$integ,$th]=$(echo "${mt[*]}" | median); RSS[$integ,$th]=$(echo "${mm[*]}" | median); CONT[$integ,$th]=$mc
+    done
+    for code in liggghts verlet trapezoidal; do
+      NS[$code,$th]=$(echo "${SAMPLES[$code,$th]}" | median)
+      RSS[$code,$th]=$(echo "${MEMS[$code,$th]}" | median)
     done
   done
 
   echo
-  echo "Bed $bed ($n particles, $steps timed steps (trapezoidal ${TRAP_STEPS:-$steps}); medians of $RUNS runs; peak RSS per process, from /usr/bin/time -v)"
+  echo "Bed $bed ($n particles, $RELAX + $steps steps (trapezoidal ${TRAP_RELAX:-$RELAX} + ${TRAP_STEPS:-$steps}); medians of $RUNS interleaved runs; peak RSS of the job (LIGGGHTS: sum over its ranks))"
   printf '| %-22s | %7s | %9s | %12s | %6s | %8s | %9s | %8s | %14s |\n' code threads ns/p-step "p-steps/s" \
     evals rebuilds contacts/p "RSS MiB" "mpdem/LIGGGHTS"
   printf '|%s|\n' "------------------------|---------|-----------|--------------|--------|----------|-----------|----------|----------------"
@@ -124,6 +132,21 @@ for bed in "${BEDS[@]}"; do
       case "$ok" in *FAIL) status=1 ;; esac
     done
   done
-  unset NS RSS CONT REB EVAL
+  # The issue's targets (Verlet): >= 2x LIGGGHTS's particle-steps/s at every thread count, a
+  # 2-thread speed-up >= 1.7, peak memory <= LIGGGHTS's.
+  echo
+  for th in $THREADS; do
+    awk -v m="${NS[verlet,$th]}" -v l="${NS[liggghts,$th]}" -v th="$th" 'BEGIN {
+      printf "target speed, %s thread(s): mpdem verlet %.2fx LIGGGHTS (>= 2 wanted): %s\n", th, l / m, (l / m >= 2 ? "met" : "NOT met") }'
+    awk -v m="${RSS[verlet,$th]}" -v l="${RSS[liggghts,$th]}" -v th="$th" 'BEGIN {
+      printf "target memory, %s thread(s): mpdem %.1f MiB vs LIGGGHTS %.1f MiB: %s\n", th, m / 1024, l / 1024, (m <= l ? "met" : "NOT met") }'
+  done
+  set -- $THREADS
+  if [ $# -ge 2 ]; then
+    awk -v a="${NS[verlet,$1]}" -v b="${NS[verlet,$2]}" -v la="${NS[liggghts,$1]}" -v lb="${NS[liggghts,$2]}"       -v t1="$1" -v t2="$2" 'BEGIN {
+      printf "speed-up %s -> %s threads: mpdem verlet %.2fx (>= 1.7 wanted: %s), LIGGGHTS %.2fx\n", t1, t2, a / b,
+             (a / b >= 1.7 ? "met" : "NOT met"), la / lb }'
+  fi
+  unset NS RSS CONT REB EVAL SAMPLES MEMS
 done
 exit $status

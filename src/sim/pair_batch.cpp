@@ -61,11 +61,9 @@ __attribute__((optimize("no-tree-vectorize"))) void gather_members(const PairPas
   for (std::size_t t = 0; t < count; ++t) {
     const std::size_t i = b.i[t], j = b.j[t];
     const double ri = q.radius[i], rj = q.radius[j];
-    const Vec3 d = q.x[i] - q.x[j], dv = q.v[i] - q.v[j], ws = ri * q.w[i] + rj * q.w[j];
-    b.dx[t] = d.x, b.dy[t] = d.y, b.dz[t] = d.z;
+    const Vec3 dv = q.v[i] - q.v[j], ws = ri * q.w[i] + rj * q.w[j];  // (x_i - x_j, R_i + R_j: pass 0)
     b.dvx[t] = dv.x, b.dvy[t] = dv.y, b.dvz[t] = dv.z;
     b.wsx[t] = ws.x, b.wsy[t] = ws.y, b.wsz[t] = ws.z;
-    b.reach[t] = ri + rj;
     const ContactTerms& ti = q.terms[i];
     const ContactTerms& tj = q.terms[j];
     b.sc[t] = ti.compliance + tj.compliance;
@@ -237,11 +235,15 @@ PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, s
       // (overlap > 0) to stage 1. Branch-free: every slot is written, the count advances only
       // for a candidate. A commit forgets the history of the others (x 0).
       const double reach = ri + q.radius[j];
-      const bool cand = norm2(xi - q.x[j]) <= reach * reach * (1.0 + 1e-9);
-      b.i[b.count] = static_cast<std::uint32_t>(i);
-      b.j[b.count] = j;
-      b.slot[b.count] = k;
-      b.cross[b.count] = cross;
+      const Vec3 d = xi - q.x[j];
+      const bool cand = norm2(d) <= reach * reach * (1.0 + 1e-9);
+      const std::size_t t = b.count;
+      b.i[t] = static_cast<std::uint32_t>(i);
+      b.j[t] = j;
+      b.slot[t] = k;
+      b.cross[t] = cross;
+      b.dx[t] = d.x, b.dy[t] = d.y, b.dz[t] = d.z;  // kept for stage 1
+      b.reach[t] = reach;
       b.count += cand;
       if (q.commit) {
         // Only a contact that just opened has history to forget: test without a data-dependent

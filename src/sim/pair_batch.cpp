@@ -10,6 +10,14 @@
 #include "physics/rolling.hpp"
 #include "physics/tangential.hpp"
 
+// GCC vectorises the indexed loads of the gather stages into element-by-element gathers,
+// slower than plain loads; other compilers get no attribute.
+#if defined(__GNUC__) && !defined(__clang__)
+#define MPDEM_SCALAR_LOOPS __attribute__((optimize("no-tree-vectorize")))
+#else
+#define MPDEM_SCALAR_LOOPS
+#endif
+
 namespace mpdem {
 
 namespace {
@@ -56,7 +64,7 @@ struct Batch {
 
 // Stage 1a: the members' values for the batch (indexed loads). Kept scalar: vectorised, the
 // compiler emulates the gathers element by element, which is slower than plain loads.
-__attribute__((optimize("no-tree-vectorize"))) void gather_members(const PairPass& q, Batch& b) {
+MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
   const std::size_t count = b.count;
   for (std::size_t t = 0; t < count; ++t) {
     const std::size_t i = b.i[t], j = b.j[t];
@@ -122,7 +130,7 @@ void normal_law(const PairPass& q, Batch& b) {
 // increment (64) (Verlet: phi = 1), Coulomb stick or slip.
 // Stage 3a: each slot's stored spring, the increment (64) and the imposed stick/slip decision
 // (indexed loads, scalar like gather_members), so that the law's loop has no branch.
-__attribute__((optimize("no-tree-vectorize"))) void gather_history(const PairPass& q, Batch& b) {
+MPDEM_SCALAR_LOOPS void gather_history(const PairPass& q, Batch& b) {
   const double dt = q.dt, phi = q.phi;
   for (std::size_t t = 0; t < b.count; ++t) {
     const std::size_t k = b.slot[t];

@@ -71,6 +71,10 @@ struct TangentialResult {
 // evaluation decides afresh (docs/contact_model.md).
 enum class SlipDecision { Free, Stick, Slip };
 
+// c ? a : b per component: a select the compiler vectorises (a ternary on whole structs becomes a
+// branch).
+inline Vec3 pick(bool c, const Vec3& a, const Vec3& b) { return {c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z}; }
+
 inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Vec3& v_t, double k_t,
                                          double d_t, double mu_s, double mu_d, double f_n,
                                          SlipDecision decide = SlipDecision::Free) {
@@ -89,8 +93,8 @@ inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Ve
   const double f_slide = mu_d * std::abs(f_n);
   const Vec3 f_slip = f_slide * t;
   const double s_slip = k_t > 0.0 ? -f_slide / (k_t > 0.0 ? k_t : 1.0) : 0.0;  // (69), dynamic limit
-  out.force = stick ? f_trial : f_slip;              // stick (68) or slide
-  out.spring = stick ? s_tent : s_slip * t;
+  out.force = pick(stick, f_trial, f_slip);          // stick (68) or slide
+  out.spring = pick(stick, s_tent, s_slip * t);
   out.slipped = !stick;
   out.dissipated_power = stick ? d_t * norm2(v_t) : -dot(f_slip, v_t);
   return out;

@@ -58,6 +58,12 @@ struct Batch {
   double sx[kBatch], sy[kBatch], sz[kBatch];     // m, spring for the next step
   double pt[kBatch];                   // W, tangential dissipation
   std::uint8_t slip[kBatch];           // 1 when sliding
+  // Stage 4a: results.
+  double fx[kBatch], fy[kBatch], fz[kBatch];     // N, force on i
+  double ax[kBatch], ay[kBatch], az[kBatch];     // N, n x f_t
+  double energy[kBatch];               // J, elastic energy of the contact
+  double damping[kBatch];              // W, dashpot power
+  double friction[kBatch];             // W, sliding power
   Vec3 normal(std::size_t t) const { return {nx[t], ny[t], nz[t]}; }
   Vec3 vt(std::size_t t) const { return {vtx[t], vty[t], vtz[t]}; }
 };
@@ -161,6 +167,24 @@ void tangential_law(const PairPass& q, Batch& b) {
 }
 
 // Stage 4: history, rolling resistance (71), and the sums, in slot order.
+// Stage 4a: each contact's force, torque arm and energy terms (vectorised).
+void results(Batch& b) {
+  for (std::size_t t = 0; t < b.count; ++t) {
+    const Vec3 nrm = b.normal(t);
+    const Vec3 ft{b.ftx[t], b.fty[t], b.ftz[t]};
+    const Vec3 f = b.fn[t] * nrm + ft;
+    const Vec3 arm = cross(nrm, ft);  // torque r_P x f_t = -R n x f_t on both members (62)
+    b.fx[t] = f.x, b.fy[t] = f.y, b.fz[t] = f.z;
+    b.ax[t] = arm.x, b.ay[t] = arm.y, b.az[t] = arm.z;
+    const bool slipped = b.slip[t] != 0;
+    b.energy[t] = hertz_energy_from_force(b.f_el[t], b.overlap[t]) + 0.5 * b.kt[t] * (b.sx[t] * b.sx[t] +
+                  b.sy[t] * b.sy[t] + b.sz[t] * b.sz[t]);
+    b.damping[t] = b.pn[t] + (slipped ? 0.0 : b.pt[t]);
+    b.friction[t] = slipped ? b.pt[t] : 0.0;
+  }
+}
+
+// Stage 4b: history, rolling resistance (71), the forces and the sums, in slot order.
 void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
   const bool rolling = q.law.mu_r > 0.0;
   for (std::size_t t = 0; t < b.count; ++t) {
@@ -173,25 +197,21 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
       }
       continue;
     }
-    const Vec3 nrm = b.normal(t);
-    const Vec3 ft{b.ftx[t], b.fty[t], b.ftz[t]};
-    const Vec3 spring{b.sx[t], b.sy[t], b.sz[t]};
-    const bool slipped = b.slip[t] != 0;
     if (q.iteration == 1) q.slipped[k] = b.slip[t];
     // Rolling resistance against the relative rotation of the step start (the state itself
     // outside the iteration): constant during the iteration (docs/contact_model.md).
-    const Vec3 wrel = q.w[i] - q.w[j];
-    Vec3 roll{};
+    Vec3 roll{}, wrel{};
+    if (rolling || q.wr0) wrel = q.w[i] - q.w[j];
     if (rolling)
       roll = rolling_resistance_torque(q.iteration > 0 ? q.wr0[k] : wrel, q.law.mu_r, b.r[t], b.fn[t],
                                        rolling_inertia_pair(q.inertia[i], q.inertia[j]), q.dt);
     if (q.commit) {
-      q.spring[k] = spring;
+      q.spring[k] = {b.sx[t], b.sy[t], b.sz[t]};
       if (q.vt0) q.vt0[k] = b.vt(t);
       if (q.wr0) q.wr0[k] = wrel;
     }
-    const Vec3 f = b.fn[t] * nrm + ft;
-    const Vec3 arm = cross(nrm, ft);  // torque r_P x f_t = -R n x f_t on both members (62)
+    const Vec3 f{b.fx[t], b.fy[t], b.fz[t]};
+    const Vec3 arm{b.ax[t], b.ay[t], b.az[t]};
     if (b.cross[t] == kInternal) {
       q.force[i] += f;
       q.torque[i] += roll - q.radius[i] * arm;
@@ -203,9 +223,9 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
       if (rolling) q.cross_roll[b.cross[t]] = roll;
     }
     out.contacts += 1.0;
-    out.elastic_energy += hertz_energy_from_force(b.f_el[t], b.overlap[t]) + 0.5 * b.kt[t] * norm2(spring);
-    out.damping_power += b.pn[t] + (slipped ? 0.0 : b.pt[t]);
-    out.friction_power += (slipped ? b.pt[t] : 0.0) - dot(roll, wrel);
+    out.elastic_energy += b.energy[t];
+    out.damping_power += b.damping[t];
+    out.friction_power += b.friction[t] - dot(roll, wrel);
     // Divide only for a contact deeper than the deepest so far.
     const double rmin = std::min(q.radius[i], q.radius[j]);
     if (b.overlap[t] > out.deepest.ratio * rmin) out.deepest = {b.overlap[t] / rmin, q.id[i], q.id[j]};
@@ -216,6 +236,7 @@ void run(const PairPass& q, Batch& b, PairBlockSums& out) {
   geometry(q, b);
   normal_law(q, b);
   tangential_law(q, b);
+  results(b);
   apply(q, b, out);
   b.count = 0;
 }

@@ -1,16 +1,14 @@
 #include "sim/energy.hpp"
 
-#include "core/deterministic_sum.hpp"
+#include "sim/state_scan.hpp"
 
 namespace mpdem {
 
 ParticleEnergy particle_energy(const Particles& p, const Vec3& gravity) {
-  const auto s = deterministic_sums<3>(p.size(), [&](std::size_t i, std::array<double, 3>& acc) {
-    acc[0] += 0.5 * p.mass[i] * norm2(p.v[i]);
-    acc[1] += 0.5 * p.inertia[i] * norm2(p.w[i]);
-    acc[2] -= p.mass[i] * dot(gravity, p.x[i]);
-  });
-  return {s[0], s[1], s[2]};
+  // The same sums as the per-step health scan (one definition of the energies).
+  FieldParams fields;
+  fields.gravity = gravity;
+  return scan_state(p, fields, DomainParams{}).energy;
 }
 
 }  // namespace mpdem

@@ -42,22 +42,15 @@ void NeighborSearch::build(std::span<const Vec3> x, std::span<const double> radi
   barrier_offsets_build_ = b.offset;
   blocks_.build(list_);
   if (!want_incoming_) {
-    first_ = {};
     in_offset_ = {};
     in_slot_ = {};
     return;
   }
   const std::size_t n = x.size();
   // Transposed index: counting sort of the slots by their second member keeps them ascending.
-  const auto& off = list_.offsets();
   const auto& idx = list_.indices();
-  first_.resize(idx.size());
   in_offset_.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
-      first_[k] = static_cast<std::uint32_t>(i);
-      ++in_offset_[idx[k] + 1];
-    }
+  for (std::size_t k = 0; k < idx.size(); ++k) ++in_offset_[idx[k] + 1];
   for (std::size_t j = 0; j < n; ++j) in_offset_[j + 1] += in_offset_[j];
   in_slot_.resize(idx.size());
   std::vector<std::size_t> fill(in_offset_.begin(), in_offset_.end() - 1);

@@ -29,7 +29,7 @@ class NeighborSearch {
   // Permutation sorting the particles along a space-filling curve (for cache locality).
   std::vector<std::uint32_t> spatial_order(const Particles& p) const;
 
-  // The transposed pair index (incoming, first_of) costs 8 bytes per pair; it is built only for
+  // The transposed pair index (incoming) costs 4 bytes per pair; it is built only for
   // the laws that gather per-slot values (heat conduction, near field). Takes effect at the
   // next rebuild.
   void set_incoming_index(bool on) { want_incoming_ = on; }
@@ -42,8 +42,6 @@ class NeighborSearch {
   std::span<const std::uint32_t> incoming(std::size_t j) const {
     return {in_slot_.data() + in_offset_[j], in_offset_[j + 1] - in_offset_[j]};
   }
-  // First member of pair slot k (set_incoming_index(true) only).
-  std::uint32_t first_of(std::size_t k) const { return first_[k]; }
   std::uint64_t rebuilds() const { return rebuilds_; }
   // Changes with every build (also a checkpoint restore): the particle order may have changed,
   // so caches indexed by particle must be refreshed.
@@ -60,7 +58,6 @@ class NeighborSearch {
   BarrierBroadphase broad_;
   PairBlocks blocks_;
   bool want_incoming_ = false;
-  std::vector<std::uint32_t> first_;       // [pairs] first member of each slot
   std::vector<std::size_t> in_offset_;     // [N+1] CSR offsets of the transposed index
   std::vector<std::uint32_t> in_slot_;     // [pairs] slots, grouped by second member
 

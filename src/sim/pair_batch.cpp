@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "neighbor/pair_blocks.hpp"
 #include "physics/contact_coefficients.hpp"

@@ -2,13 +2,16 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <type_traits>
 
 #include "core/parallel.hpp"
 #include "physics/tangential.hpp"
 #include "sim/pair_batch.hpp"
 
 namespace mpdem {
+
+bool ParticleContacts::holds_history(std::size_t k) const {
+  return norm2(spring_[k]) > 0.0 || (!vt0_.empty() && norm2(vt0_[k]) > 0.0) || (!wr0_.empty() && norm2(wr0_[k]) > 0.0);
+}
 
 void ParticleContacts::ensure_history(std::size_t pairs) {
   if (spring_.size() == pairs) return;  // first use: no history yet
@@ -53,14 +56,13 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
                    spring_.data(), vt0_.empty() ? nullptr : vt0_.data(), wr0_.empty() ? nullptr : wr0_.data(),
                    slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_arm_.data(),
                    rolling ? cross_roll_.data() : nullptr, law_, req.dt, req.phi, req.iteration, req.commit, n};
-  static_assert(std::is_same_v<ParticleContacts::Terms, ContactTerms>);
 
   // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
   const std::size_t nb = blocks.num_blocks();
   block_sums_.resize(nb);
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t b = 0; b < nb; ++b)
-    block_sums_[b] = contact_block(q, b * PairBlocks::kBlock, std::min(n, (b + 1) * PairBlocks::kBlock),
+    block_sums_[b] = contact_block(q, b * PairBlocks::kBlock, PairBlocks::block_end(b * PairBlocks::kBlock, n),
                                    blocks.cross_base(b));
 
   // 2. Cross pairs, per member in a fixed order (own slots, then incoming).
@@ -113,13 +115,10 @@ ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborS
   const auto& idx = list.indices();
   const std::size_t n = list.size();
   const bool vt = !vt0_.empty(), wr = !wr0_.empty();
-  auto kept = [&](std::size_t k) {
-    return norm2(spring_[k]) > 0.0 || (vt && norm2(vt0_[k]) > 0.0) || (wr && norm2(wr0_[k]) > 0.0);
-  };
   h.offset.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
     std::uint32_t c = 0;
-    for (std::size_t k = off[i]; k < off[i + 1]; ++k) c += kept(k);
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) c += holds_history(k);
     h.offset[i + 1] = h.offset[i] + c;
   }
   const std::size_t total = h.offset[n];
@@ -130,7 +129,7 @@ ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborS
   std::size_t c = 0;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
-      if (!kept(k)) continue;
+      if (!holds_history(k)) continue;
       h.second[c] = idx[k];
       h.spring[c] = spring_[k];
       if (vt) h.vt0[c] = vt0_[k];
@@ -189,11 +188,9 @@ std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, co
   const auto& idx = list.indices();
   const bool vt = !vt0_.empty(), wr = !wr0_.empty();
   for (std::size_t i = 0; i < list.size(); ++i)
-    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
-      const Vec3 v0 = vt ? vt0_[k] : Vec3{}, w0 = wr ? wr0_[k] : Vec3{};
-      if (norm2(spring_[k]) > 0.0 || norm2(v0) > 0.0 || norm2(w0) > 0.0)
-        h.push_back({p.id[i], p.id[idx[k]], spring_[k], v0, w0});
-    }
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k)
+      if (holds_history(k))
+        h.push_back({p.id[i], p.id[idx[k]], spring_[k], vt ? vt0_[k] : Vec3{}, wr ? wr0_[k] : Vec3{}});
   return h;
 }
 

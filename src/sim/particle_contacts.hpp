@@ -83,6 +83,7 @@ class ParticleContacts {
 
  private:
   void ensure_history(std::size_t pairs);
+  bool holds_history(std::size_t k) const;  // slot k has a spring, vt0 or wr0 to keep
   void refresh_terms(const Particles& p, std::uint64_t generation);
 
   ContactModel law_;

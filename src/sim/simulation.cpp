@@ -154,7 +154,7 @@ void Simulation::check_state(const StepReport& rep) {
   const StateScan scan = rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain);
   if (scan.nonfinite > 0)
     for (std::size_t i = 0; i < p.size(); ++i) {
-      if (!isfinite(p.x[i]) || !isfinite(p.v[i]) || !isfinite(p.w[i]) || !std::isfinite(p.T[i]))
+      if (!finite_state(p, i))
         throw RunError(fmt::format("non-finite state of particle id {} at step {} (t = {:.9g} s): x = ({}, {}, {}), "
                                    "v = ({}, {}, {}). The run is unstable; reduce time.dt.",
                                    p.id[i], steps_, time_, p.x[i].x, p.x[i].y, p.x[i].z, p.v[i].x, p.v[i].y,

@@ -19,6 +19,11 @@ inline bool inside_domain(const DomainParams& d, const Vec3& x) {
                         x.z <= d.max.z);
 }
 
+// True when particle i's position, velocity, spin and temperature are all finite.
+inline bool finite_state(const Particles& p, std::size_t i) {
+  return isfinite(p.x[i]) && isfinite(p.v[i]) && isfinite(p.w[i]) && std::isfinite(p.T[i]);
+}
+
 struct StateScan {
   ParticleEnergy energy;        // J, kinetic, rotational, gravitational
   double electric = 0.0;        // J, potential in the uniform electric field, -sum q E.x
@@ -38,8 +43,7 @@ inline void scan_particle(const Particles& p, std::size_t i, const FieldParams& 
   acc[1] += 0.5 * p.inertia[i] * norm2(p.w[i]);
   acc[2] -= p.mass[i] * dot(fields.gravity, p.x[i]);
   if (norm2(fields.electric) > 0.0) acc[3] -= p.charge[i] * dot(fields.electric, p.x[i]);  // else not read
-  const bool finite = isfinite(p.x[i]) && isfinite(p.v[i]) && isfinite(p.w[i]) && std::isfinite(p.T[i]);
-  acc[4] += finite ? 0.0 : 1.0;
+  acc[4] += finite_state(p, i) ? 0.0 : 1.0;
   acc[5] += inside_domain(domain, p.x[i]) ? 0.0 : 1.0;
 }
 inline StateScan scan_from_sums(const std::array<double, kScanSums>& s) {

@@ -34,7 +34,7 @@ VerletList random_list(std::size_t n, unsigned seed) {
   return list;
 }
 
-TEST(PairBlocks, EveryCrossPairHasBothMembersAndInternalPairsStayInTheirBlock) {
+TEST(PairBlocks, CrossPairsAreNumberedInSlotOrderAndListedAtTheirSecondMember) {
   const std::size_t n = 3000;
   const VerletList list = random_list(n, 3);
   PairBlocks blocks;
@@ -68,35 +68,26 @@ TEST(PairBlocks, EveryCrossPairHasBothMembersAndInternalPairsStayInTheirBlock) {
     base += per_block[b];
   }
 
-  // Each cross index appears exactly once as first member (at its first particle) and once as
-  // second member (at its second particle); own entries come first, each group ascending.
-  std::vector<int> as_first(cross.size(), 0), as_second(cross.size(), 0);
+  // Each cross index appears exactly once, at its second member, ascending per member; every
+  // slot knows its first member.
+  std::vector<int> seen(cross.size(), 0);
   const auto& members = blocks.cross_particles();
   for (std::size_t m = 0; m < members.size(); ++m) {
-    long last_first = -1, last_second = -1;
-    bool in_second = false;
-    for (std::uint32_t e : blocks.entries(m)) {
-      const std::size_t c = e >> 1;
+    EXPECT_TRUE(m == 0 || members[m - 1] < members[m]);
+    long last = -1;
+    for (std::uint32_t c : blocks.entries(m)) {
       ASSERT_LT(c, cross.size());
-      if (e & 1u) {
-        in_second = true;
-        EXPECT_EQ(cross[c].second, members[m]);
-        EXPECT_GT(static_cast<long>(c), last_second);
-        last_second = static_cast<long>(c);
-        ++as_second[c];
-      } else {
-        EXPECT_FALSE(in_second) << "own cross slots precede the incoming ones";
-        EXPECT_EQ(cross[c].first, members[m]);
-        EXPECT_GT(static_cast<long>(c), last_first);
-        last_first = static_cast<long>(c);
-        ++as_first[c];
-      }
+      EXPECT_EQ(cross[c].second, members[m]);
+      EXPECT_GT(static_cast<long>(c), last);
+      last = static_cast<long>(c);
+      ++seen[c];
     }
   }
-  for (std::size_t c = 0; c < cross.size(); ++c) {
-    EXPECT_EQ(as_first[c], 1) << c;
-    EXPECT_EQ(as_second[c], 1) << c;
-  }
+  for (std::size_t c = 0; c < cross.size(); ++c) EXPECT_EQ(seen[c], 1) << c;
+  const auto& first = blocks.first_members();
+  ASSERT_EQ(first.size(), idx.size());
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) ASSERT_EQ(first[k], i) << k;
 }
 
 TEST(PairBlocks, SmallSetsHaveNoCrossPairs) {

@@ -44,28 +44,38 @@ Vec3 rodrigues_from_rotation_vector(const Vec3& theta);
 // Orientation after the incremental rotation with rotation vector theta (fixed frame), composed
 // after q and renormalised (139); equal to composing the quaternion of the increment's rescaled
 // Rodrigues vector, computed directly from theta's angle and axis.
-inline Quat rotate_by_increment(const Quat& q, const Vec3& theta) {
-  // The increment's unit quaternion (cos(a/2), sin(a/2) theta/a) is what
-  // quat_from_rodrigues(rodrigues_from_rotation_vector(theta)) gives, without its tan, square
-  // roots and divisions; per particle per step, so it matters. Series below 1e-4 rad (terms of
-  // order a^4 are below round-off there) also avoid 0/0 at rest.
-  const double a2 = norm2(theta);
-  double c = 0.0, s = 0.0;  // cos(a/2), sin(a/2)/a
-  if (a2 < 1e-8) {
-    c = 1.0 - 0.125 * a2;
-    s = 0.5 - a2 * (1.0 / 48.0);
-  } else {
-    const double a = std::sqrt(a2);
-    c = std::cos(0.5 * a);
-    s = std::sin(0.5 * a) / a;
-  }
-  const Quat r = quat_multiply({c, s * theta.x, s * theta.y, s * theta.z}, q);
-  // Renormalised so that round-off does not accumulate over millions of steps. |r|^2 = 1 + e
-  // with e of the order of round-off (a product of unit quaternions): one Newton step for
-  // 1/sqrt(1 + e), 1 - e/2, is exact to O(e^2) without a square root or division.
+//
+// Split in two so that the integrators' per-particle loops vectorise: below kSeriesAngle2 (rad^2)
+// the increment's quaternion is a short series (branch-free, rotate_by_small_increment); above,
+// cos and sin (rotate_by_increment), which loops call for the rare particles that spin that fast.
+// Both give exactly what the one function gives.
+inline constexpr double kSeriesAngle2 = 1e-8;  // rad^2: terms of order a^4 are below round-off
+
+// Renormalised so that round-off does not accumulate over millions of steps. |r|^2 = 1 + e
+// with e of the order of round-off (a product of unit quaternions): one Newton step for
+// 1/sqrt(1 + e), 1 - e/2, is exact to O(e^2) without a square root or division.
+inline Quat renormalized(const Quat& r) {
   const double n2 = r.w * r.w + r.x * r.x + r.y * r.y + r.z * r.z;
   const double inv = std::abs(n2 - 1.0) < 1e-6 ? 1.5 - 0.5 * n2 : 1.0 / std::sqrt(n2);
   return {r.w * inv, r.x * inv, r.y * inv, r.z * inv};
+}
+
+// rotate_by_increment for |theta|^2 < kSeriesAngle2 (the caller checks).
+inline Quat rotate_by_small_increment(const Quat& q, const Vec3& theta) {
+  const double a2 = norm2(theta);
+  const double c = 1.0 - 0.125 * a2, s = 0.5 - a2 * (1.0 / 48.0);  // cos(a/2), sin(a/2)/a
+  return renormalized(quat_multiply({c, s * theta.x, s * theta.y, s * theta.z}, q));
+}
+
+inline Quat rotate_by_increment(const Quat& q, const Vec3& theta) {
+  // The increment's unit quaternion (cos(a/2), sin(a/2) theta/a) is what
+  // quat_from_rodrigues(rodrigues_from_rotation_vector(theta)) gives, without its tan, square
+  // roots and divisions; per particle per step, so it matters. The series also avoids 0/0 at rest.
+  const double a2 = norm2(theta);
+  if (a2 < kSeriesAngle2) return rotate_by_small_increment(q, theta);
+  const double a = std::sqrt(a2);
+  const double c = std::cos(0.5 * a), s = std::sin(0.5 * a) / a;
+  return renormalized(quat_multiply({c, s * theta.x, s * theta.y, s * theta.z}, q));
 }
 
 Mat3 mat_multiply(const Mat3& a, const Mat3& b);

@@ -4,14 +4,13 @@
 // depend on the number of threads.
 //
 // Block b holds particles [b kBlock, (b+1) kBlock). A pair (i, j), i < j, is *internal* when j is
-// in i's block: one thread processes the whole block in index order, so it may add to both
-// members, and every particle's sum has the same order for any thread count. The other pairs
-// are *cross* pairs: since the neighbours of i are ascending, they are the tail of i's slot
-// range. A cross pair's result goes to a buffer at its cross index (numbered in slot order,
-// block by block), and a second pass adds the buffer to both members in a fixed order (the
-// particle's own cross slots, then those where it is the second member, each ascending).
-// With the particles in space-filling-curve order (reordered at rebuilds) most pairs are
-// internal.
+// in i's block, else a *cross* pair. One thread processes a whole block in slot order and adds
+// each pair's result straight to its first member i (always in the block) and, for an internal
+// pair, to j; so every particle's sum has the same order for any thread count. A cross pair's
+// share for j goes to a buffer at its cross index (numbered in slot order, block by block; they
+// are the tail of i's ascending slot range), and a second pass adds the buffer to each second
+// member in ascending cross index. With the particles in space-filling-curve order (reordered
+// at rebuilds) most pairs are internal.
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -37,9 +36,12 @@ class PairBlocks {
   }
   // First cross index of block b.
   std::size_t cross_base(std::size_t b) const { return cross_base_[b]; }
+  // First member of every slot of the list: a block's slots are then one flat loop, without
+  // the hard-to-predict exit of a per-particle loop of 0-8 neighbours.
+  const std::vector<std::uint32_t>& first_members() const { return first_; }
 
-  // Particles that are members of cross pairs, ascending; entries(m) are the cross indices of
-  // the m-th of them, each shifted left by one, with bit 0 set when it is the second member.
+  // Particles that are the second member of cross pairs, ascending; entries(m) are the cross
+  // indices of the m-th of them, ascending.
   const std::vector<std::uint32_t>& cross_particles() const { return particle_; }
   std::span<const std::uint32_t> entries(std::size_t m) const {
     return {entry_.data() + offset_[m], offset_[m + 1] - offset_[m]};
@@ -48,9 +50,10 @@ class PairBlocks {
 
  private:
   std::vector<std::size_t> cross_base_{0};  // [blocks + 1] cross indices before each block
-  std::vector<std::uint32_t> particle_;     // [members] particles with cross pairs
+  std::vector<std::uint32_t> particle_;     // [members] second members of cross pairs
   std::vector<std::uint32_t> offset_{0};    // [members + 1] CSR offsets into entry_
-  std::vector<std::uint32_t> entry_;        // [2 cross] (cross index << 1) | second-member bit
+  std::vector<std::uint32_t> entry_;        // [cross] cross indices
+  std::vector<std::uint32_t> first_;        // [pairs] first member of each slot
 };
 
 }  // namespace mpdem

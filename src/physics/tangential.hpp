@@ -6,6 +6,7 @@
 // r_Pj x (-f_t)); `f_n` is the magnitude of the net normal force |f_n| (N) after the clamp;
 // v_t is the tangential relative velocity of i with respect to j at the contact point (m/s).
 #include <cmath>
+#include <cstdint>
 
 #include "core/vec3.hpp"
 
@@ -69,7 +70,10 @@ struct TangentialResult {
 // mu_s > mu_d the force jumps at the decision, and a map with a jump has no fixed point (the
 // iterates would alternate); with the decision fixed the map is continuous. The commit
 // evaluation decides afresh (docs/contact_model.md).
-enum class SlipDecision { Free, Stick, Slip };
+// Eight bytes, the width of the doubles it is used with, so that the pair kernel's batch loops
+// vectorise with one lane width (a narrower type makes the compiler pick 32-lane iterations and
+// a long scalar remainder).
+enum class SlipDecision : std::int64_t { Free, Stick, Slip };
 
 // c ? a : b per component: a select the compiler vectorises (a ternary on whole structs becomes a
 // branch).

@@ -86,6 +86,7 @@ class Interactions {
   double skin() const;
   const NeighborSearch& search() const { return *search_; }
   const ParticleContacts& particle_contacts() const { return *pp_; }
+  ParticleContacts& particle_contacts() { return *pp_; }
   // The deepest particle-particle or particle-barrier contact of the last evaluation.
   OverlapReport max_overlap(const Particles& p, const Barriers& b) const;
   // Evaluations in which the convection fit's air speed clamp (20 m/s) engaged.

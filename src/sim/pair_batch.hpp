@@ -52,25 +52,31 @@ struct PairPass {
   const ContactTerms* __restrict terms;      // [N]
   const std::size_t* __restrict off;         // [N+1] half-list CSR offsets
   const std::uint32_t* __restrict idx;       // [pairs] second members
+  const std::uint32_t* __restrict first;     // [pairs] first members
   Vec3* __restrict force;                    // [N] N, accumulated
   Vec3* __restrict torque;                   // [N] N m, accumulated
   Vec3* __restrict spring;                   // [pairs] m, committed spring (updated at commits)
   Vec3* __restrict vt0;                      // [pairs] m/s step-start tangential velocity, or null
   Vec3* __restrict wr0;                      // [pairs] rad/s step-start w_i - w_j, or null
   std::uint8_t* __restrict slipped;          // [pairs] first iteration's slip, or null
-  Vec3* __restrict cross_force;              // [cross] N, force on the first member
-  Vec3* __restrict cross_arm;                // [cross] N, n x f_t
-  Vec3* __restrict cross_roll;               // [cross] N m, rolling torque on the first member, or null
+  Vec3* __restrict cross_force;              // [cross] N, force on the second member
+  Vec3* __restrict cross_torque;             // [cross] N m, torque on the second member
   ContactModel law;
   double dt = 0.0;                           // s
   double phi = 1.0;                          // -
   int iteration = 0;
   bool commit = false;
   std::size_t n = 0;                         // particles
+  std::size_t pairs = 0;                     // list slots
+  bool vector_select = true;                 // AVX-512 candidate selection, when built in (kVectorSelect)
 };
 
+// True when the build has the AVX-512 candidate selection (bitwise the same as the scalar one).
+extern const bool kVectorSelect;
+
 // Evaluates the pairs whose first member is in [lo, hi), one PairBlocks block; its cross pairs
-// are numbered from cross_first on.
-PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t cross_first);
+// are numbered [cross_first, cross_last).
+PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t cross_first,
+                            std::size_t cross_last);
 
 }  // namespace mpdem

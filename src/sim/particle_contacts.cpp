@@ -43,19 +43,16 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   const std::size_t n = p.size();
   ensure_history(list.num_pairs());
   slipped_.resize(step_start_ ? list.num_pairs() : 0);
-  const bool rolling = law_.mu_r > 0.0;
   cross_force_.resize(blocks.num_cross());
-  cross_arm_.resize(blocks.num_cross());
-  cross_roll_.resize(rolling ? blocks.num_cross() : 0);
+  cross_torque_.resize(blocks.num_cross());
 
   // Constant properties: refreshed only when the particles may have been reordered or changed.
   if (terms_.size() != n || terms_generation_ != search.generation()) refresh_terms(p, search.generation());
 
   const PairPass q{p.x.data(), p.v.data(), p.w.data(), p.radius.data(), p.inertia.data(), p.id.data(),
-                   terms_.data(), list.offsets().data(), list.indices().data(), p.force.data(), p.torque.data(),
+                   terms_.data(), list.offsets().data(), list.indices().data(), blocks.first_members().data(), p.force.data(), p.torque.data(),
                    spring_.data(), vt0_.empty() ? nullptr : vt0_.data(), wr0_.empty() ? nullptr : wr0_.data(),
-                   slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_arm_.data(),
-                   rolling ? cross_roll_.data() : nullptr, law_, req.dt, req.phi, req.iteration, req.commit, n};
+                   slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_torque_.data(), law_, req.dt, req.phi, req.iteration, req.commit, n, list.num_pairs(), vector_select_};
 
   // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
   const std::size_t nb = blocks.num_blocks();
@@ -63,29 +60,19 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t b = 0; b < nb; ++b)
     block_sums_[b] = contact_block(q, b * PairBlocks::kBlock, PairBlocks::block_end(b * PairBlocks::kBlock, n),
-                                   blocks.cross_base(b));
+                                   blocks.cross_base(b), blocks.cross_base(b + 1));
 
-  // 2. Cross pairs, per member in a fixed order (own slots, then incoming).
+  // 2. The second members' shares of the cross pairs, each in ascending cross index.
   const auto& members = blocks.cross_particles();
 #pragma omp parallel for schedule(static) if (members.size() > kParallelThreshold)
   for (std::size_t mb = 0; mb < members.size(); ++mb) {
-    const std::size_t a = members[mb];
-    const double ra = p.radius[a];
     Vec3 f{}, t{};
-    for (std::uint32_t e : blocks.entries(mb)) {
-      const std::size_t c = e >> 1;
-      const bool second = (e & 1u) != 0;
-      const Vec3 roll = rolling ? cross_roll_[c] : Vec3{};
-      if (second) {
-        f -= cross_force_[c];
-        t -= roll + ra * cross_arm_[c];
-      } else {
-        f += cross_force_[c];
-        t += roll - ra * cross_arm_[c];
-      }
+    for (std::uint32_t c : blocks.entries(mb)) {
+      f += cross_force_[c];
+      t += cross_torque_[c];
     }
-    p.force[a] += f;
-    p.torque[a] += t;
+    p.force[members[mb]] += f;
+    p.torque[members[mb]] += t;
   }
 
   // 3. Totals in block order (independent of the thread count).
@@ -103,7 +90,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
 
 std::size_t ParticleContacts::memory_bytes() const {
   return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() +
-          cross_arm_.capacity() + cross_roll_.capacity()) * sizeof(Vec3) +
+          cross_torque_.capacity()) * sizeof(Vec3) +
          slipped_.capacity() + terms_.capacity() * sizeof(Terms) + block_sums_.capacity() * sizeof(PairBlockSums);
 }
 

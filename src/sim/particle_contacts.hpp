@@ -78,6 +78,8 @@ class ParticleContacts {
   // For tests: the committed spring of the pair (i, j), or zero when none.
   Vec3 spring_between(const NeighborSearch& search, std::size_t i, std::size_t j) const;
   std::size_t memory_bytes() const;
+  // For tests: choose the scalar candidate selection even when the AVX-512 one is built in.
+  void use_vector_select(bool on) { vector_select_ = on; }
 
   using Terms = ContactTerms;  // per-particle halves of (51)-(53), sim/pair_batch.hpp
 
@@ -93,14 +95,14 @@ class ParticleContacts {
   std::vector<Vec3> vt0_;            // m/s, tangential velocity at the step start (step_start)
   std::vector<Vec3> wr0_;            // rad/s, w_first - w_second at the step start (step_start, mu_r > 0)
   std::vector<std::uint8_t> slipped_;  // stick (0) / slip (1) of the first iteration (step_start)
-  // Per cross pair [PairBlocks::num_cross()], added to both members after the block pass:
-  std::vector<Vec3> cross_force_;    // N, force on the first member
-  std::vector<Vec3> cross_arm_;      // N, n x f_t: the tangential torque on a member is -R arm (62)
-  std::vector<Vec3> cross_roll_;     // N m, rolling torque on the first member (mu_r > 0)
+  // Per cross pair [PairBlocks::num_cross()], the second member's share, added after the block pass:
+  std::vector<Vec3> cross_force_;    // N
+  std::vector<Vec3> cross_torque_;   // N m
   std::vector<Terms> terms_;         // [N], from the particles' constant properties
   std::uint64_t terms_generation_ = 0;  // NeighborSearch::generation() they were computed at
   std::vector<PairBlockSums> block_sums_;  // [blocks]
   OverlapReport deepest_;
+  bool vector_select_ = true;
 };
 
 }  // namespace mpdem

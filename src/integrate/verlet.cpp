@@ -88,7 +88,7 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
         // A block at a time: the kick vectorises, and the scan then reads what is still in cache.
         kick_range(p.v.data(), p.w.data(), p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(), lo, hi,
                    half, rotation);
-        for (std::size_t i = lo; i < hi; ++i) scan_particle(p, i, fields, domain, acc);
+        scan_range(p, lo, hi, fields, domain, acc);
       }));
   rep.scanned = true;
   rep.evaluations = 1;

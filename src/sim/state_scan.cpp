@@ -4,10 +4,59 @@
 
 namespace mpdem {
 
+namespace {
+
+constexpr std::size_t kLanes = 8;
+
+// Particle i's terms of the scan into lane l; with plain pointers, so that the loop over a
+// vector's lanes vectorises. The charges are read only with an electric field.
+template <bool kElectric>
+void scan_range_lanes(const Vec3* __restrict x, const Vec3* __restrict v, const Vec3* __restrict w,
+                      const double* __restrict m, const double* __restrict I, const double* __restrict q,
+                      const double* __restrict T, std::size_t lo, std::size_t hi, const FieldParams& fields,
+                      const DomainParams& domain, double (&lane)[kScanSums][kLanes]) {
+  const Vec3 g = fields.gravity, E = fields.electric;
+  const DomainParams d = domain;
+  const auto add = [&](std::size_t i, std::size_t l) {
+    lane[0][l] += 0.5 * m[i] * norm2(v[i]);
+    lane[1][l] += 0.5 * I[i] * norm2(w[i]);
+    lane[2][l] -= m[i] * dot(g, x[i]);
+    if constexpr (kElectric) lane[3][l] -= q[i] * dot(E, x[i]);
+    // finite_state and inside_domain, with & for && (no branch).
+    const auto fin = [](const Vec3& a) { return std::isfinite(a.x) & std::isfinite(a.y) & std::isfinite(a.z); };
+    const bool finite = fin(x[i]) & fin(v[i]) & fin(w[i]) & std::isfinite(T[i]);
+    const Vec3& c = x[i];
+    const bool inside = (!d.bounded) | ((c.x >= d.min.x) & (c.x <= d.max.x) & (c.y >= d.min.y) & (c.y <= d.max.y) &
+                                      (c.z >= d.min.z) & (c.z <= d.max.z));
+    lane[4][l] += finite ? 0.0 : 1.0;
+    lane[5][l] += inside ? 0.0 : 1.0;
+  };
+  std::size_t i = lo;
+  for (; i + kLanes <= hi; i += kLanes)
+    for (std::size_t l = 0; l < kLanes; ++l) add(i + l, l);
+  for (std::size_t l = 0; i < hi; ++i, ++l) add(i, l);
+}
+
+}  // namespace
+
+void scan_range(const Particles& p, std::size_t lo, std::size_t hi, const FieldParams& fields,
+                const DomainParams& domain, std::array<double, kScanSums>& acc) {
+  double lane[kScanSums][kLanes] = {};
+  if (norm2(fields.electric) > 0.0)
+    scan_range_lanes<true>(p.x.data(), p.v.data(), p.w.data(), p.mass.data(), p.inertia.data(), p.charge.data(),
+                           p.T.data(), lo, hi, fields, domain, lane);
+  else
+    scan_range_lanes<false>(p.x.data(), p.v.data(), p.w.data(), p.mass.data(), p.inertia.data(), p.charge.data(),
+                            p.T.data(), lo, hi, fields, domain, lane);
+  for (int k = 0; k < kScanSums; ++k)
+    for (std::size_t l = 0; l < kLanes; ++l) acc[k] += lane[k][l];
+}
+
 StateScan scan_state(const Particles& p, const FieldParams& fields, const DomainParams& domain) {
-  return scan_from_sums(deterministic_sums<kScanSums>(p.size(), [&](std::size_t i, std::array<double, kScanSums>& acc) {
-    scan_particle(p, i, fields, domain, acc);
-  }));
+  return scan_from_sums(deterministic_block_sums<kScanSums>(
+      p.size(), [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums>& acc) {
+        scan_range(p, lo, hi, fields, domain, acc);
+      }));
 }
 
 }  // namespace mpdem

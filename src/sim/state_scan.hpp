@@ -33,19 +33,15 @@ struct StateScan {
 
 StateScan scan_state(const Particles& p, const FieldParams& fields, const DomainParams& domain);
 
-// Particle i's share of the scan, accumulated into acc (the sums in StateScan order); for
-// integrators that fuse the scan into their last pass over the particles (one pass less of
-// memory traffic per step), with deterministic_sums<kScanSums> as in scan_state().
-inline constexpr int kScanSums = 6;
-inline void scan_particle(const Particles& p, std::size_t i, const FieldParams& fields, const DomainParams& domain,
-                          std::array<double, kScanSums>& acc) {
-  acc[0] += 0.5 * p.mass[i] * norm2(p.v[i]);
-  acc[1] += 0.5 * p.inertia[i] * norm2(p.w[i]);
-  acc[2] -= p.mass[i] * dot(fields.gravity, p.x[i]);
-  if (norm2(fields.electric) > 0.0) acc[3] -= p.charge[i] * dot(fields.electric, p.x[i]);  // else not read
-  acc[4] += finite_state(p, i) ? 0.0 : 1.0;
-  acc[5] += inside_domain(domain, p.x[i]) ? 0.0 : 1.0;
-}
+inline constexpr int kScanSums = 6;  // kinetic, rotational, potential, electric, non-finite, outside
+
+// The scan of particles [lo, hi) added to acc (the sums in StateScan order), summed in 8
+// interleaved lanes (a fixed order, so still independent of the thread count) so that the loop
+// vectorises. Integrators fuse it into their last pass over a block of particles (one pass less
+// of memory traffic per step), with deterministic_block_sums<kScanSums> as in scan_state().
+void scan_range(const Particles& p, std::size_t lo, std::size_t hi, const FieldParams& fields,
+                const DomainParams& domain, std::array<double, kScanSums>& acc);
+
 inline StateScan scan_from_sums(const std::array<double, kScanSums>& s) {
   return {{s[0], s[1], s[2]}, s[3], static_cast<std::size_t>(s[4]), static_cast<std::size_t>(s[5])};
 }

@@ -162,6 +162,29 @@ TEST(Checkpoint, CorruptOrForeignFileIsAClearError) {
   fs::remove_all(dir);
 }
 
+TEST(Checkpoint, OtherFormatVersionIsRefusedNamingTheFormat) {
+  const fs::path dir = test::fresh_dir("checkpoint_version");
+  Scene s = granular_scene(false);
+  Simulation sim(s, RunOptions{{}, false, false});
+  advance(sim, false, 5);
+  sim.write_checkpoint(dir / "ck.bin");
+  std::string bytes = test::slurp(dir / "ck.bin");
+  ASSERT_EQ(bytes.substr(0, 7), "MPDEMCK");
+  bytes[7] = '1';  // a file of the format before the per-index barrier history
+  test::write_text(dir / "old.bin", bytes);
+  Scene s2 = granular_scene(false);
+  Simulation sim2(s2, RunOptions{{}, false, false});
+  try {
+    sim2.resume_from(dir / "old.bin");
+    FAIL() << "an old-format checkpoint was accepted";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("old.bin"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("checkpoint format 1"), std::string::npos) << msg;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(Checkpoint, KilledBetweenWriteAndRenameLeavesNoTruncatedFile) {
   const fs::path dir = test::fresh_dir("killed_write");
   const fs::path target = dir / "particles_000001.vtu";

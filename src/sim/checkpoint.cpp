@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 
 #include <cstring>
+#include <string>
 #include <fstream>
 #include <sstream>
 
@@ -17,7 +18,9 @@
 namespace mpdem {
 
 namespace {
-constexpr char kMagic[8] = {'M', 'P', 'D', 'E', 'M', 'C', 'K', '1'};
+// The last byte is the format version: 2 since the barrier history is kept per particle index
+// (session 2). Older files are refused with a message that says so.
+constexpr char kMagic[8] = {'M', 'P', 'D', 'E', 'M', 'C', 'K', '2'};
 
 template <class F>
 void for_each_particle_array(Particles& p, F&& f) {
@@ -60,6 +63,9 @@ void Simulation::resume_from(const std::filesystem::path& file) {
   try {
     BinaryReader r(bytes.data(), bytes.size());
     const auto magic = r.value<std::array<char, 8>>();
+    if (std::memcmp(magic.data(), kMagic, 7) == 0 && magic[7] != kMagic[7])
+      throw std::runtime_error(std::string("it has checkpoint format ") + magic[7] + ", this mpdem reads format " +
+                               kMagic[7] + " only (written by another mpdem version); start the run again from its scene");
     if (std::memcmp(magic.data(), kMagic, 8) != 0) throw std::runtime_error("not an mpdem checkpoint");
     if (r.value<std::uint64_t>() != scene_.barriers.size() || r.value<std::uint64_t>() != scene_.model.materials.size())
       throw std::runtime_error("it was written for a scene with other barriers or materials");

@@ -680,5 +680,49 @@ TEST(BarrierContacts, OutputBufferIsReusedWithoutReallocation) {
   }
 }
 
+// The per-evaluation triangles (current_triangle, as BarrierContacts uses them) give bit for bit
+// the contacts of on-the-spot detection: faces, edges and vertices of convex and concave meshes,
+// spheres inside and outside, and a moved mesh.
+TEST(BarrierContacts, PrecomputedTrianglesGiveIdenticalContacts) {
+  Mesh sphere = geodesic_sphere();
+  Mesh box = cube();
+  Mesh moving;
+  moving.law.a = {0.01, -0.02, 0.5};  // m/s
+  add_grid(moving, {-0.4, -0.4, 0}, 0.1, 8);
+  moving.b.move_to(0.2);
+  const Mesh* meshes[] = {&sphere, &box, &moving};
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> U(-1.4, 1.4), Rad(0.05, 0.6);
+  std::vector<BarrierContact> ref, out;
+  std::size_t contacts = 0;
+  for (const Mesh* m : meshes) {
+    const BarrierTopology t = BarrierTopology::build(m->b);
+    std::vector<CurrentTriangle> tris;
+    for (std::size_t e = 0; e < m->b.size(); ++e) tris.push_back(current_triangle(m->b, e));
+    const auto cand = all_of(m->b);
+    for (int s = 0; s < 5000; ++s) {
+      const std::size_t e = static_cast<std::size_t>(s) % m->b.size();
+      // Over a vertex, an edge midpoint, a face centre of the moved mesh, or anywhere.
+      const Vec3 at[4] = {m->b.vertex(e, 0), (m->b.vertex(e, 0) + m->b.vertex(e, 1)) * 0.5, m->b.centre(e),
+                          {U(rng), U(rng), U(rng)}};
+      const Vec3 x = at[s % 4] + Vec3{U(rng), U(rng), U(rng)} * 0.1;
+      const double R = Rad(rng);
+      detect_barrier_contacts(m->b, t, x, R, cand, ref);
+      detect_barrier_contacts(m->b, t, tris, x, R, cand, out);
+      ASSERT_EQ(out.size(), ref.size()) << s;
+      contacts += ref.size();
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        ASSERT_EQ(out[i].element, ref[i].element) << s;
+        ASSERT_EQ(out[i].kind, ref[i].kind) << s;
+        ASSERT_EQ(out[i].feature, ref[i].feature) << s;
+        ASSERT_EQ(out[i].point, ref[i].point) << s;
+        ASSERT_EQ(out[i].normal, ref[i].normal) << s;
+        ASSERT_EQ(out[i].overlap, ref[i].overlap) << s;
+      }
+    }
+  }
+  EXPECT_GT(contacts, 3000u);  // the comparison saw many contacts, not only misses
+}
+
 }  // namespace
 }  // namespace mpdem

@@ -21,17 +21,18 @@ constexpr double kMergeRel = 1e-9;
 constexpr int next(int k) { return k == 2 ? 0 : k + 1; }
 constexpr int prev(int k) { return k == 0 ? 2 : k - 1; }
 
-struct Tri {
-  Vec3 v[3];          // m, current vertices
-  TriangleNormal tn;  // unnormalised normal
-};
+using Tri = CurrentTriangle;
 
-Tri current_triangle(const Barriers& bars, std::size_t e) {
-  const Vec3& o = bars.offset[e];
-  Tri t{{bars.p0[e] + o, bars.p1[e] + o, bars.p2[e] + o}, {}};
-  t.tn = triangle_normal(t.v[0], t.v[1], t.v[2]);
-  return t;
-}
+// Where detection gets an element's triangle: derived on the spot, or read from an array computed
+// once per evaluation (same values either way).
+struct DerivedTriangles {
+  const Barriers& bars;
+  Tri operator()(std::size_t e) const { return current_triangle(bars, e); }
+};
+struct StoredTriangles {
+  std::span<const Tri> tris;  // [M]
+  const Tri& operator()(std::size_t e) const { return tris[e]; }
+};
 
 struct Side {
   double s = 0.0;   // m^4, edge side (triangle_closest_point.hpp)
@@ -40,13 +41,12 @@ struct Side {
 };
 
 Side side_of(const Tri& t, int k, const Vec3& x) {
-  const Vec3& a = t.v[k];
-  const Vec3& b = t.v[next(k)];
+  const Vec3 d = x - t.v[k];
   Side r;
-  r.s = edge_side(x, a, b, t.tn.n);
-  r.e2 = norm2(b - a);
+  r.s = dot(d, t.inward[k]);  // edge_side(x, v[k], v[k+1], n), its cross product precomputed
+  r.e2 = t.e2[k];
   // |error of s| <~ 10 eps |x - a| |b - a| |e_i||e_j|; kRound leaves a wide margin.
-  const double tol2 = kRound2 * norm2(x - a) * r.e2 * t.tn.scale2;
+  const double tol2 = kRound2 * norm2(d) * r.e2 * t.tn.scale2;
   r.sign = r.s * r.s <= tol2 ? 0 : (r.s > 0.0 ? 1 : -1);
   return r;
 }
@@ -61,12 +61,13 @@ int ray_sign(const Vec3& x, const Vec3& v, const Vec3& w) {
 }
 
 // Edge rule: no element on edge g has x clearly over its side of the edge.
-bool edge_kept(const Barriers& bars, const BarrierTopology& topo, const Vec3& x, std::int32_t g) {
+template <class TriOf>
+bool edge_kept(const TriOf& tri_of, const BarrierTopology& topo, const Vec3& x, std::int32_t g) {
   for (const std::int32_t f : topo.elements_of_edge(g)) {
     const std::size_t fe = static_cast<std::size_t>(f);
     int k = 0;
     while (k < 2 && topo.elem_edge[3 * fe + k] != g) ++k;
-    if (side_sign(current_triangle(bars, fe), k, x) > 0) return false;
+    if (side_sign(tri_of(fe), k, x) > 0) return false;
   }
   return true;
 }
@@ -85,12 +86,13 @@ bool vertex_kept(const BarrierTopology& topo, const Vec3& x, std::int32_t v, con
 // Boundary point of element e: applies the edge/vertex rule to the reported feature and, when the
 // point is within rounding of a neighbouring feature (edge end / vertex with an edge nearly
 // interior), to that feature too. Sets c.kind/c.feature of the first feature kept.
-bool boundary_kept(const Barriers& bars, const BarrierTopology& topo, const Vec3& x, std::size_t e,
-                   const Tri& t, const TriangleClosestPoint& cp, BarrierContact& c) {
+template <class TriOf>
+bool boundary_kept(const Barriers& bars, const TriOf& tri_of, const BarrierTopology& topo, const Vec3& x,
+                   std::size_t e, const Tri& t, const TriangleClosestPoint& cp, BarrierContact& c) {
   const Vec3& off = bars.offset[e];
   auto try_edge = [&](int k) {
     const std::int32_t g = topo.elem_edge[3 * e + k];
-    if (!edge_kept(bars, topo, x, g)) return false;
+    if (!edge_kept(tri_of, topo, x, g)) return false;
     c.kind = Feature::Edge;
     c.feature = g;
     return true;
@@ -115,6 +117,7 @@ bool boundary_kept(const Barriers& bars, const BarrierTopology& topo, const Vec3
 
 // Counts each feature once, orders by element, merges rounding-level duplicates.
 void finish(const Barriers& bars, const BarrierTopology& topo, double R, std::vector<BarrierContact>& out) {
+  if (out.size() < 2) return;  // nothing to order or merge (the common case: one flat wall)
   auto feature_key = [](const BarrierContact& c) { return std::tie(c.kind, c.feature, c.element); };
   std::sort(out.begin(), out.end(),
             [&](const BarrierContact& a, const BarrierContact& b) { return feature_key(a) < feature_key(b); });
@@ -126,7 +129,7 @@ void finish(const Barriers& bars, const BarrierTopology& topo, double R, std::ve
   std::sort(out.begin(), out.end(), [](const BarrierContact& a, const BarrierContact& b) {
     return std::tie(a.element, a.kind, a.feature) < std::tie(b.element, b.kind, b.feature);
   });
-  if (out.size() < 2) return;
+  if (out.size() < 2) return;  // the feature merge left one
   auto merge_tol = [&](const BarrierContact& c) {
     return kMergeRel * (R + 0.5 * bars.thickness[c.element] + topo.elem_size[c.element]);
   };
@@ -143,10 +146,9 @@ void finish(const Barriers& bars, const BarrierTopology& topo, double R, std::ve
   out.resize(kept);
 }
 
-}  // namespace
-
-void detect_barrier_contacts(const Barriers& bars, const BarrierTopology& topo, const Vec3& x, double R,
-                             std::span<const std::uint32_t> candidates, std::vector<BarrierContact>& out) {
+template <class TriOf>
+void detect(const Barriers& bars, const BarrierTopology& topo, const TriOf& tri_of, const Vec3& x, double R,
+            std::span<const std::uint32_t> candidates, std::vector<BarrierContact>& out) {
   assert(topo.num_elements() == bars.size());
   out.clear();
   for (const std::uint32_t ei : candidates) {
@@ -154,8 +156,8 @@ void detect_barrier_contacts(const Barriers& bars, const BarrierTopology& topo, 
     assert(e < bars.size());
     const double reach = R + 0.5 * bars.thickness[e];  // m, contact distance (110)
     if (!(reach > 0.0)) continue;
-    const Tri t = current_triangle(bars, e);
-    const double n2 = norm2(t.tn.n);
+    const Tri& t = tri_of(e);  // a temporary (DerivedTriangles) lives until the end of the iteration
+    const double n2 = t.n2;
     if (!(n2 > 0.0)) continue;  // degenerate triangles are rejected by Barriers::add
     // The plane distance bounds the triangle distance from below: cheap rejection.
     const double h = dot(x - t.v[0], t.tn.n);
@@ -166,14 +168,16 @@ void detect_barrier_contacts(const Barriers& bars, const BarrierTopology& topo, 
     // Sides of x: clearly inside all edges -> face; clearly outside one -> boundary point; else x
     // is within rounding of the boundary: the boundary feature if its rule keeps it, otherwise the
     // face (never neither, so rounding cannot lose a contact).
-    const Side sd[3] = {side_of(t, 0, x), side_of(t, 1, x), side_of(t, 2, x)};
+    // One edge out of reach rejects the candidate: the remaining edges are then not needed.
+    Side sd[3];
     bool outside = false;
     bool out_of_reach = false;
-    for (const Side& k : sd) {
-      if (k.sign >= 0) continue;
+    for (int k = 0; k < 3 && !out_of_reach; ++k) {
+      sd[k] = side_of(t, k, x);
+      if (sd[k].sign >= 0) continue;
       outside = true;
       // Distance to the triangle >= distance to the strip on the inner side of this edge's line.
-      out_of_reach = out_of_reach || (h * h + k.s * k.s / k.e2) >= reach * reach * n2;
+      out_of_reach = (h * h + sd[k].s * sd[k].s / sd[k].e2) >= reach * reach * n2;
     }
     if (out_of_reach) continue;
     const bool inside = sd[0].sign > 0 && sd[1].sign > 0 && sd[2].sign > 0;
@@ -181,7 +185,7 @@ void detect_barrier_contacts(const Barriers& bars, const BarrierTopology& topo, 
     if (!inside) {
       const TriangleClosestPoint cp = closest_point_on_triangle_boundary(x, t.v[0], t.v[1], t.v[2]);
       c.point = cp.point;
-      if (norm2(x - cp.point) >= reach * reach || !boundary_kept(bars, topo, x, e, t, cp, c)) {
+      if (norm2(x - cp.point) >= reach * reach || !boundary_kept(bars, tri_of, topo, x, e, t, cp, c)) {
         if (outside) continue;
         face = true;
       }
@@ -194,12 +198,45 @@ void detect_barrier_contacts(const Barriers& bars, const BarrierTopology& topo, 
     const Vec3 d = x - c.point;
     const double dist = norm(d);
     if (!(dist < reach)) continue;
-    c.overlap = reach - dist;
+    // Written field by field into place: a copy of c would reload the fields just stored, in
+    // wider pieces than they were stored in, and wait for the stores to drain.
+    BarrierContact& o = out.emplace_back();
+    o.element = c.element;
+    o.kind = c.kind;
+    o.feature = c.feature;
+    o.point = c.point;
+    o.overlap = reach - dist;
     // Centre on the mid-surface: the direction is undefined, take the element normal.
-    c.normal = dist > 0.0 ? d / dist : t.tn.n / std::sqrt(n2);
-    out.push_back(c);
+    o.normal = dist > 0.0 ? d / dist : t.tn.n / std::sqrt(n2);
   }
-  finish(bars, topo, R, out);
+  if (out.size() >= 2) finish(bars, topo, R, out);  // the call only when there is work
+}
+
+}  // namespace
+
+CurrentTriangle current_triangle(const Barriers& bars, std::size_t e) {
+  const Vec3& o = bars.offset[e];
+  CurrentTriangle t{{bars.p0[e] + o, bars.p1[e] + o, bars.p2[e] + o}, {}, 0.0, {}, {}};
+  t.tn = triangle_normal(t.v[0], t.v[1], t.v[2]);
+  t.n2 = norm2(t.tn.n);
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 edge = t.v[next(k)] - t.v[k];
+    t.inward[k] = cross(t.tn.n, edge);
+    t.e2[k] = norm2(edge);
+  }
+  return t;
+}
+
+void detect_barrier_contacts(const Barriers& bars, const BarrierTopology& topo, const Vec3& x, double R,
+                             std::span<const std::uint32_t> candidates, std::vector<BarrierContact>& out) {
+  detect(bars, topo, DerivedTriangles{bars}, x, R, candidates, out);
+}
+
+void detect_barrier_contacts(const Barriers& bars, const BarrierTopology& topo, std::span<const CurrentTriangle> tris,
+                             const Vec3& x, double R, std::span<const std::uint32_t> candidates,
+                             std::vector<BarrierContact>& out) {
+  assert(tris.size() == bars.size());
+  detect(bars, topo, StoredTriangles{tris}, x, R, candidates, out);
 }
 
 }  // namespace mpdem

@@ -34,10 +34,30 @@ struct BarrierContact {
   double overlap = 0.0;           // m, R + t_b/2 - |x - p| > 0
 };
 
+// One element's triangle at the barriers' current offsets, with what detection derives from its
+// vertices alone. Elements only translate (Barriers::move_to), so a caller testing many spheres
+// at one time computes these once per element (current_triangle) instead of once per candidate;
+// the values are bit for bit those detection computes on its own.
+struct CurrentTriangle {
+  Vec3 v[3];          // m, current vertices p0, p1, p2 + offset
+  TriangleNormal tn;  // unnormalised normal n (m^2) and its rounding scale (m^4)
+  double n2 = 0.0;    // m^4, |n|^2
+  Vec3 inward[3];     // m^3, n x (v[k+1] - v[k]): edge k's in-plane normal into the triangle
+  double e2[3] = {};  // m^2, |v[k+1] - v[k]|^2, squared length of edge k
+};
+
+// Element e at the current offset.
+CurrentTriangle current_triangle(const Barriers& bars, std::size_t e);
+
 // Contacts of the sphere (centre x [m], radius R [m]) with the candidate elements (indices into
 // bars, any order, repeats allowed). `out` is cleared and refilled; reuse it between calls so no
 // allocation happens once its capacity suffices. topo must be BarrierTopology::build(bars).
 void detect_barrier_contacts(const Barriers& bars, const BarrierTopology& topo, const Vec3& x, double R,
                              std::span<const std::uint32_t> candidates, std::vector<BarrierContact>& out);
+// The same with the triangles precomputed: tris[e] = current_triangle(bars, e) for every element.
+// Identical results, without re-deriving each candidate's triangle.
+void detect_barrier_contacts(const Barriers& bars, const BarrierTopology& topo, std::span<const CurrentTriangle> tris,
+                             const Vec3& x, double R, std::span<const std::uint32_t> candidates,
+                             std::vector<BarrierContact>& out);
 
 }  // namespace mpdem

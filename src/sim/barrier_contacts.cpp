@@ -1,6 +1,9 @@
 #include "sim/barrier_contacts.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
+#include <memory>
 #include <stdexcept>
 
 #include "core/parallel.hpp"
@@ -14,7 +17,152 @@ namespace mpdem {
 
 namespace {
 constexpr double kInheritCos = 0.9;  // a seam neighbour's normal within ~25 degrees
+// Active particles ahead whose data is prefetched: they are scattered over the particle arrays
+// (only those near a wall), so each visit would otherwise wait for ~15 cache misses in turn.
+constexpr std::size_t kAhead = 8;
+
+// Brings the bytes [a, a + bytes) into the cache: every line they touch. Always inlined: GCC
+// takes a function doing nothing but prefetches for pure and deletes its calls.
+template <std::size_t bytes, int write>
+[[gnu::always_inline]] inline void prefetch_bytes(const void* a) {
+  const char* c = static_cast<const char*>(a);
+  for (std::size_t o = 0; o < bytes; o += 64) __builtin_prefetch(c + o, write);
+  if constexpr (bytes > 8) __builtin_prefetch(c + bytes - 1, write);  // the last line, if one more
 }
+template <int write = 0, class T>
+[[gnu::always_inline]] inline void prefetch_item(const std::vector<T>& a, std::size_t i) {
+  prefetch_bytes<sizeof(T), write>(a.data() + i);  // 8-byte items never straddle two lines
+}
+
+// Everything collect and flush read or write of particle i (its candidate list: only the
+// offsets, the list itself is fetched once they have arrived, see evaluate()).
+[[gnu::always_inline]] inline void prefetch_particle(const Particles& p, const BarrierBroadphase& broad, std::size_t i) {
+  prefetch_item(p.x, i);
+  prefetch_item(p.v, i);
+  prefetch_item(p.w, i);
+  prefetch_item(p.radius, i);
+  prefetch_item(p.mass, i);
+  prefetch_item(p.young, i);
+  prefetch_item(p.poisson, i);
+  prefetch_item<1>(p.force, i);
+  prefetch_item<1>(p.torque, i);
+  prefetch_item(broad.offsets(), i);
+  prefetch_item(broad.offsets(), i + 1);
+}
+
+// The first contact record of active particle k in each record array: they are read or written
+// in order, but with a stride of several lines that the hardware prefetcher does not follow.
+[[gnu::always_inline]] inline void prefetch_records(BarrierContactStore& store, std::size_t k) {
+  prefetch_bytes<sizeof(BarrierSlot), 0>(store.committed(k));
+  prefetch_bytes<sizeof(BarrierSlot), 1>(store.tentative(k));
+  prefetch_bytes<sizeof(BarrierLoad), 1>(store.loads(k));
+}
+}  // namespace
+
+// The contacts of consecutive active particles of one group, evaluated stage by stage. Why: one
+// Hertz-Mindlin contact is a long chain of dependent square roots and divisions, so finishing
+// one contact before starting the next waits on latency; the law's loop over a batch has
+// independent iterations the processor overlaps (and vectorises). Structure of arrays for that.
+struct BarrierBatch {
+  static constexpr std::size_t kLanes = 8;     // doubles per vector (AVX-512)
+  static constexpr std::size_t kContacts = 64; // contacts per batch, a multiple of kLanes
+  static constexpr std::size_t kSlots = BarrierContactStore::kSlots;
+  static_assert(kContacts % kLanes == 0 && kContacts >= kSlots, "batches hold whole vectors and a particle");
+
+  // --- the particles, in active order
+  std::size_t particles = 0;
+  std::uint32_t k[kContacts];        // active position
+  std::uint32_t end[kContacts];      // one past its last contact (the first is the previous end)
+  // --- their contacts, from detection and history (collect)
+  std::size_t count = 0;
+  std::int32_t element[kContacts];   // barrier element
+  const BarrierSlot* hist[kContacts];  // history record, or null
+  SlipDecision decide[kContacts];    // imposed stick/slip (later iterations)
+  Vec3 point[kContacts];             // m, contact point
+  double overlap[kContacts];         // m
+  double nx[kContacts], ny[kContacts], nz[kContacts];        // -, unit normal towards the particle
+  double vx[kContacts], vy[kContacts], vz[kContacts];        // m/s, particle velocity
+  double wx[kContacts], wy[kContacts], wz[kContacts];        // rad/s, particle rotation
+  double ux[kContacts], uy[kContacts], uz[kContacts];        // m/s, barrier velocity
+  double s0x[kContacts], s0y[kContacts], s0z[kContacts];     // m, stored spring (zero: none)
+  double vt0x[kContacts], vt0y[kContacts], vt0z[kContacts];  // m/s, stored tangential velocity
+  double E[kContacts], G[kContacts];                          // Pa, E*, G*
+  double r[kContacts], m[kContacts];                          // m, kg: r* = R, m* = m
+  // --- the law's results (contact_law)
+  double fx[kContacts], fy[kContacts], fz[kContacts];        // N, force on the particle
+  double tx[kContacts], ty[kContacts], tz[kContacts];        // N m, r_P x f_t
+  double sx[kContacts], sy[kContacts], sz[kContacts];        // m, spring for the next step
+  double vtx[kContacts], vty[kContacts], vtz[kContacts];     // m/s, tangential velocity
+  double fn[kContacts];                                       // N, net normal force
+  double energy[kContacts];                                   // J, elastic energy
+  double damping[kContacts];                                  // W, dashpot power
+  double friction[kContacts];                                 // W, sliding power
+  std::int64_t slip[kContacts];                               // 1 when sliding (8 bytes, like SlipDecision)
+
+  // Room for one more particle with all its contacts.
+  bool room() const { return count + kSlots <= kContacts && particles < kContacts; }
+  // Contacts rounded up to whole vectors.
+  std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }
+};
+
+namespace {
+
+// Pa, from the summed force on element e.
+double element_pressure(const Barriers& b, std::size_t e) { return -dot(b.force[e], b.normal[e]) / b.area[e]; }
+
+// The lanes past count repeat the last contact (count >= 1), so the law computes finite values
+// nobody reads.
+void pad(BarrierBatch& b) {
+  const std::size_t l = b.count - 1;
+  for (std::size_t t = b.count; t < b.lanes(); ++t) {
+    b.decide[t] = b.decide[l];
+    b.overlap[t] = b.overlap[l];
+    b.nx[t] = b.nx[l], b.ny[t] = b.ny[l], b.nz[t] = b.nz[l];
+    b.vx[t] = b.vx[l], b.vy[t] = b.vy[l], b.vz[t] = b.vz[l];
+    b.wx[t] = b.wx[l], b.wy[t] = b.wy[l], b.wz[t] = b.wz[l];
+    b.ux[t] = b.ux[l], b.uy[t] = b.uy[l], b.uz[t] = b.uz[l];
+    b.s0x[t] = b.s0x[l], b.s0y[t] = b.s0y[l], b.s0z[t] = b.s0z[l];
+    b.vt0x[t] = b.vt0x[l], b.vt0y[t] = b.vt0y[l], b.vt0z[t] = b.vt0z[l];
+    b.E[t] = b.E[l], b.G[t] = b.G[l], b.r[t] = b.r[l], b.m[t] = b.m[l];
+  }
+}
+
+// The Hertz-Mindlin law (physics.md sections 5-7) of every contact of the batch: the very
+// expressions of the one-contact form, lane by lane (vectorised; the laws are branch-free).
+void contact_law(const ContactModel& law, const EvalRequest& req, BarrierBatch& b) {
+  pad(b);
+  const double dt = req.dt, phi = req.phi;
+  const double xi_n = law.xi_n, xi_t = law.xi_t, mu_s = law.mu_s, mu_d = law.mu_d;
+  for (std::size_t t = 0; t < b.lanes(); ++t) {
+    const Vec3 nrm{b.nx[t], b.ny[t], b.nz[t]};
+    const double r = b.r[t];
+    const Vec3 rP = -r * nrm;
+    const Vec3 vrel = contact_relative_velocity_barrier({b.vx[t], b.vy[t], b.vz[t]}, {b.wx[t], b.wy[t], b.wz[t]}, rP,
+                                                        {b.ux[t], b.uy[t], b.uz[t]});
+    const double vn = normal_rate(vrel, nrm);
+    const Vec3 vt = tangential_part(vrel, nrm);
+    // (49)-(50), (65), (67) sharing one sqrt(r* delta).
+    const ContactCoefficients cc = contact_coefficients(b.E[t], b.G[t], r, b.m[t], xi_n, xi_t, b.overlap[t]);
+    const NormalForce fn = damped_normal_force(cc.f_el, cc.d_n, vn);
+    const Vec3 s0 = project_spring({b.s0x[t], b.s0y[t], b.s0z[t]}, nrm);
+    const Vec3 vt0{b.vt0x[t], b.vt0y[t], b.vt0z[t]};
+    const TangentialResult ft = tangential_force(s0, dt * ((1.0 - phi) * vt0 + phi * vt), vt, cc.k_t, cc.d_t, mu_s,
+                                                 mu_d, fn.magnitude, b.decide[t]);
+    const Vec3 f = fn.magnitude * nrm + ft.force;
+    const Vec3 arm = cross(rP, ft.force);
+    b.fx[t] = f.x, b.fy[t] = f.y, b.fz[t] = f.z;
+    b.tx[t] = arm.x, b.ty[t] = arm.y, b.tz[t] = arm.z;
+    b.sx[t] = ft.spring.x, b.sy[t] = ft.spring.y, b.sz[t] = ft.spring.z;
+    b.vtx[t] = vt.x, b.vty[t] = vt.y, b.vtz[t] = vt.z;
+    b.fn[t] = fn.magnitude;
+    b.energy[t] = hertz_energy_from_force(cc.f_el, b.overlap[t]) + 0.5 * cc.k_t * norm2(ft.spring);
+    b.damping[t] = fn.dissipated_power + (ft.slipped ? 0.0 : ft.dissipated_power);
+    b.friction[t] = ft.slipped ? ft.dissipated_power : 0.0;
+    b.slip[t] = ft.slipped ? 1 : 0;
+  }
+}
+
+}  // namespace
 
 BarrierContacts::BarrierContacts(const ContactModel& law, const Barriers& b)
     : law_(law), topo_(BarrierTopology::build(b)) {}
@@ -27,52 +175,103 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
     throw std::logic_error("barrier contacts: the candidate lists do not match the scene");
   if (store_.stale(broad)) store_.relayout(broad);
 
+  // The elements translate rigidly: their triangles (normals, edge directions) once per
+  // evaluation, not per candidate.
+  const std::size_t m = b.size();
+  tris_.resize(m);
+  centres_.resize(m);
+#pragma omp parallel for schedule(static) if (m > kParallelThreshold)
+  for (std::size_t e = 0; e < m; ++e) {
+    tris_[e] = current_triangle(b, e);
+    centres_[e] = b.centre(e);
+  }
+
   // Each group (the active particles of one block of kGroup particle indices) is summed in
   // particle order, then the groups in order: the blocked sums of deterministic_sums over all
   // particles, whatever the number of threads, without visiting the particles far from walls.
+  // Within a group the particles go through batches (BarrierBatch), whose results are applied in
+  // particle and contact order: the same sums as one particle after the other.
   const std::size_t groups = store_.groups();
+  const std::size_t active = store_.size();
   partial_.resize(groups);
-#pragma omp parallel for schedule(static) if (store_.size() > kParallelThreshold)
-  for (std::size_t g = 0; g < groups; ++g) {
-    std::array<double, 5> acc{};
-    for (std::size_t k = store_.group_begin(g); k < store_.group_begin(g + 1); ++k)
-      particle_contacts(k, p, b, broad, req, acc);
-    partial_[g] = acc;
+  bool direct = false;  // the loads went onto the elements during the particle loop
+#pragma omp parallel if (active > kParallelThreshold)
+  {
+    // One thread visits all particles in order: it can add each contact's load to its element
+    // right away, in the order element_loads would (ascending particle), saving that pass.
+    const bool serial = omp_get_num_threads() == 1;
+    if (serial) direct = true;
+    PairModuli moduli;                             // per thread
+    std::vector<BarrierContact> found;             // per thread, reused by its particles
+    found.reserve(kSlots);
+    const auto batch = std::make_unique<BarrierBatch>();  // per thread (~40 KB: not on the stack)
+#pragma omp for schedule(static)
+    for (std::size_t g = 0; g < groups; ++g) {
+      std::array<double, 5> acc{};
+      for (std::size_t k = store_.group_begin(g); k < store_.group_begin(g + 1); ++k) {
+        // Prefetch only (no effect on the results): particle data kAhead ahead, and the candidate
+        // list of the particle half-way, whose offsets were prefetched kAhead / 2 visits ago.
+        if (k + kAhead < active) {
+          prefetch_particle(p, broad, store_.particle(k + kAhead));
+          prefetch_records(store_, k + kAhead);
+        }
+        if (k + kAhead / 2 < active) {
+          const auto c = broad.candidates(store_.particle(k + kAhead / 2));
+          if (!c.empty()) __builtin_prefetch(c.data());
+        }
+        if (!batch->room()) flush(p, serial ? &b : nullptr, req, *batch, acc);
+        collect(k, p, b, broad, req, moduli, found, *batch, acc);
+      }
+      flush(p, serial ? &b : nullptr, req, *batch, acc);
+      partial_[g] = acc;
+    }
   }
   std::array<double, 5> sums{};
   for (const auto& s : partial_)
     for (std::size_t c = 0; c < sums.size(); ++c) sums[c] += s[c];
   overflows_ += static_cast<std::uint64_t>(sums[4]);
 
-  element_loads(b);
+  if (direct)
+    for (std::size_t e = 0; e < m; ++e) b.pressure[e] = element_pressure(b, e);
+  else
+    element_loads(b);
   if (req.commit) store_.commit();
   return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3]};
 }
 
-void BarrierContacts::particle_contacts(std::size_t k, Particles& p, const Barriers& b, const BarrierBroadphase& broad,
-                                        const EvalRequest& req, std::array<double, 5>& acc) {
+void BarrierContacts::PairModuli::derive(const std::array<std::uint64_t, 4>& k, double E_i, double nu_i, double E_j,
+                                         double nu_j) {
+  valid = true;
+  key = k;
+  E = effective_modulus(E_i, nu_i, E_j, nu_j);
+  G = effective_shear_modulus(shear_modulus(E_i, nu_i), nu_i, shear_modulus(E_j, nu_j), nu_j);
+}
+
+void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers& b, const BarrierBroadphase& broad,
+                              const EvalRequest& req, PairModuli& moduli, std::vector<BarrierContact>& found,
+                              BarrierBatch& batch, std::array<double, 5>& acc) {
   const std::size_t i = store_.particle(k);
   const auto cand = broad.candidates(i);
-  if (cand.empty()) {  // kept only for its records: no contact now
+  if (cand.empty()) {  // kept only for its records: no contact now (and no force to add)
     store_.tentative_used(k) = 0;
     store_.load_used(k) = 0;
     if (req.iteration == 1) store_.first_used(k) = 0;
     return;
   }
-  thread_local std::vector<BarrierContact> found;
-  detect_barrier_contacts(b, topo_, p.x[i], p.radius[i], cand, found);
+  detect_barrier_contacts(b, topo_, tris_, p.x[i], p.radius[i], cand, found);
   const BarrierSlot* old = store_.committed(k);
   const int old_used = store_.committed_used(k);
-  BarrierSlot* tent = store_.tentative(k);
-  BarrierLoad* load = store_.loads(k);
-  BarrierFirst* first = store_.first(k);
+  const BarrierFirst* first = store_.first(k);
   const std::size_t first_used = store_.first_used(k);
   // At most one contact per candidate element, so the capacity never binds before kSlots.
   const std::size_t count = std::min({found.size(), std::size_t{kSlots}, store_.capacity(k)});
   if (found.size() > count) acc[4] += static_cast<double>(found.size() - count);
-  const double dt = req.dt, phi = req.phi;
-  const ContactModel& law = law_;
-  Vec3 force{}, torque{};
+  store_.tentative_used(k) = static_cast<std::uint8_t>(count);
+  store_.load_used(k) = static_cast<std::uint8_t>(count);
+  if (req.iteration == 1) store_.first_used(k) = static_cast<std::uint8_t>(count);
+
+  const Vec3 v = p.v[i], w = p.w[i];
+  const double r = p.radius[i], m = p.mass[i];
   for (std::size_t c = 0; c < count; ++c) {
     const BarrierContact& bc = found[c];
     const std::size_t e = bc.element;
@@ -91,51 +290,99 @@ void BarrierContacts::particle_contacts(std::size_t k, Particles& p, const Barri
         if (!still && cosang > best) { best = cosang; hist = &old[s]; }
       }
     }
-    const Vec3& nrm = bc.normal;
-    // Half-space of the barrier's material: its own E, nu in (51); r* = R, m* = m (76)-(79).
-    const double E = effective_modulus(p.young[i], p.poisson[i], b.young[e], b.poisson[e]);
-    const double r = p.radius[i], m = p.mass[i];
-    const Vec3 rP = -r * nrm;
-    const Vec3 vrel = contact_relative_velocity_barrier(p.v[i], p.w[i], rP, b.velocity[e]);
-    const double vn = normal_rate(vrel, nrm);
-    const Vec3 vt = tangential_part(vrel, nrm);
-    const double G = effective_shear_modulus(shear_modulus(p.young[i], p.poisson[i]), p.poisson[i],
-                                             shear_modulus(b.young[e], b.poisson[e]), b.poisson[e]);
-    // (49)-(50), (65), (67) sharing one sqrt(r* delta).
-    const ContactCoefficients cc = contact_coefficients(E, G, r, m, law.xi_n, law.xi_t, bc.overlap);
-    const NormalForce fn = damped_normal_force(cc.f_el, cc.d_n, vn);
-    const double kt = cc.k_t, dtc = cc.d_t;
-    const Vec3 s0 = hist ? project_spring(hist->spring, nrm) : Vec3{};
-    const Vec3 vt0 = hist ? hist->vt0 : Vec3{};
     // Later iterations keep the first iteration's stick/slip decision (physics/tangential.hpp).
     SlipDecision decide = SlipDecision::Free;
     if (req.iteration >= 2)
       for (std::size_t s = 0; s < first_used; ++s)
         if (first[s].element == static_cast<std::int32_t>(e))
           decide = first[s].slipped ? SlipDecision::Slip : SlipDecision::Stick;
-    const TangentialResult ft = tangential_force(s0, dt * ((1.0 - phi) * vt0 + phi * vt), vt, kt, dtc, law.mu_s,
-                                                 law.mu_d, fn.magnitude, decide);
-    // Against the rotation of the step start, like particle pairs (sim/particle_contacts.cpp).
-    const Vec3 wr0 = req.iteration > 0 ? (hist ? hist->wr0 : Vec3{}) : p.w[i];
-    const Vec3 roll = rolling_resistance_torque(wr0, law.mu_r, r, fn.magnitude, p.inertia[i], dt);
-    const Vec3 f = fn.magnitude * nrm + ft.force;
-    force += f;
-    torque += cross(rP, ft.force) + roll;
-    const auto el = static_cast<std::int32_t>(e);
-    const std::uint32_t slipped = ft.slipped ? 1u : 0u;
-    tent[c] = BarrierSlot{el, slipped, ft.spring, vt, nrm, p.w[i]};
-    load[c] = BarrierLoad{-f, bc.point, bc.overlap, el};
-    if (req.iteration == 1) first[c] = BarrierFirst{el, slipped};
-    acc[0] += 1.0;
-    acc[1] += hertz_energy_from_force(cc.f_el, bc.overlap) + 0.5 * kt * norm2(ft.spring);
-    acc[2] += fn.dissipated_power + (ft.slipped ? 0.0 : ft.dissipated_power);
-    acc[3] += (ft.slipped ? ft.dissipated_power : 0.0) - dot(roll, p.w[i]);
+    // Half-space of the barrier's material: its own E, nu in (51); r* = R, m* = m (76)-(79).
+    const PairModuli& em = moduli.of(p.young[i], p.poisson[i], b.young[e], b.poisson[e]);
+    // No history: a zero spring, which project_spring leaves exactly zero.
+    const Vec3 s0 = hist ? hist->spring : Vec3{};
+    const Vec3 vt0 = hist ? hist->vt0 : Vec3{};
+    const Vec3& u = b.velocity[e];
+    const std::size_t t = batch.count++;
+    batch.element[t] = static_cast<std::int32_t>(e);
+    batch.hist[t] = hist;
+    batch.decide[t] = decide;
+    batch.point[t] = bc.point;
+    batch.overlap[t] = bc.overlap;
+    batch.nx[t] = bc.normal.x, batch.ny[t] = bc.normal.y, batch.nz[t] = bc.normal.z;
+    batch.vx[t] = v.x, batch.vy[t] = v.y, batch.vz[t] = v.z;
+    batch.wx[t] = w.x, batch.wy[t] = w.y, batch.wz[t] = w.z;
+    batch.ux[t] = u.x, batch.uy[t] = u.y, batch.uz[t] = u.z;
+    batch.s0x[t] = s0.x, batch.s0y[t] = s0.y, batch.s0z[t] = s0.z;
+    batch.vt0x[t] = vt0.x, batch.vt0y[t] = vt0.y, batch.vt0z[t] = vt0.z;
+    batch.E[t] = em.E, batch.G[t] = em.G, batch.r[t] = r, batch.m[t] = m;
   }
-  store_.tentative_used(k) = static_cast<std::uint8_t>(count);
-  store_.load_used(k) = static_cast<std::uint8_t>(count);
-  if (req.iteration == 1) store_.first_used(k) = static_cast<std::uint8_t>(count);
-  p.force[i] += force;
-  p.torque[i] += torque;
+  batch.k[batch.particles] = static_cast<std::uint32_t>(k);
+  batch.end[batch.particles] = static_cast<std::uint32_t>(batch.count);
+  ++batch.particles;
+}
+
+void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch,
+                            std::array<double, 5>& acc) {
+  if (batch.particles == 0) return;
+  if (batch.count > 0) contact_law(law_, req, batch);
+  // In particle order, each particle's contacts in order: the original per-particle sums.
+  const bool rolling = !(law_.mu_r <= 0.0);  // rolling_resistance_torque's own test
+  const double dt = req.dt;
+  // The sums in registers: acc could alias the records written below, as far as the compiler
+  // knows, and every += would wait on the previous store.
+  double sum0 = acc[0], sum1 = acc[1], sum2 = acc[2], sum3 = acc[3];
+  std::size_t t = 0;
+  for (std::size_t q = 0; q < batch.particles; ++q) {
+    const std::size_t k = batch.k[q];
+    const std::size_t i = store_.particle(k);
+    BarrierSlot* tent = store_.tentative(k);
+    BarrierLoad* load = store_.loads(k);
+    BarrierFirst* first = store_.first(k);
+    Vec3 force{}, torque{};
+    for (std::size_t c = 0; t < batch.end[q]; ++t, ++c) {
+      const BarrierSlot* hist = batch.hist[t];
+      const Vec3 w{batch.wx[t], batch.wy[t], batch.wz[t]};
+      // Against the rotation of the step start, like particle pairs (sim/particle_contacts.cpp).
+      Vec3 roll{};
+      if (rolling) {
+        const Vec3 wr0 = req.iteration > 0 ? (hist ? hist->wr0 : Vec3{}) : w;
+        roll = rolling_resistance_torque(wr0, law_.mu_r, batch.r[t], batch.fn[t], p.inertia[i], dt);
+      }
+      const Vec3 f{batch.fx[t], batch.fy[t], batch.fz[t]};
+      force += f;
+      torque += Vec3{batch.tx[t], batch.ty[t], batch.tz[t]} + roll;
+      const std::int32_t el = batch.element[t];
+      const auto slipped = static_cast<std::uint32_t>(batch.slip[t]);
+      // Field by field into place (a whole-record copy would reload fresh stores in other widths).
+      BarrierSlot& ts = tent[c];
+      ts.element = el;
+      ts.slipped = slipped;
+      ts.spring = {batch.sx[t], batch.sy[t], batch.sz[t]};
+      ts.vt0 = {batch.vtx[t], batch.vty[t], batch.vtz[t]};
+      ts.normal = {batch.nx[t], batch.ny[t], batch.nz[t]};
+      ts.wr0 = w;
+      BarrierLoad& ls = load[c];
+      ls.force = -f;
+      ls.point = batch.point[t];
+      ls.overlap = batch.overlap[t];
+      ls.element = el;
+      if (loads_to) {  // at most one contact per element and particle (detection's merge)
+        const auto e = static_cast<std::size_t>(el);
+        loads_to->force[e] += ls.force;
+        loads_to->moment[e] += cross(ls.point - centres_[e], ls.force);
+      }
+      if (req.iteration == 1) first[c] = BarrierFirst{el, slipped};
+      sum0 += 1.0;
+      sum1 += batch.energy[t];
+      sum2 += batch.damping[t];
+      sum3 += batch.friction[t] - dot(roll, w);
+    }
+    p.force[i] += force;
+    p.torque[i] += torque;
+  }
+  acc[0] = sum0, acc[1] = sum1, acc[2] = sum2, acc[3] = sum3;
+  batch.particles = 0;
+  batch.count = 0;
 }
 
 void BarrierContacts::element_loads(Barriers& b) {
@@ -149,7 +396,7 @@ void BarrierContacts::element_loads(Barriers& b) {
     const std::uint32_t* user = store_.element_users(e, users);
     if (users > 0) {
       const auto el = static_cast<std::int32_t>(e);
-      const Vec3 centre = b.centre(e);
+      const Vec3& centre = centres_[e];
       Vec3 force = b.force[e], moment = b.moment[e];
       for (std::size_t u = 0; u < users; ++u) {
         const BarrierLoad* l = store_.loads(user[u]);
@@ -164,7 +411,7 @@ void BarrierContacts::element_loads(Barriers& b) {
       b.force[e] = force;
       b.moment[e] = moment;
     }
-    b.pressure[e] = -dot(b.force[e], b.normal[e]) / b.area[e];
+    b.pressure[e] = element_pressure(b, e);
   }
 }
 

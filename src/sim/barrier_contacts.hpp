@@ -10,7 +10,15 @@
 // the particles near a barrier; an evaluation visits only those, in parallel. Loads on the
 // elements (force, moment about the centre, pressure) are summed per element in particle order,
 // independent of the thread count.
+//
+// Speed (the particles near walls are scattered over the particle arrays; one contact is a long
+// chain of roots and divisions): the element triangles are derived once per evaluation, the
+// data of the particles a few visits ahead is prefetched, the contact law runs over batches of
+// contacts (BarrierBatch, vectorised), and a single thread adds the loads to the elements as it
+// goes. None of it changes a result: the arithmetic and every sum's order are those of one
+// contact after the other.
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <vector>
 
@@ -23,6 +31,8 @@
 #include "state/barrier_topology.hpp"
 
 namespace mpdem {
+
+struct BarrierBatch;  // contacts evaluated together (barrier_contacts.cpp)
 
 class BarrierContacts {
  public:
@@ -42,16 +52,40 @@ class BarrierContacts {
   std::size_t memory_bytes() const { return store_.bytes(); }  // B, held by the contact records
 
  private:
-  // Contacts of active particle k: fills its tentative history and loads, adds to its force and
-  // torque, and to acc = {contacts, elastic energy J, damping power W, friction power W, dropped}.
-  void particle_contacts(std::size_t k, Particles& p, const Barriers& b, const BarrierBroadphase& broad,
-                         const EvalRequest& req, std::array<double, 5>& acc);
-  void element_loads(Barriers& b);  // sums the loads of the last evaluation onto the elements
+  // E* (Pa) and G* (Pa) of the last particle-element material pair met by one thread: a bed of
+  // one material against walls of one material derives them once, not per contact (4 divisions).
+  struct PairModuli {
+    bool valid = false;
+    std::array<std::uint64_t, 4> key{};  // bit patterns of E_i, nu_i, E_j, nu_j
+    double E = 0.0;                       // Pa, effective_modulus
+    double G = 0.0;                       // Pa, effective_shear_modulus
+    // The moduli of this pair, derived anew only when it differs from the last one. Bit patterns,
+    // not ==, so the values kept are exactly those the inputs give (-0 and +0 differ).
+    const PairModuli& of(double E_i, double nu_i, double E_j, double nu_j) {
+      const std::array<std::uint64_t, 4> k{std::bit_cast<std::uint64_t>(E_i), std::bit_cast<std::uint64_t>(nu_i),
+                                           std::bit_cast<std::uint64_t>(E_j), std::bit_cast<std::uint64_t>(nu_j)};
+      if (!valid || k != key) derive(k, E_i, nu_i, E_j, nu_j);
+      return *this;
+    }
+    void derive(const std::array<std::uint64_t, 4>& k, double E_i, double nu_i, double E_j, double nu_j);
+  };
+  // Contacts of active particle k, stage 1: detects them, finds their history, sets its record
+  // counts and appends the contacts with the particle's values to the batch (acc[4]: dropped).
+  void collect(std::size_t k, const Particles& p, const Barriers& b, const BarrierBroadphase& broad,
+               const EvalRequest& req, PairModuli& moduli, std::vector<BarrierContact>& found, BarrierBatch& batch,
+               std::array<double, 5>& acc);
+  // The law over the batch, then in particle and contact order: the tentative history and loads,
+  // the particles' force and torque, and acc = {contacts, elastic energy J, damping power W,
+  // friction power W}; with loads_to, also each load onto its element. Empties the batch.
+  void flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch, std::array<double, 5>& acc);
+  void element_loads(Barriers& b);  // sums the loads of the last evaluation onto the elements, in particle order
 
   ContactModel law_;
   BarrierTopology topo_;
   BarrierContactStore store_;
   std::vector<std::array<double, 5>> partial_;  // [groups] sums of one evaluation, per group
+  std::vector<CurrentTriangle> tris_;           // [M] the elements at this evaluation's offsets
+  std::vector<Vec3> centres_;                   // [M] m, their centroids (Barriers::centre), moment arms
   std::uint64_t overflows_ = 0;
 };
 

@@ -55,8 +55,7 @@ struct Batch {
   double overlap[kBatch];              // m, 0 when apart
   double nx[kBatch], ny[kBatch], nz[kBatch];     // -, n_ij, from j to i
   double vtx[kBatch], vty[kBatch], vtz[kBatch];  // m/s, tangential relative velocity (61)
-  double vn[kBatch];                   // m/s, normal rate
-  double E[kBatch], G[kBatch], r[kBatch], m[kBatch];  // Pa, Pa, m, kg (51)-(53), Mindlin G*
+  double r[kBatch];                    // m, r* (52)
   // Stage 2: normal law.
   double f_el[kBatch];                 // N, elastic Hertz force
   double fn[kBatch];                   // N, net normal force (clamped at 0)
@@ -67,9 +66,7 @@ struct Batch {
   double dsx[kBatch], dsy[kBatch], dsz[kBatch];  // m, increment (64)
   SlipDecision decide[kBatch];
   // Stage 3: tangential law.
-  double ftx[kBatch], fty[kBatch], ftz[kBatch];  // N, tangential force on i
   double sx[kBatch], sy[kBatch], sz[kBatch];     // m, spring for the next step
-  double pt[kBatch];                   // W, tangential dissipation
   std::int64_t slip[kBatch];           // 1 when sliding (8 bytes, like SlipDecision)
   // Stage 4a: results.
   double fx[kBatch], fy[kBatch], fz[kBatch];     // N, force on i
@@ -108,8 +105,11 @@ MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
   }
 }
 
-// Stage 1 (60)-(62): overlap, normal, relative velocity at the contact point.
-void geometry(const PairPass& q, Batch& b) {
+// Stage 1 (60)-(62): overlap, normal, relative velocity at the contact point; and the normal
+// law (49)-(50), (65), (67) (an apart candidate, overlap 0, gets zero coefficients). One loop:
+// the intermediate values stay in registers.
+void geometry_normal(const PairPass& q, Batch& b) {
+  const double xi_n = q.law.xi_n, xi_t = q.law.xi_t;
   gather_members(q, b);
   // 1b. The arithmetic, over contiguous arrays (vectorised).
   for (std::size_t t = 0; t < b.lanes(); ++t) {
@@ -123,27 +123,20 @@ void geometry(const PairPass& q, Batch& b) {
     b.nx[t] = nrm.x;
     b.ny[t] = nrm.y;
     b.nz[t] = nrm.z;
-    b.E[t] = 1.0 / b.sc[t];  // (51)
-    b.G[t] = 1.0 / b.ss[t];  // Mindlin G*
-    b.r[t] = 1.0 / b.sr[t];  // (52)
-    b.m[t] = 1.0 / b.sm[t];  // (53)
+    const double E = 1.0 / b.sc[t];  // (51)
+    const double G = 1.0 / b.ss[t];  // Mindlin G*
+    const double r = 1.0 / b.sr[t];  // (52)
+    const double m = 1.0 / b.sm[t];  // (53)
+    b.r[t] = r;
     // (60) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
     const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
     const double vn = dot(vrel, nrm);
     const Vec3 vt = vrel - vn * nrm;  // (61)
-    b.vn[t] = vn;
     b.vtx[t] = vt.x;
     b.vty[t] = vt.y;
     b.vtz[t] = vt.z;
-  }
-}
-
-// Stage 2 (49)-(50), (65), (67); an apart candidate (overlap 0) gets zero coefficients.
-void normal_law(const PairPass& q, Batch& b) {
-  const double xi_n = q.law.xi_n, xi_t = q.law.xi_t;
-  for (std::size_t t = 0; t < b.lanes(); ++t) {
-    const ContactCoefficients cc = contact_coefficients(b.E[t], b.G[t], b.r[t], b.m[t], xi_n, xi_t, b.overlap[t]);
-    const NormalForce fn = damped_normal_force(cc.f_el, cc.d_n, b.vn[t]);
+    const ContactCoefficients cc = contact_coefficients(E, G, r, m, xi_n, xi_t, b.overlap[t]);
+    const NormalForce fn = damped_normal_force(cc.f_el, cc.d_n, vn);
     b.f_el[t] = cc.f_el;
     b.fn[t] = fn.magnitude;
     b.pn[t] = fn.dissipated_power;
@@ -175,32 +168,20 @@ void tangential_law(const PairPass& q, Batch& b) {
     const TangentialResult ft = tangential_force(project_spring({b.s0x[t], b.s0y[t], b.s0z[t]}, b.normal(t)),
                                                  {b.dsx[t], b.dsy[t], b.dsz[t]}, b.vt(t), b.kt[t], b.dtc[t], mu_s,
                                                  mu_d, b.fn[t], b.decide[t]);
-    b.ftx[t] = ft.force.x;
-    b.fty[t] = ft.force.y;
-    b.ftz[t] = ft.force.z;
     b.sx[t] = ft.spring.x;
     b.sy[t] = ft.spring.y;
     b.sz[t] = ft.spring.z;
-    b.pt[t] = ft.dissipated_power;
     b.slip[t] = ft.slipped ? 1 : 0;
-  }
-}
-
-// Stage 4: history, rolling resistance (71), and the sums, in slot order.
-// Stage 4a: each contact's force, torque arm and energy terms (vectorised).
-void results(Batch& b) {
-  for (std::size_t t = 0; t < b.lanes(); ++t) {
+    // Stage 4a: the contact's force, torque arm and energy terms.
     const Vec3 nrm = b.normal(t);
-    const Vec3 ft{b.ftx[t], b.fty[t], b.ftz[t]};
-    const Vec3 f = b.fn[t] * nrm + ft;
-    const Vec3 arm = cross(nrm, ft);  // torque r_P x f_t = -R n x f_t on both members (62)
+    const Vec3 f = b.fn[t] * nrm + ft.force;
+    const Vec3 arm = cross(nrm, ft.force);  // torque r_P x f_t = -R n x f_t on both members (62)
     b.fx[t] = f.x, b.fy[t] = f.y, b.fz[t] = f.z;
     b.ax[t] = arm.x, b.ay[t] = arm.y, b.az[t] = arm.z;
-    const bool slipped = b.slip[t] != 0;
-    b.energy[t] = hertz_energy_from_force(b.f_el[t], b.overlap[t]) + 0.5 * b.kt[t] * (b.sx[t] * b.sx[t] +
-                  b.sy[t] * b.sy[t] + b.sz[t] * b.sz[t]);
-    b.damping[t] = b.pn[t] + (slipped ? 0.0 : b.pt[t]);
-    b.friction[t] = slipped ? b.pt[t] : 0.0;
+    b.energy[t] = hertz_energy_from_force(b.f_el[t], b.overlap[t]) + 0.5 * b.kt[t] * (ft.spring.x * ft.spring.x +
+                  ft.spring.y * ft.spring.y + ft.spring.z * ft.spring.z);
+    b.damping[t] = b.pn[t] + (ft.slipped ? 0.0 : ft.dissipated_power);
+    b.friction[t] = ft.slipped ? ft.dissipated_power : 0.0;
   }
 }
 
@@ -252,10 +233,8 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
 }
 
 void run(const PairPass& q, Batch& b, PairBlockSums& out) {
-  geometry(q, b);
-  normal_law(q, b);
+  geometry_normal(q, b);
   tangential_law(q, b);
-  results(b);
   apply(q, b, out);
   b.count = 0;
 }

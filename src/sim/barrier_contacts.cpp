@@ -12,6 +12,7 @@
 #include "physics/hertz.hpp"
 #include "physics/rolling.hpp"
 #include "physics/tangential.hpp"
+#include "sim/barrier_batch.hpp"
 
 namespace mpdem {
 
@@ -59,108 +60,11 @@ template <int write = 0, class T>
 }
 }  // namespace
 
-// The contacts of consecutive active particles of one group, evaluated stage by stage. Why: one
-// Hertz-Mindlin contact is a long chain of dependent square roots and divisions, so finishing
-// one contact before starting the next waits on latency; the law's loop over a batch has
-// independent iterations the processor overlaps (and vectorises). Structure of arrays for that.
-struct BarrierBatch {
-  static constexpr std::size_t kLanes = 8;     // doubles per vector (AVX-512)
-  static constexpr std::size_t kContacts = 64; // contacts per batch, a multiple of kLanes
-  static constexpr std::size_t kSlots = BarrierContactStore::kSlots;
-  static_assert(kContacts % kLanes == 0 && kContacts >= kSlots, "batches hold whole vectors and a particle");
-
-  // --- the particles, in active order
-  std::size_t particles = 0;
-  std::uint32_t k[kContacts];        // active position
-  std::uint32_t end[kContacts];      // one past its last contact (the first is the previous end)
-  // --- their contacts, from detection and history (collect)
-  std::size_t count = 0;
-  std::int32_t element[kContacts];   // barrier element
-  const BarrierSlot* hist[kContacts];  // history record, or null
-  SlipDecision decide[kContacts];    // imposed stick/slip (later iterations)
-  Vec3 point[kContacts];             // m, contact point
-  double overlap[kContacts];         // m
-  double nx[kContacts], ny[kContacts], nz[kContacts];        // -, unit normal towards the particle
-  double vx[kContacts], vy[kContacts], vz[kContacts];        // m/s, particle velocity
-  double wx[kContacts], wy[kContacts], wz[kContacts];        // rad/s, particle rotation
-  double ux[kContacts], uy[kContacts], uz[kContacts];        // m/s, barrier velocity
-  double s0x[kContacts], s0y[kContacts], s0z[kContacts];     // m, stored spring (zero: none)
-  double vt0x[kContacts], vt0y[kContacts], vt0z[kContacts];  // m/s, stored tangential velocity
-  double E[kContacts], G[kContacts];                          // Pa, E*, G*
-  double r[kContacts], m[kContacts];                          // m, kg: r* = R, m* = m
-  // --- the law's results (contact_law)
-  double fx[kContacts], fy[kContacts], fz[kContacts];        // N, force on the particle
-  double tx[kContacts], ty[kContacts], tz[kContacts];        // N m, r_P x f_t
-  double sx[kContacts], sy[kContacts], sz[kContacts];        // m, spring for the next step
-  double vtx[kContacts], vty[kContacts], vtz[kContacts];     // m/s, tangential velocity
-  double fn[kContacts];                                       // N, net normal force
-  double energy[kContacts];                                   // J, elastic energy
-  double damping[kContacts];                                  // W, dashpot power
-  double friction[kContacts];                                 // W, sliding power
-  std::int64_t slip[kContacts];                               // 1 when sliding (8 bytes, like SlipDecision)
-
-  // Room for one more particle with all its contacts.
-  bool room() const { return count + kSlots <= kContacts && particles < kContacts; }
-  // Contacts rounded up to whole vectors.
-  std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }
-};
 
 namespace {
 
 // Pa, from the summed force on element e.
 double element_pressure(const Barriers& b, std::size_t e) { return -dot(b.force[e], b.normal[e]) / b.area[e]; }
-
-// The lanes past count repeat the last contact (count >= 1), so the law computes finite values
-// nobody reads.
-void pad(BarrierBatch& b) {
-  const std::size_t l = b.count - 1;
-  for (std::size_t t = b.count; t < b.lanes(); ++t) {
-    b.decide[t] = b.decide[l];
-    b.overlap[t] = b.overlap[l];
-    b.nx[t] = b.nx[l], b.ny[t] = b.ny[l], b.nz[t] = b.nz[l];
-    b.vx[t] = b.vx[l], b.vy[t] = b.vy[l], b.vz[t] = b.vz[l];
-    b.wx[t] = b.wx[l], b.wy[t] = b.wy[l], b.wz[t] = b.wz[l];
-    b.ux[t] = b.ux[l], b.uy[t] = b.uy[l], b.uz[t] = b.uz[l];
-    b.s0x[t] = b.s0x[l], b.s0y[t] = b.s0y[l], b.s0z[t] = b.s0z[l];
-    b.vt0x[t] = b.vt0x[l], b.vt0y[t] = b.vt0y[l], b.vt0z[t] = b.vt0z[l];
-    b.E[t] = b.E[l], b.G[t] = b.G[l], b.r[t] = b.r[l], b.m[t] = b.m[l];
-  }
-}
-
-// The Hertz-Mindlin law (physics.md sections 5-7) of every contact of the batch: the very
-// expressions of the one-contact form, lane by lane (vectorised; the laws are branch-free).
-void contact_law(const ContactModel& law, const EvalRequest& req, BarrierBatch& b) {
-  pad(b);
-  const double dt = req.dt, phi = req.phi;
-  const double xi_n = law.xi_n, xi_t = law.xi_t, mu_s = law.mu_s, mu_d = law.mu_d;
-  for (std::size_t t = 0; t < b.lanes(); ++t) {
-    const Vec3 nrm{b.nx[t], b.ny[t], b.nz[t]};
-    const double r = b.r[t];
-    const Vec3 rP = -r * nrm;
-    const Vec3 vrel = contact_relative_velocity_barrier({b.vx[t], b.vy[t], b.vz[t]}, {b.wx[t], b.wy[t], b.wz[t]}, rP,
-                                                        {b.ux[t], b.uy[t], b.uz[t]});
-    const double vn = normal_rate(vrel, nrm);
-    const Vec3 vt = tangential_part(vrel, nrm);
-    // (49)-(50), (65), (67) sharing one sqrt(r* delta).
-    const ContactCoefficients cc = contact_coefficients(b.E[t], b.G[t], r, b.m[t], xi_n, xi_t, b.overlap[t]);
-    const NormalForce fn = damped_normal_force(cc.f_el, cc.d_n, vn);
-    const Vec3 s0 = project_spring({b.s0x[t], b.s0y[t], b.s0z[t]}, nrm);
-    const Vec3 vt0{b.vt0x[t], b.vt0y[t], b.vt0z[t]};
-    const TangentialResult ft = tangential_force(s0, dt * ((1.0 - phi) * vt0 + phi * vt), vt, cc.k_t, cc.d_t, mu_s,
-                                                 mu_d, fn.magnitude, b.decide[t]);
-    const Vec3 f = fn.magnitude * nrm + ft.force;
-    const Vec3 arm = cross(rP, ft.force);
-    b.fx[t] = f.x, b.fy[t] = f.y, b.fz[t] = f.z;
-    b.tx[t] = arm.x, b.ty[t] = arm.y, b.tz[t] = arm.z;
-    b.sx[t] = ft.spring.x, b.sy[t] = ft.spring.y, b.sz[t] = ft.spring.z;
-    b.vtx[t] = vt.x, b.vty[t] = vt.y, b.vtz[t] = vt.z;
-    b.fn[t] = fn.magnitude;
-    b.energy[t] = hertz_energy_from_force(cc.f_el, b.overlap[t]) + 0.5 * cc.k_t * norm2(ft.spring);
-    b.damping[t] = fn.dissipated_power + (ft.slipped ? 0.0 : ft.dissipated_power);
-    b.friction[t] = ft.slipped ? ft.dissipated_power : 0.0;
-    b.slip[t] = ft.slipped ? 1 : 0;
-  }
-}
 
 }  // namespace
 
@@ -324,7 +228,7 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
 void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch,
                             std::array<double, 5>& acc) {
   if (batch.particles == 0) return;
-  if (batch.count > 0) contact_law(law_, req, batch);
+  if (batch.count > 0) barrier_contact_law(law_, req, batch);
   // In particle order, each particle's contacts in order: the original per-particle sums.
   const bool rolling = !(law_.mu_r <= 0.0);  // rolling_resistance_torque's own test
   const double dt = req.dt;

@@ -32,7 +32,7 @@
 
 namespace mpdem {
 
-struct BarrierBatch;  // contacts evaluated together (barrier_contacts.cpp)
+struct BarrierBatch;  // contacts evaluated together (sim/barrier_batch.hpp)
 
 class BarrierContacts {
  public:

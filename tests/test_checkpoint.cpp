@@ -69,6 +69,15 @@ void advance(Simulation& sim, bool adaptive, int steps) {
   }
 }
 
+// The bytes of a checkpoint written after 5 steps of granular_scene, kept as dir/ck.bin.
+std::string written_checkpoint(const fs::path& dir) {
+  Scene s = granular_scene(false);
+  Simulation sim(s, RunOptions{{}, false, false});
+  advance(sim, false, 5);
+  sim.write_checkpoint(dir / "ck.bin");
+  return test::slurp(dir / "ck.bin");
+}
+
 std::vector<PairHistory> sorted_history(Simulation& sim) {
   auto h = sim.interactions().particle_contacts().export_history(sim.particles(), sim.interactions().search());
   for (PairHistory& r : h)
@@ -142,11 +151,7 @@ TEST(Checkpoint, ResumedRunIsBitwiseIdentical) {
 
 TEST(Checkpoint, CorruptOrForeignFileIsAClearError) {
   const fs::path dir = test::fresh_dir("checkpoint_bad");
-  Scene s = granular_scene(false);
-  Simulation sim(s, RunOptions{{}, false, false});
-  advance(sim, false, 5);
-  sim.write_checkpoint(dir / "ck.bin");
-  const std::string good = test::slurp(dir / "ck.bin");
+  const std::string good = written_checkpoint(dir);
   test::write_text(dir / "truncated.bin", good.substr(0, good.size() / 2));
   test::write_text(dir / "text.bin", "hello");
   for (const char* f : {"truncated.bin", "text.bin", "missing.bin"}) {
@@ -164,11 +169,7 @@ TEST(Checkpoint, CorruptOrForeignFileIsAClearError) {
 
 TEST(Checkpoint, OtherFormatVersionIsRefusedNamingTheFormat) {
   const fs::path dir = test::fresh_dir("checkpoint_version");
-  Scene s = granular_scene(false);
-  Simulation sim(s, RunOptions{{}, false, false});
-  advance(sim, false, 5);
-  sim.write_checkpoint(dir / "ck.bin");
-  std::string bytes = test::slurp(dir / "ck.bin");
+  std::string bytes = written_checkpoint(dir);
   ASSERT_EQ(bytes.substr(0, 7), "MPDEMCK");
   bytes[7] = '1';  // a file of the format before the per-index barrier history
   test::write_text(dir / "old.bin", bytes);

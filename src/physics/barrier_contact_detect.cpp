@@ -209,7 +209,7 @@ void detect(const Barriers& bars, const BarrierTopology& topo, const TriOf& tri_
     // Centre on the mid-surface: the direction is undefined, take the element normal.
     o.normal = dist > 0.0 ? d / dist : t.tn.n / std::sqrt(n2);
   }
-  if (out.size() >= 2) finish(bars, topo, R, out);  // the call only when there is work
+  finish(bars, topo, R, out);
 }
 
 }  // namespace

@@ -7,8 +7,6 @@
 #include <stdexcept>
 
 #include "core/parallel.hpp"
-#include "physics/contact_coefficients.hpp"
-#include "physics/contact_geometry.hpp"
 #include "physics/hertz.hpp"
 #include "physics/rolling.hpp"
 #include "physics/tangential.hpp"
@@ -58,10 +56,6 @@ template <int write = 0, class T>
   prefetch_bytes<sizeof(BarrierSlot), 1>(store.tentative(k));
   prefetch_bytes<sizeof(BarrierLoad), 1>(store.loads(k));
 }
-}  // namespace
-
-
-namespace {
 
 // Pa, from the summed force on element e.
 double element_pressure(const Barriers& b, std::size_t e) { return -dot(b.force[e], b.normal[e]) / b.area[e]; }

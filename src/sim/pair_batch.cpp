@@ -81,6 +81,13 @@ struct Batch {
   Vec3 vt(std::size_t t) const { return {vtx[t], vty[t], vtz[t]}; }
 };
 
+// A commit forgets the history of slot k, whose pair is apart.
+void forget_history(const PairPass& q, std::size_t k) {
+  q.spring[k] = Vec3{};
+  if (q.vt0) q.vt0[k] = Vec3{};
+  if (q.wr0) q.wr0[k] = Vec3{};
+}
+
 // Stage 1a: the members' values for the batch (indexed loads). Kept scalar: vectorised, the
 // compiler emulates the gathers element by element, which is slower than plain loads.
 MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
@@ -191,11 +198,7 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
   for (std::size_t t = 0; t < b.count; ++t) {
     const std::size_t i = b.i[t], j = b.j[t], k = b.slot[t];
     if (!(b.overlap[t] > 0.0)) {  // a candidate within the margin but apart: forget its history
-      if (q.commit) {
-        q.spring[k] = Vec3{};
-        if (q.vt0) q.vt0[k] = Vec3{};
-        if (q.wr0) q.wr0[k] = Vec3{};
-      }
+      if (q.commit) forget_history(q, k);
       continue;
     }
     if (q.iteration == 1) q.slipped[k] = static_cast<std::uint8_t>(b.slip[t]);
@@ -266,11 +269,7 @@ void select_scalar(const PairPass& q, Batch& b, std::size_t k, std::size_t cnt, 
       // Only a contact that just opened has history to forget (rare): store only then.
       const Vec3& s0 = q.spring[k];
       const bool held = (s0.x != 0.0) | (s0.y != 0.0) | (s0.z != 0.0) | (q.vt0 != nullptr) | (q.wr0 != nullptr);
-      if (!cand & held) {
-        q.spring[k] = Vec3{};
-        if (q.vt0) q.vt0[k] = Vec3{};
-        if (q.wr0) q.wr0[k] = Vec3{};
-      }
+      if (!cand & held) forget_history(q, k);
     }
   }
 }
@@ -330,12 +329,8 @@ void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_t cnt, 
     const unsigned bits = nonzero(0) | (nonzero(1) << 8) | (nonzero(2) << 16);
     held = _pext_u32(bits | (bits >> 1) | (bits >> 2), 0x249249u);  // bit 3s of each slot s
   }
-  for (unsigned stale = held & lanes & ~static_cast<unsigned>(cand); stale != 0; stale &= stale - 1) {
-    const std::size_t ks = k + static_cast<std::size_t>(std::countr_zero(stale));
-    q.spring[ks] = Vec3{};
-    if (q.vt0) q.vt0[ks] = Vec3{};
-    if (q.wr0) q.wr0[ks] = Vec3{};
-  }
+  for (unsigned stale = held & lanes & ~static_cast<unsigned>(cand); stale != 0; stale &= stale - 1)
+    forget_history(q, k + static_cast<std::size_t>(std::countr_zero(stale)));
 }
 #endif
 

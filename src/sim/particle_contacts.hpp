@@ -2,11 +2,10 @@
 // ParticleContacts: Hertz-Mindlin contacts between particles (physics.md sections 5-6) over the
 // Verlet pair list, with the tangential spring history of every pair.
 //
-// Each pair slot k of the list holds the committed spring s [m] and the tangential velocity at
-// the start of the step vt0 [m/s]; an evaluation computes tentative springs, and a commit
-// evaluation stores them. Pair forces are written per slot and gathered per particle in a fixed
-// order (own slots, then incoming slots), so totals do not depend on the thread count and
-// f_ji = -f_ij holds exactly.
+// Each pair slot k of the list holds the committed spring s [m] (the trapezoidal rule also the
+// tangential velocity at the start of the step vt0 [m/s]); only a commit evaluation updates them,
+// in place. Forces are added block by block in slot order (neighbor/pair_blocks.hpp,
+// sim/pair_batch.hpp), so totals do not depend on the thread count and f_ji = -f_ij exactly.
 #include <cstdint>
 #include <vector>
 

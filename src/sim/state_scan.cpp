@@ -22,14 +22,8 @@ void scan_range_lanes(const Vec3* __restrict x, const Vec3* __restrict v, const 
     lane[1][l] += 0.5 * I[i] * norm2(w[i]);
     lane[2][l] -= m[i] * dot(g, x[i]);
     if constexpr (kElectric) lane[3][l] -= q[i] * dot(E, x[i]);
-    // finite_state and inside_domain, with & for && (no branch).
-    const auto fin = [](const Vec3& a) { return std::isfinite(a.x) & std::isfinite(a.y) & std::isfinite(a.z); };
-    const bool finite = fin(x[i]) & fin(v[i]) & fin(w[i]) & std::isfinite(T[i]);
-    const Vec3& c = x[i];
-    const bool inside = (!d.bounded) | ((c.x >= d.min.x) & (c.x <= d.max.x) & (c.y >= d.min.y) & (c.y <= d.max.y) &
-                                      (c.z >= d.min.z) & (c.z <= d.max.z));
-    lane[4][l] += finite ? 0.0 : 1.0;
-    lane[5][l] += inside ? 0.0 : 1.0;
+    lane[4][l] += finite_state(x[i], v[i], w[i], T[i]) ? 0.0 : 1.0;
+    lane[5][l] += inside_domain(d, x[i]) ? 0.0 : 1.0;
   };
   std::size_t i = lo;
   for (; i + kLanes <= hi; i += kLanes)

@@ -14,15 +14,17 @@
 namespace mpdem {
 
 // True when x lies in the closed box of a bounded domain (always true when unbounded).
+// & and | rather than && and ||: no branch, so the scan's loop vectorises.
 inline bool inside_domain(const DomainParams& d, const Vec3& x) {
-  return !d.bounded || (x.x >= d.min.x && x.x <= d.max.x && x.y >= d.min.y && x.y <= d.max.y && x.z >= d.min.z &&
-                        x.z <= d.max.z);
+  return (!d.bounded) | ((x.x >= d.min.x) & (x.x <= d.max.x) & (x.y >= d.min.y) & (x.y <= d.max.y) &
+                         (x.z >= d.min.z) & (x.z <= d.max.z));
 }
 
-// True when particle i's position, velocity, spin and temperature are all finite.
-inline bool finite_state(const Particles& p, std::size_t i) {
-  return isfinite(p.x[i]) && isfinite(p.v[i]) && isfinite(p.w[i]) && std::isfinite(p.T[i]);
+// True when a particle's position, velocity, spin and temperature are all finite.
+inline bool finite_state(const Vec3& x, const Vec3& v, const Vec3& w, double T) {
+  return isfinite(x) & isfinite(v) & isfinite(w) & std::isfinite(T);
 }
+inline bool finite_state(const Particles& p, std::size_t i) { return finite_state(p.x[i], p.v[i], p.w[i], p.T[i]); }
 
 struct StateScan {
   ParticleEnergy energy;        // J, kinetic, rotational, gravitational

@@ -72,9 +72,11 @@ struct ImpactResult {
 };
 
 // Head-on impact of two equal spheres along x, closing speed v; restitution e (1: no damping).
-ImpactResult head_on(Integrator integ, double v, double e, double steps_per_tc) {
+// Sphere 2 may have its own elastic constants (E2, nu2; E_star is then the pair's).
+ImpactResult head_on(Integrator integ, double v, double e, double steps_per_tc, double E2 = kE, double nu2 = kNu) {
   const double m = sphere_mass(kR);
-  const HertzClosedForm h = hertz_closed_form(0.5 * m, pair_E_star(), 0.5 * kR, v);
+  const double E_star = 1.0 / ((1.0 - kNu * kNu) / kE + (1.0 - nu2 * nu2) / E2);  // (51)
+  const HertzClosedForm h = hertz_closed_form(0.5 * m, E_star, 0.5 * kR, v);
   const double dt = h.t_c / steps_per_tc;
   Scene s = base_scene(integ, dt);
   if (e < 1.0)
@@ -83,7 +85,9 @@ ImpactResult head_on(Integrator integ, double v, double e, double steps_per_tc) 
     s.model.params.contact.particle_particle.damping_ratio = 0.0;
   const double gap = 3.3 * v * dt;  // contact starts within a few steps
   test::add_particle(s, 1, kR, {-kR - 0.5 * gap, 0.0, 0.0}, {0.5 * v, 0.0, 0.0});
-  test::add_particle(s, 2, kR, {kR + 0.5 * gap, 0.0, 0.0}, {-0.5 * v, 0.0, 0.0});
+  const std::size_t second = test::add_particle(s, 2, kR, {kR + 0.5 * gap, 0.0, 0.0}, {-0.5 * v, 0.0, 0.0});
+  s.particles.young[second] = E2;
+  s.particles.poisson[second] = nu2;
   Simulation sim(s, RunOptions{{}, false, false});
   Particles& p = sim.particles();
   const Vec3 P0 = test::momentum(p);
@@ -136,6 +140,27 @@ TEST(HeadOnImpact, MatchesHertzClosedForms) {
       EXPECT_NEAR(r.v2, 0.5 * v, 1e-4 * v) << name(integ);
       EXPECT_LT(r.momentum_error, 1e-12);  // pair forces are equal and opposite
     }
+  }
+}
+
+// Two materials (E 1e7 and 4e7 Pa, nu 0.3 and 0.2): the pair kernel's general path, which forms
+// E* (51) and G* from both particles' constants (one material takes a path with constant E*, G*).
+// Same closed forms and tolerances as above, with the pair's E*.
+TEST(HeadOnImpact, TwoMaterialsMatchHertzWithThePairModulus) {
+  const double E2 = 4.0 * kE, nu2 = 0.2;
+  const double E_star = 1.0 / ((1.0 - kNu * kNu) / kE + (1.0 - nu2 * nu2) / E2);
+  ASSERT_GT(E_star / pair_E_star(), 1.5);  // clearly not the one-material value
+  for (Integrator integ : {Integrator::Verlet, Integrator::Trapezoidal}) {
+    const double v = 1.0, m = sphere_mass(kR);
+    const HertzClosedForm h = hertz_closed_form(0.5 * m, E_star, 0.5 * kR, v);
+    const ImpactResult r = head_on(integ, v, 1.0, 1000.0, E2, nu2);
+    const double eF = r.F_max / h.F_max - 1.0, eD = r.delta_max / h.delta_max - 1.0, eT = r.t_c / h.t_c - 1.0;
+    std::printf("[%s two materials] F_max err %.2e, delta_max err %.2e, t_c err %.2e\n", name(integ), eF, eD, eT);
+    EXPECT_LT(std::abs(eF), 0.005) << name(integ);
+    EXPECT_LT(std::abs(eD), 0.005) << name(integ);
+    EXPECT_LT(std::abs(eT), 0.01) << name(integ);
+    EXPECT_NEAR(r.v1, -0.5 * v, 1e-4 * v) << name(integ);
+    EXPECT_NEAR(r.v2, 0.5 * v, 1e-4 * v) << name(integ);
   }
 }
 
@@ -313,6 +338,66 @@ TEST(NewtonThirdLaw, ClusterForceAndAngularMomentumBalance) {
 // Relabelling: the same cluster with the input order reversed-and-shuffled and new ids ends in
 // the same state, matched by id, within 1e-12 relative (positions relative to R, velocities to
 // the largest speed, spins to the largest spin).
+namespace {
+
+// Largest differences between the states of sphere ids_a[k] in a and ids_b[k] in b: position
+// relative to kR, velocity and spin relative to a's largest.
+struct StateDifference {
+  double x = 0.0, v = 0.0, w = 0.0;
+};
+StateDifference difference_by_id(const Particles& a, const Particles& b, const std::vector<std::int64_t>& ids_a,
+                                 const std::vector<std::int64_t>& ids_b) {
+  double vmax = 0.0, wmax = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    vmax = std::max(vmax, norm(a.v[i]));
+    wmax = std::max(wmax, norm(a.w[i]));
+  }
+  StateDifference d;
+  for (std::size_t k = 0; k < ids_a.size(); ++k) {
+    const std::size_t i = test::index_of(a, ids_a[k]), j = test::index_of(b, ids_b[k]);
+    EXPECT_LT(i, a.size());
+    EXPECT_LT(j, b.size());
+    if (i >= a.size() || j >= b.size()) return {1.0, 1.0, 1.0};
+    d.x = std::max(d.x, norm(a.x[i] - b.x[j]) / kR);
+    d.v = std::max(d.v, norm(a.v[i] - b.v[j]) / vmax);
+    d.w = std::max(d.w, norm(a.w[i] - b.w[j]) / wmax);
+  }
+  return d;
+}
+
+}  // namespace
+
+// The one-material path (constant E*, G*, d_t from d_n's square root) against the general one:
+// the frictional, rolling cluster run alone, and again with a distant 19th sphere of another
+// material, which touches nothing but makes the kernel take the general path. The 18 spheres'
+// states after 800 steps agree to 1e-9 of their scales (the two paths differ only in rounding).
+TEST(MixedMaterials, OneMaterialPathEqualsTheGeneralPath) {
+  for (Integrator integ : {Integrator::Verlet, Integrator::Trapezoidal}) {
+    const double dt = 1e-6;
+    const int n = 18;
+    std::vector<std::int64_t> ids(n);
+    std::iota(ids.begin(), ids.end(), 1);
+    Scene sa = cluster(integ, dt, identity(n), ids);
+    Scene sb = cluster(integ, dt, identity(n), ids);
+    const std::size_t far = test::add_particle(sb, 99, kR, {1.0, 1.0, 1.0});
+    sb.particles.young[far] = 3.0 * kE;
+    sb.particles.poisson[far] = 0.25;
+    Simulation A(sa, RunOptions{{}, false, false}), B(sb, RunOptions{{}, false, false});
+    for (int k = 0; k < 800; ++k) {
+      A.advance(dt);
+      B.advance(dt);
+    }
+    const std::size_t touching = A.interactions().stats().contacts_pp;
+    EXPECT_GT(touching, 10u) << "the cluster must be in contact";
+    EXPECT_EQ(B.interactions().stats().contacts_pp, touching);
+    const StateDifference d = difference_by_id(A.particles(), B.particles(), ids, ids);
+    std::printf("[%s] one-material vs general path: x %.1e, v %.1e, w %.1e\n", name(integ), d.x, d.v, d.w);
+    EXPECT_LT(d.x, 1e-9) << name(integ);
+    EXPECT_LT(d.v, 1e-9) << name(integ);
+    EXPECT_LT(d.w, 1e-9) << name(integ);
+  }
+}
+
 TEST(Relabelling, FinalStatesMatchById) {
   for (Integrator integ : {Integrator::Verlet, Integrator::Trapezoidal}) {
     const double dt = 1e-6;
@@ -332,28 +417,12 @@ TEST(Relabelling, FinalStatesMatchById) {
       A.advance(dt);
       B.advance(dt);
     }
-    const Particles& pa = A.particles();
-    const Particles& pb = B.particles();
-    double vmax = 0.0, wmax = 0.0;
-    for (std::size_t i = 0; i < pa.size(); ++i) {
-      vmax = std::max(vmax, norm(pa.v[i]));
-      wmax = std::max(wmax, norm(pa.w[i]));
-    }
-    double ex = 0.0, ev = 0.0, ew = 0.0;
-    for (int k = 0; k < n; ++k) {
-      const std::size_t i = test::index_of(pa, ids_a[static_cast<std::size_t>(k)]);
-      const std::size_t j = test::index_of(pb, ids_b[static_cast<std::size_t>(k)]);
-      ASSERT_LT(i, pa.size());
-      ASSERT_LT(j, pb.size());
-      ex = std::max(ex, norm(pa.x[i] - pb.x[j]) / kR);
-      ev = std::max(ev, norm(pa.v[i] - pb.v[j]) / vmax);
-      ew = std::max(ew, norm(pa.w[i] - pb.w[j]) / wmax);
-    }
-    std::printf("[%s] relabelled: max rel diff x %.2e v %.2e w %.2e; contacts %zu\n", name(integ), ex, ev, ew,
+    const StateDifference d = difference_by_id(A.particles(), B.particles(), ids_a, ids_b);
+    std::printf("[%s] relabelled: max rel diff x %.2e v %.2e w %.2e; contacts %zu\n", name(integ), d.x, d.v, d.w,
                 A.interactions().stats().contacts_pp);
-    EXPECT_LT(ex, 1e-12);
-    EXPECT_LT(ev, 1e-12);
-    EXPECT_LT(ew, 1e-12);
+    EXPECT_LT(d.x, 1e-12);
+    EXPECT_LT(d.v, 1e-12);
+    EXPECT_LT(d.w, 1e-12);
   }
 }
 

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "core/parallel.hpp"
+#include "neighbor/pair_blocks.hpp"
 #include "sim/pair_batch.hpp"
 #include "integrate/verlet.hpp"
 #include "sim/interactions.hpp"
@@ -474,6 +475,7 @@ TEST(NeighborEngine, VectorAndScalarCandidateSelectionAgreeBitwise) {
 
 TEST(NeighborEngine, BitwiseIdenticalForOneAndTwoThreads) {
   static_assert(20 * 20 * 14 > 2 * kParallelThreshold, "the scene must take the parallel paths");
+  static_assert(20 * 20 * 14 > PairBlocks::kBlock, "the scene must have pairs across blocks, one block per thread");
   for (Integrator integ : {Integrator::Verlet, Integrator::Trapezoidal}) {
     const int steps = integ == Integrator::Verlet ? 100 : 25;
     const Snapshot one = run_threads(1, integ, steps);

@@ -19,10 +19,12 @@
 namespace mpdem {
 namespace {
 
-// A random dense cloud of 3000 spheres (three blocks), radii 1-5 mm.
+// A random dense cloud of n spheres, radii 1-5 mm, 3000 in an 80 mm cube (the same density
+// for any n).
 VerletList random_list(std::size_t n, unsigned seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 0.08), rr(1e-3, 5e-3);
+  const double side = 0.08 * std::cbrt(static_cast<double>(n) / 3000.0);
+  std::uniform_real_distribution<double> u(0.0, side), rr(1e-3, 5e-3);
   std::vector<Vec3> x(n);
   std::vector<double> r(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -35,7 +37,7 @@ VerletList random_list(std::size_t n, unsigned seed) {
 }
 
 TEST(PairBlocks, CrossPairsAreNumberedInSlotOrderAndListedAtTheirSecondMember) {
-  const std::size_t n = 3000;
+  const std::size_t n = 2 * PairBlocks::kBlock + PairBlocks::kBlock / 2;  // three blocks, the last partial
   const VerletList list = random_list(n, 3);
   PairBlocks blocks;
   blocks.build(list);

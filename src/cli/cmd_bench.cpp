@@ -161,6 +161,9 @@ int bench_command(const BenchArgs& args) {
   fmt::print("  neighbour rebuilds (timed) {}\n", rebuilds);
   fmt::print("  listed pairs per particle  {:.3f}\n",
              n ? static_cast<double>(sim.interactions().search().pairs().num_pairs()) / static_cast<double>(n) : 0.0);
+  fmt::print("  listed pairs across blocks {:.1f}% (their second member's share goes through a buffer)\n",
+             100.0 * static_cast<double>(sim.interactions().search().blocks().num_cross()) /
+                 std::max(1.0, static_cast<double>(sim.interactions().search().pairs().num_pairs())));
   fmt::print("  contacts per particle      {:.3f} (coordination 2 pp/N; pp/N = {:.3f}, walls/N = {:.3f})\n",
              coordination, pp_per_particle, pb_per_particle);
   fmt::print("  final kinetic energy       {:.4g} J, top of bed z = {:.6g} m\n", ke, zmax);

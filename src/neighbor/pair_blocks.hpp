@@ -22,7 +22,7 @@ namespace mpdem {
 
 class PairBlocks {
  public:
-  static constexpr std::size_t kBlock = 1024;  // particles per block (a fixed constant: results
+  static constexpr std::size_t kBlock = 4096;  // particles per block (a fixed constant: results
                                                // must not depend on it changing with threads)
 
   void build(const VerletList& list);

@@ -28,6 +28,23 @@ inline ContactCoefficients contact_coefficients(double E_star, double G_star, do
   return c;
 }
 
+// The same for a pair of materials whose E*, G* are known beforehand, with
+// shear_root = sqrt(4 G*/E*) = sqrt(k_t/k_n): d_t = 2 xi_t sqrt(m* k_n) shear_root shares the
+// normal damping's square root.
+inline ContactCoefficients contact_coefficients_fixed_moduli(double E_star, double G_star, double shear_root,
+                                                             double r_star, double m_star, double xi_n, double xi_t,
+                                                             double overlap) {
+  ContactCoefficients c;
+  const double root = std::sqrt(r_star * overlap);  // m
+  c.k_n = 2.0 * E_star * root;
+  c.f_el = (2.0 / 3.0) * c.k_n * overlap;
+  const double mass_root = std::sqrt(m_star * c.k_n);  // sqrt(kg N/m)
+  c.d_n = 2.0 * xi_n * mass_root;
+  c.k_t = 8.0 * G_star * root;
+  c.d_t = 2.0 * xi_t * mass_root * shear_root;
+  return c;
+}
+
 // Elastic energy of the Hertz contact 8/15 E* sqrt(r*) d^(5/2) = 2/5 f_el d (section 12)   [J]
 inline double hertz_energy_from_force(double f_el, double overlap) { return 0.4 * f_el * overlap; }
 

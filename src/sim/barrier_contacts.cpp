@@ -103,8 +103,11 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
     std::vector<BarrierContact> found;             // per thread, reused by its particles
     found.reserve(kSlots);
     const auto batch = std::make_unique<BarrierBatch>();  // per thread (~40 KB: not on the stack)
-#pragma omp for schedule(static)
-    for (std::size_t g = 0; g < groups; ++g) {
+    // Runs of groups with equal numbers of active particles (those near walls cluster in index).
+    const int threads = omp_get_num_threads(), r = omp_get_thread_num();
+    const auto active_before = [&](std::size_t g) { return store_.group_begin(g); };
+    const std::size_t g1 = balanced_split(r + 1, threads, groups, active_before);
+    for (std::size_t g = balanced_split(r, threads, groups, active_before); g < g1; ++g) {
       std::array<double, 5> acc{};
       for (std::size_t k = store_.group_begin(g); k < store_.group_begin(g + 1); ++k) {
         // Prefetch only (no effect on the results): particle data kAhead ahead, and the candidate

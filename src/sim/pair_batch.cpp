@@ -90,6 +90,8 @@ void forget_history(const PairPass& q, std::size_t k) {
 
 // Stage 1a: the members' values for the batch (indexed loads). Kept scalar: vectorised, the
 // compiler emulates the gathers element by element, which is slower than plain loads.
+// kUniform (every particle has the same elastic constants): E* and G* are constants, not sums.
+template <bool kUniform>
 MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
   // Lanes past count repeat the last candidate (run() is called with count >= 1).
   for (std::size_t t = b.count; t < b.lanes(); ++t) {
@@ -99,14 +101,16 @@ MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
   }
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const std::size_t i = b.i[t], j = b.j[t];
-    const double ri = q.radius[i], rj = q.radius[j];
+    const ContactTerms& ti = q.terms[i];
+    const ContactTerms& tj = q.terms[j];
+    const double ri = ti.radius, rj = tj.radius;
     const Vec3 dv = q.v[i] - q.v[j], ws = ri * q.w[i] + rj * q.w[j];  // (x_i - x_j, R_i + R_j: pass 0)
     b.dvx[t] = dv.x, b.dvy[t] = dv.y, b.dvz[t] = dv.z;
     b.wsx[t] = ws.x, b.wsy[t] = ws.y, b.wsz[t] = ws.z;
-    const ContactTerms& ti = q.terms[i];
-    const ContactTerms& tj = q.terms[j];
-    b.sc[t] = ti.compliance + tj.compliance;
-    b.ss[t] = ti.shear_compliance + tj.shear_compliance;
+    if constexpr (!kUniform) {
+      b.sc[t] = q.compliance[i].normal + q.compliance[j].normal;
+      b.ss[t] = q.compliance[i].shear + q.compliance[j].shear;
+    }
     b.sr[t] = ti.inv_radius + tj.inv_radius;
     b.sm[t] = ti.inv_mass + tj.inv_mass;
   }
@@ -115,9 +119,11 @@ MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
 // Stage 1 (60)-(62): overlap, normal, relative velocity at the contact point; and the normal
 // law (49)-(50), (65), (67) (an apart candidate, overlap 0, gets zero coefficients). One loop:
 // the intermediate values stay in registers.
+template <bool kUniform>
 void geometry_normal(const PairPass& q, Batch& b) {
   const double xi_n = q.law.xi_n, xi_t = q.law.xi_t;
-  gather_members(q, b);
+  const UniformModuli u = q.uniform;
+  gather_members<kUniform>(q, b);
   // 1b. The arithmetic, over contiguous arrays (vectorised).
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const Vec3 d{b.dx[t], b.dy[t], b.dz[t]};
@@ -130,10 +136,9 @@ void geometry_normal(const PairPass& q, Batch& b) {
     b.nx[t] = nrm.x;
     b.ny[t] = nrm.y;
     b.nz[t] = nrm.z;
-    const double E = 1.0 / b.sc[t];  // (51)
-    const double G = 1.0 / b.ss[t];  // Mindlin G*
-    const double r = 1.0 / b.sr[t];  // (52)
-    const double m = 1.0 / b.sm[t];  // (53)
+    // r* (52) and m* (53) from one division: 1/a = b/(a b).
+    const double inv_rm = 1.0 / (b.sr[t] * b.sm[t]);
+    const double r = b.sm[t] * inv_rm, m = b.sr[t] * inv_rm;
     b.r[t] = r;
     // (60) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
     const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
@@ -142,7 +147,9 @@ void geometry_normal(const PairPass& q, Batch& b) {
     b.vtx[t] = vt.x;
     b.vty[t] = vt.y;
     b.vtz[t] = vt.z;
-    const ContactCoefficients cc = contact_coefficients(E, G, r, m, xi_n, xi_t, b.overlap[t]);
+    const ContactCoefficients cc =
+        kUniform ? contact_coefficients_fixed_moduli(u.E_star, u.G_star, u.shear_root, r, m, xi_n, xi_t, b.overlap[t])
+                 : contact_coefficients(1.0 / b.sc[t], 1.0 / b.ss[t], r, m, xi_n, xi_t, b.overlap[t]);  // (51), G*
     const NormalForce fn = damped_normal_force(cc.f_el, cc.d_n, vn);
     b.f_el[t] = cc.f_el;
     b.fn[t] = fn.magnitude;
@@ -193,50 +200,66 @@ void tangential_law(const PairPass& q, Batch& b) {
 }
 
 // Stage 4b: history, rolling resistance (71), the forces and the sums, in slot order.
+// The sums and the arrays' addresses are local: kept in out and q, every store to a particle
+// would make the compiler reload them, and each contact's sums would wait for the previous
+// contact's store (a store-to-load chain through memory).
 void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
-  const bool rolling = q.law.mu_r > 0.0;
+  const bool rolling = q.law.mu_r > 0.0, commit = q.commit, first_iteration = q.iteration == 1;
+  const Vec3* const w = q.w;
+  const ContactTerms* const terms = q.terms;
+  Vec3* const force = q.force;
+  Vec3* const torque = q.torque;
+  Vec3* const cross_force = q.cross_force;
+  Vec3* const cross_torque = q.cross_torque;
+  Vec3* const spring = q.spring;
+  Vec3* const vt0 = q.vt0;
+  Vec3* const wr0 = q.wr0;
+  PairBlockSums s = out;
   for (std::size_t t = 0; t < b.count; ++t) {
     const std::size_t i = b.i[t], j = b.j[t], k = b.slot[t];
     if (!(b.overlap[t] > 0.0)) {  // a candidate within the margin but apart: forget its history
-      if (q.commit) forget_history(q, k);
+      if (commit) forget_history(q, k);
       continue;
     }
-    if (q.iteration == 1) q.slipped[k] = static_cast<std::uint8_t>(b.slip[t]);
+    if (first_iteration) q.slipped[k] = static_cast<std::uint8_t>(b.slip[t]);
     // Rolling resistance against the relative rotation of the step start (the state itself
     // outside the iteration): constant during the iteration (docs/contact_model.md).
     Vec3 roll{}, wrel{};
-    if (rolling || q.wr0) wrel = q.w[i] - q.w[j];
+    if (rolling || wr0) wrel = w[i] - w[j];
     if (rolling)
-      roll = rolling_resistance_torque(q.iteration > 0 ? q.wr0[k] : wrel, q.law.mu_r, b.r[t], b.fn[t],
-                                       rolling_inertia_pair(q.inertia[i], q.inertia[j]), q.dt);
-    if (q.commit) {
-      q.spring[k] = {b.sx[t], b.sy[t], b.sz[t]};
-      if (q.vt0) q.vt0[k] = b.vt(t);
-      if (q.wr0) q.wr0[k] = wrel;
+      roll = rolling_resistance_torque(q.iteration > 0 ? wr0[k] : wrel, q.law.mu_r, b.r[t], b.fn[t],
+                                       rolling_inertia_pair(terms[i].inertia, terms[j].inertia), q.dt);
+    if (commit) {
+      spring[k] = {b.sx[t], b.sy[t], b.sz[t]};
+      if (vt0) vt0[k] = b.vt(t);
+      if (wr0) wr0[k] = wrel;
     }
     const Vec3 f{b.fx[t], b.fy[t], b.fz[t]};
     const Vec3 arm{b.ax[t], b.ay[t], b.az[t]};
-    q.force[i] += f;
-    q.torque[i] += roll - q.radius[i] * arm;
+    const double ri = terms[i].radius, rj = terms[j].radius;
+    force[i] += f;
+    torque[i] += roll - ri * arm;
     // j's share: to j itself, or (cross pair, j in a later block) to the zeroed cross buffer.
     // A select, not a branch: about a third of the contacts are cross pairs, unpredictably.
     const bool internal = b.cross[t] == kInternal;
-    Vec3* fj = (internal ? q.force : q.cross_force) + (internal ? j : b.cross[t]);
-    Vec3* tj = (internal ? q.torque : q.cross_torque) + (internal ? j : b.cross[t]);
+    Vec3* fj = (internal ? force : cross_force) + (internal ? j : b.cross[t]);
+    Vec3* tj = (internal ? torque : cross_torque) + (internal ? j : b.cross[t]);
     *fj -= f;
-    *tj -= roll + q.radius[j] * arm;
-    out.contacts += 1.0;
-    out.elastic_energy += b.energy[t];
-    out.damping_power += b.damping[t];
-    out.friction_power += b.friction[t] - dot(roll, wrel);
+    *tj -= roll + rj * arm;
+    s.contacts += 1.0;
+    s.elastic_energy += b.energy[t];
+    s.damping_power += b.damping[t];
+    s.friction_power += b.friction[t] - dot(roll, wrel);
     // Divide only for a contact deeper than the deepest so far.
-    const double rmin = std::min(q.radius[i], q.radius[j]);
-    if (b.overlap[t] > out.deepest.ratio * rmin) out.deepest = {b.overlap[t] / rmin, q.id[i], q.id[j]};
+    const double rmin = std::min(ri, rj);
+    if (b.overlap[t] > s.deepest.ratio * rmin) s.deepest = {b.overlap[t] / rmin, q.id[i], q.id[j]};
   }
+  out = s;
 }
 
+template <bool kUniform>
 void run(const PairPass& q, Batch& b, PairBlockSums& out) {
-  geometry_normal(q, b);
+  geometry_normal<kUniform>(q, b);
   tangential_law(q, b);
   apply(q, b, out);
   b.count = 0;
@@ -254,7 +277,7 @@ void select_scalar(const PairPass& q, Batch& b, std::size_t k, std::size_t cnt, 
     const bool internal = j < end;
     const std::uint32_t cross = internal ? kInternal : c;
     c += internal ? 0u : 1u;
-    const double reach = q.radius[i] + q.radius[j];
+    const double reach = q.terms[i].radius + q.terms[j].radius;
     const Vec3 d = q.x[i] - q.x[j];
     const bool cand = norm2(d) <= reach * reach * (1.0 + 1e-9);
     const std::size_t t = b.count;
@@ -293,8 +316,9 @@ void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_t cnt, 
                                    _mm512_mask_i32gather_pd(zero, lanes, j3, xb + 1, 8));
   const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, lanes, i3, xb + 2, 8),
                                    _mm512_mask_i32gather_pd(zero, lanes, j3, xb + 2, 8));
-  const __m512d reach = _mm512_add_pd(_mm512_mask_i32gather_pd(zero, lanes, iv, q.radius, 8),
-                                      _mm512_mask_i32gather_pd(zero, lanes, jv, q.radius, 8));
+  const double* rb = &q.terms[0].radius;  // ContactTerms = 4 doubles
+  const __m512d reach = _mm512_add_pd(_mm512_mask_i32gather_pd(zero, lanes, _mm256_slli_epi32(iv, 2), rb, 8),
+                                      _mm512_mask_i32gather_pd(zero, lanes, _mm256_slli_epi32(jv, 2), rb, 8));
   // norm2(d) <= reach^2 (1 + 1e-9) in the scalar order of operations.
   const __m512d d2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
   const __m512d lim = _mm512_mul_pd(_mm512_mul_pd(reach, reach), _mm512_set1_pd(1.0 + 1e-9));
@@ -334,10 +358,9 @@ void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_t cnt, 
 }
 #endif
 
-}  // namespace
-
-PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t cross_first,
-                            std::size_t cross_last) {
+template <bool kUniform>
+PairBlockSums evaluate_block(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t cross_first,
+                             std::size_t cross_last) {
   PairBlockSums out;
   Batch b;
   const auto end = static_cast<std::uint32_t>(PairBlocks::block_end(lo, q.n));
@@ -356,7 +379,14 @@ PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, s
       __builtin_prefetch(&q.v[ja]);
       __builtin_prefetch(&q.w[ja]);
       __builtin_prefetch(&q.terms[ja]);
-      __builtin_prefetch(&q.radius[ja]);
+    }
+    // The slots' springs (read for every slot at a commit) are a sequential stream the hardware
+    // prefetcher does not keep ahead of (about 10% of the pair time on the 100k bed).
+    if (k + kAhead + kGroup <= q.pairs) {
+      const char* sp = reinterpret_cast<const char*>(q.spring + k + kAhead);
+      __builtin_prefetch(sp);
+      __builtin_prefetch(sp + 64);
+      __builtin_prefetch(sp + 128);
     }
     const std::size_t cnt = std::min(kGroup, k1 - k);
 #if MPDEM_VECTOR_SELECT
@@ -367,10 +397,18 @@ PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, s
 #else
     select_scalar(q, b, k, cnt, end, c);
 #endif
-    if (b.count + kGroup > kBatch) run(q, b, out);
+    if (b.count + kGroup > kBatch) run<kUniform>(q, b, out);
   }
-  if (b.count > 0) run(q, b, out);
+  if (b.count > 0) run<kUniform>(q, b, out);
   return out;
+}
+
+}  // namespace
+
+PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t cross_first,
+                            std::size_t cross_last) {
+  return q.uniform.on ? evaluate_block<true>(q, lo, hi, cross_first, cross_last)
+                      : evaluate_block<false>(q, lo, hi, cross_first, cross_last);
 }
 
 }  // namespace mpdem

@@ -16,13 +16,29 @@
 
 namespace mpdem {
 
-// Per-particle halves of the effective properties (51)-(53) and Mindlin's G*: a pair's value
-// is one division, 1/(a_i + a_j).
+// Per-particle values the kernel reads of a neighbour, one 32-byte record (one cache line to
+// fetch): the radius and the halves of (52)-(53), whose pair values are 1/(a_i + a_j).
 struct ContactTerms {
-  double compliance = 0.0;        // 1/Pa, (1 - nu^2)/E
-  double shear_compliance = 0.0;  // 1/Pa, (2 - nu)/G
-  double inv_radius = 0.0;        // 1/m
-  double inv_mass = 0.0;          // 1/kg
+  double radius = 0.0;      // m
+  double inv_radius = 0.0;  // 1/m
+  double inv_mass = 0.0;    // 1/kg
+  double inertia = 0.0;     // kg m^2 (rolling resistance)
+};
+
+// The per-particle halves of (51) and of Mindlin's G*, read only when the particles' elastic
+// constants differ (UniformModuli).
+struct ContactCompliance {
+  double normal = 0.0;  // 1/Pa, (1 - nu^2)/E
+  double shear = 0.0;   // 1/Pa, (2 - nu)/G
+};
+
+// Set when every particle has the same elastic constants (one material, the usual case): E* and
+// G* are then constants, and the tangential damping follows from the normal one's square root.
+struct UniformModuli {
+  bool on = false;
+  double E_star = 0.0;      // Pa, (51)
+  double G_star = 0.0;      // Pa, Mindlin G*
+  double shear_root = 0.0;  // -, sqrt(k_t / k_n) = sqrt(4 G* / E*)
 };
 
 // The deepest contact, relative to the smaller radius.
@@ -46,10 +62,9 @@ struct PairPass {
   const Vec3* __restrict x;                  // [N] m
   const Vec3* __restrict v;                  // [N] m/s
   const Vec3* __restrict w;                  // [N] rad/s
-  const double* __restrict radius;           // [N] m
-  const double* __restrict inertia;          // [N] kg m^2
   const std::int64_t* __restrict id;         // [N]
   const ContactTerms* __restrict terms;      // [N]
+  const ContactCompliance* __restrict compliance;  // [N], or null when uniform.on
   const std::size_t* __restrict off;         // [N+1] half-list CSR offsets
   const std::uint32_t* __restrict idx;       // [pairs] second members
   const std::uint32_t* __restrict first;     // [pairs] first members
@@ -62,6 +77,7 @@ struct PairPass {
   Vec3* __restrict cross_force;              // [cross] N, force on the second member
   Vec3* __restrict cross_torque;             // [cross] N m, torque on the second member
   ContactModel law;
+  UniformModuli uniform;
   double dt = 0.0;                           // s
   double phi = 1.0;                          // -
   int iteration = 0;

@@ -1,6 +1,9 @@
 #include "sim/particle_contacts.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/parallel.hpp"
@@ -24,15 +27,27 @@ void ParticleContacts::ensure_history(std::size_t pairs) {
 void ParticleContacts::refresh_terms(const Particles& p, std::uint64_t generation) {
   const std::size_t n = p.size();
   terms_.resize(n);
+  compliance_.resize(n);
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
     const double nu = p.poisson[i];
-    terms_[i] = {(1.0 - nu * nu) / p.young[i],                      // (51)
-                 (2.0 - nu) / shear_modulus(p.young[i], nu),        // Mindlin G*
-                 1.0 / p.radius[i],                                 // (52)
-                 1.0 / p.mass[i]};                                  // (53)
+    terms_[i] = {p.radius[i], 1.0 / p.radius[i], 1.0 / p.mass[i], p.inertia[i]};  // (52), (53)
+    compliance_[i] = {(1.0 - nu * nu) / p.young[i],                                // (51)
+                      (2.0 - nu) / shear_modulus(p.young[i], nu)};                 // Mindlin G*
   }
   terms_generation_ = generation;
+  // One set of elastic constants for all (the usual single material): E*, G* are constants,
+  // with the values the kernel's sums would give, and the compliances are not needed.
+  const auto differs = [&](const ContactCompliance& c) {
+    return c.normal != compliance_[0].normal || c.shear != compliance_[0].shear;
+  };
+  uniform_ = UniformModuli{};
+  if (n > 0 && std::none_of(compliance_.begin(), compliance_.end(), differs)) {
+    const double E = 1.0 / (compliance_[0].normal + compliance_[0].normal);
+    const double G = 1.0 / (compliance_[0].shear + compliance_[0].shear);
+    uniform_ = {true, E, G, std::sqrt(4.0 * G / E)};
+    compliance_ = {};
+  }
 }
 
 PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req) {
@@ -49,18 +64,42 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   // Constant properties: refreshed only when the particles may have been reordered or changed.
   if (terms_.size() != n || terms_generation_ != search.generation()) refresh_terms(p, search.generation());
 
-  const PairPass q{p.x.data(), p.v.data(), p.w.data(), p.radius.data(), p.inertia.data(), p.id.data(),
-                   terms_.data(), list.offsets().data(), list.indices().data(), blocks.first_members().data(), p.force.data(), p.torque.data(),
+  const PairPass q{p.x.data(), p.v.data(), p.w.data(), p.id.data(),
+                   terms_.data(), uniform_.on ? nullptr : compliance_.data(), list.offsets().data(), list.indices().data(), blocks.first_members().data(), p.force.data(), p.torque.data(),
                    spring_.data(), vt0_.empty() ? nullptr : vt0_.data(), wr0_.empty() ? nullptr : wr0_.data(),
-                   slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_torque_.data(), law_, req.dt, req.phi, req.iteration, req.commit, n, list.num_pairs(), vector_select_};
+                   slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_torque_.data(), law_, uniform_, req.dt, req.phi, req.iteration, req.commit, n, list.num_pairs(), vector_select_};
 
   // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
   const std::size_t nb = blocks.num_blocks();
+  // Each thread takes a run of consecutive blocks of about equal cost, as measured at the last
+  // evaluation (the list's slots before the first): blocks differ (the base of a bed has more
+  // contacts per slot than its top), and so may the threads' cores on a shared machine. Which
+  // thread evaluates a block does not change its sums.
+  const auto& off = list.offsets();
+  if (block_seconds_.size() != nb) {
+    block_seconds_.resize(nb);
+    for (std::size_t b = 0; b < nb; ++b)
+      block_seconds_[b] = 1e-9 * static_cast<double>(off[PairBlocks::block_end(b * PairBlocks::kBlock, n)] -
+                                                     off[b * PairBlocks::kBlock]);
+  }
+  block_cost_.resize(nb + 1);
+  block_cost_[0] = 0.0;
+  for (std::size_t b = 0; b < nb; ++b) block_cost_[b + 1] = block_cost_[b] + block_seconds_[b];
   block_sums_.resize(nb);
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-  for (std::size_t b = 0; b < nb; ++b)
-    block_sums_[b] = contact_block(q, b * PairBlocks::kBlock, PairBlocks::block_end(b * PairBlocks::kBlock, n),
-                                   blocks.cross_base(b), blocks.cross_base(b + 1));
+  const auto cost_before = [&](std::size_t b) { return block_cost_[b]; };
+#pragma omp parallel if (n > kParallelThreshold)
+  {
+    const int threads = omp_get_num_threads(), r = omp_get_thread_num();
+    const std::size_t b1 = balanced_split(r + 1, threads, nb, cost_before);
+    double t0 = omp_get_wtime();
+    for (std::size_t b = balanced_split(r, threads, nb, cost_before); b < b1; ++b) {
+      block_sums_[b] = contact_block(q, b * PairBlocks::kBlock, PairBlocks::block_end(b * PairBlocks::kBlock, n),
+                                     blocks.cross_base(b), blocks.cross_base(b + 1));
+      const double t1 = omp_get_wtime();
+      block_seconds_[b] = t1 - t0;
+      t0 = t1;
+    }
+  }
 
   // 2. The second members' shares of the cross pairs, each in ascending cross index.
   const auto& members = blocks.cross_particles();
@@ -91,7 +130,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
 std::size_t ParticleContacts::memory_bytes() const {
   return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() +
           cross_torque_.capacity()) * sizeof(Vec3) +
-         slipped_.capacity() + terms_.capacity() * sizeof(Terms) + block_sums_.capacity() * sizeof(PairBlockSums);
+         slipped_.capacity() + terms_.capacity() * sizeof(Terms) + compliance_.capacity() * sizeof(ContactCompliance) + block_sums_.capacity() * sizeof(PairBlockSums);
 }
 
 ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborSearch& search) {

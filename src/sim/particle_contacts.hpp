@@ -80,7 +80,7 @@ class ParticleContacts {
   // For tests: choose the scalar candidate selection even when the AVX-512 one is built in.
   void use_vector_select(bool on) { vector_select_ = on; }
 
-  using Terms = ContactTerms;  // per-particle halves of (51)-(53), sim/pair_batch.hpp
+  using Terms = ContactTerms;  // per-particle values of the kernel, sim/pair_batch.hpp
 
  private:
   void ensure_history(std::size_t pairs);
@@ -98,8 +98,12 @@ class ParticleContacts {
   std::vector<Vec3> cross_force_;    // N
   std::vector<Vec3> cross_torque_;   // N m
   std::vector<Terms> terms_;         // [N], from the particles' constant properties
+  std::vector<ContactCompliance> compliance_;  // [N], or empty when uniform_.on
   std::uint64_t terms_generation_ = 0;  // NeighborSearch::generation() they were computed at
+  UniformModuli uniform_;            // set when all terms_ have the same elastic constants
   std::vector<PairBlockSums> block_sums_;  // [blocks]
+  std::vector<double> block_seconds_;      // [blocks] s, each block's time at the last evaluation
+  std::vector<double> block_cost_;         // [blocks + 1] s, their sum before each block (thread shares)
   OverlapReport deepest_;
   bool vector_select_ = true;
 };

@@ -156,17 +156,19 @@ OverlapReport Interactions::max_overlap(const Particles& p, const Barriers& b) c
 
 void Interactions::start_accumulators(Particles& p) const {
   // One pass: the field forces start the force sums, torque and heat start at zero.
-  // Without electric or magnetic field the charges and velocities are not read (memory traffic
-  // is what a pass over 10^5 particles costs).
+  // Without electric or magnetic field the charges and velocities are not read, and without heat
+  // transfer the heat flows (zero, never written) are not touched: memory traffic is what a pass
+  // over 10^5 particles costs.
   const FieldParams& f = model_.params.fields;
   const bool charged = norm2(f.electric) > 0.0 || norm2(f.magnetic) > 0.0;
+  const bool thermal = heat_ != nullptr;
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
     p.force[i] = gravity_force(p.mass[i], f.gravity);
     if (charged) p.force[i] += electric_force(p.charge[i], f.electric) + magnetic_force(p.charge[i], p.v[i], f.magnetic);
     p.torque[i] = Vec3{};
-    p.heat[i] = 0.0;
+    if (thermal) p.heat[i] = 0.0;
   }
 }
 

@@ -50,7 +50,8 @@ struct Batch {
   double dvx[kBatch], dvy[kBatch], dvz[kBatch];  // m/s, v_i - v_j
   double wsx[kBatch], wsy[kBatch], wsz[kBatch];  // m/s, R_i w_i + R_j w_j
   double reach[kBatch];                          // m, R_i + R_j
-  double sc[kBatch], ss[kBatch], sr[kBatch], sm[kBatch];  // 1/Pa, 1/Pa, 1/m, 1/kg: sums of ContactTerms
+  double sc[kBatch], ss[kBatch];                 // 1/Pa: sums of the members' ContactCompliance
+  double rr[kBatch], sm[kBatch];                 // m^2, 1/kg: R_i R_j, 1/m_i + 1/m_j
   // Stage 1: geometry and kinematics.
   double overlap[kBatch];              // m, 0 when apart
   double nx[kBatch], ny[kBatch], nz[kBatch];     // -, n_ij, from j to i
@@ -111,7 +112,7 @@ MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
       b.sc[t] = q.compliance[i].normal + q.compliance[j].normal;
       b.ss[t] = q.compliance[i].shear + q.compliance[j].shear;
     }
-    b.sr[t] = ti.inv_radius + tj.inv_radius;
+    b.rr[t] = ri * rj;
     b.sm[t] = ti.inv_mass + tj.inv_mass;
   }
 }
@@ -128,7 +129,8 @@ void geometry_normal(const PairPass& q, Batch& b) {
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const Vec3 d{b.dx[t], b.dy[t], b.dz[t]};
     const double dist = std::sqrt(norm2(d));
-    const double ov = b.reach[t] - dist;
+    const double reach = b.reach[t];
+    const double ov = reach - dist;
     b.overlap[t] = ov > 0.0 ? ov : 0.0;
     // Coincident centres get +z, so nothing becomes NaN.
     const double inv = 1.0 / (dist > 0.0 ? dist : 1.0);
@@ -136,9 +138,9 @@ void geometry_normal(const PairPass& q, Batch& b) {
     b.nx[t] = nrm.x;
     b.ny[t] = nrm.y;
     b.nz[t] = nrm.z;
-    // r* (52) and m* (53) from one division: 1/a = b/(a b).
-    const double inv_rm = 1.0 / (b.sr[t] * b.sm[t]);
-    const double r = b.sm[t] * inv_rm, m = b.sr[t] * inv_rm;
+    // r* = R_i R_j / (R_i + R_j) (52) and m* = 1 / sm (53) from one division.
+    const double inv_rm = 1.0 / (reach * b.sm[t]);
+    const double r = b.rr[t] * b.sm[t] * inv_rm, m = reach * inv_rm;
     b.r[t] = r;
     // (60) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
     const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
@@ -161,27 +163,35 @@ void geometry_normal(const PairPass& q, Batch& b) {
 
 // Stage 3 (57)-(70): the stored spring on the current tangent plane plus the trapezoidal
 // increment (64) (Verlet: phi = 1), Coulomb stick or slip.
-// Stage 3a: each slot's stored spring, the increment (64) and the imposed stick/slip decision
-// (indexed loads, scalar like gather_members), so that the law's loop has no branch.
+// Stage 3a: each slot's stored spring, and (kFull) the increment (64) and the imposed stick/slip
+// decision (indexed loads, scalar like gather_members), so that the law's loop has no branch.
+// Without step-start velocities and before the second iteration (velocity Verlet, and the
+// trapezoidal rule's first evaluations) the increment is dt phi v_t and the decision free: the
+// law's loop forms them itself (!kFull), with the same arithmetic.
+template <bool kFull>
 MPDEM_SCALAR_LOOPS void gather_history(const PairPass& q, Batch& b) {
   const double dt = q.dt, phi = q.phi;
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const std::size_t k = b.slot[t];
-    const Vec3 ds = q.vt0 ? dt * ((1.0 - phi) * q.vt0[k] + phi * b.vt(t)) : (dt * phi) * b.vt(t);
-    b.dsx[t] = ds.x, b.dsy[t] = ds.y, b.dsz[t] = ds.z;
     const Vec3 s0 = q.spring[k];
     b.s0x[t] = s0.x, b.s0y[t] = s0.y, b.s0z[t] = s0.z;
-    b.decide[t] = q.iteration < 2 ? SlipDecision::Free : q.slipped[k] ? SlipDecision::Slip : SlipDecision::Stick;
+    if constexpr (kFull) {
+      const Vec3 ds = q.vt0 ? dt * ((1.0 - phi) * q.vt0[k] + phi * b.vt(t)) : (dt * phi) * b.vt(t);
+      b.dsx[t] = ds.x, b.dsy[t] = ds.y, b.dsz[t] = ds.z;
+      b.decide[t] = q.iteration < 2 ? SlipDecision::Free : q.slipped[k] ? SlipDecision::Slip : SlipDecision::Stick;
+    }
   }
 }
 
-void tangential_law(const PairPass& q, Batch& b) {
-  const double mu_s = q.law.mu_s, mu_d = q.law.mu_d;
-  gather_history(q, b);
+template <bool kFull>
+void tangential_stage(const PairPass& q, Batch& b) {
+  const double mu_s = q.law.mu_s, mu_d = q.law.mu_d, dt_phi = q.dt * q.phi;
+  gather_history<kFull>(q, b);
   for (std::size_t t = 0; t < b.lanes(); ++t) {
-    const TangentialResult ft = tangential_force(project_spring({b.s0x[t], b.s0y[t], b.s0z[t]}, b.normal(t)),
-                                                 {b.dsx[t], b.dsy[t], b.dsz[t]}, b.vt(t), b.kt[t], b.dtc[t], mu_s,
-                                                 mu_d, b.fn[t], b.decide[t]);
+    const Vec3 ds = kFull ? Vec3{b.dsx[t], b.dsy[t], b.dsz[t]} : dt_phi * b.vt(t);
+    const SlipDecision decide = kFull ? b.decide[t] : SlipDecision::Free;
+    const TangentialResult ft = tangential_force(project_spring({b.s0x[t], b.s0y[t], b.s0z[t]}, b.normal(t)), ds,
+                                                 b.vt(t), b.kt[t], b.dtc[t], mu_s, mu_d, b.fn[t], decide);
     b.sx[t] = ft.spring.x;
     b.sy[t] = ft.spring.y;
     b.sz[t] = ft.spring.z;
@@ -197,6 +207,13 @@ void tangential_law(const PairPass& q, Batch& b) {
     b.damping[t] = b.pn[t] + (ft.slipped ? 0.0 : ft.dissipated_power);
     b.friction[t] = ft.slipped ? ft.dissipated_power : 0.0;
   }
+}
+
+void tangential_law(const PairPass& q, Batch& b) {
+  if (!q.vt0 && q.iteration < 2)
+    tangential_stage<false>(q, b);
+  else
+    tangential_stage<true>(q, b);
 }
 
 // Stage 4b: history, rolling resistance (71), the forces and the sums, in slot order.
@@ -228,7 +245,7 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
     if (rolling || wr0) wrel = w[i] - w[j];
     if (rolling)
       roll = rolling_resistance_torque(q.iteration > 0 ? wr0[k] : wrel, q.law.mu_r, b.r[t], b.fn[t],
-                                       rolling_inertia_pair(terms[i].inertia, terms[j].inertia), q.dt);
+                                       rolling_inertia_pair(q.inertia[i], q.inertia[j]), q.dt);
     if (commit) {
       spring[k] = {b.sx[t], b.sy[t], b.sz[t]};
       if (vt0) vt0[k] = b.vt(t);
@@ -316,9 +333,9 @@ void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_t cnt, 
                                    _mm512_mask_i32gather_pd(zero, lanes, j3, xb + 1, 8));
   const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, lanes, i3, xb + 2, 8),
                                    _mm512_mask_i32gather_pd(zero, lanes, j3, xb + 2, 8));
-  const double* rb = &q.terms[0].radius;  // ContactTerms = 4 doubles
-  const __m512d reach = _mm512_add_pd(_mm512_mask_i32gather_pd(zero, lanes, _mm256_slli_epi32(iv, 2), rb, 8),
-                                      _mm512_mask_i32gather_pd(zero, lanes, _mm256_slli_epi32(jv, 2), rb, 8));
+  const double* rb = &q.terms[0].radius;  // ContactTerms = 2 doubles
+  const __m512d reach = _mm512_add_pd(_mm512_mask_i32gather_pd(zero, lanes, _mm256_slli_epi32(iv, 1), rb, 8),
+                                      _mm512_mask_i32gather_pd(zero, lanes, _mm256_slli_epi32(jv, 1), rb, 8));
   // norm2(d) <= reach^2 (1 + 1e-9) in the scalar order of operations.
   const __m512d d2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
   const __m512d lim = _mm512_mul_pd(_mm512_mul_pd(reach, reach), _mm512_set1_pd(1.0 + 1e-9));

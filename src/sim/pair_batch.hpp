@@ -16,13 +16,11 @@
 
 namespace mpdem {
 
-// Per-particle values the kernel reads of a neighbour, one 32-byte record (one cache line to
-// fetch): the radius and the halves of (52)-(53), whose pair values are 1/(a_i + a_j).
+// Per-particle values the kernel reads of a neighbour, one 16-byte record (a quarter of a cache
+// line to fetch): r* (52) = R_i R_j / (R_i + R_j), m* (53) = 1 / (1/m_i + 1/m_j).
 struct ContactTerms {
-  double radius = 0.0;      // m
-  double inv_radius = 0.0;  // 1/m
-  double inv_mass = 0.0;    // 1/kg
-  double inertia = 0.0;     // kg m^2 (rolling resistance)
+  double radius = 0.0;    // m
+  double inv_mass = 0.0;  // 1/kg
 };
 
 // The per-particle halves of (51) and of Mindlin's G*, read only when the particles' elastic
@@ -64,6 +62,7 @@ struct PairPass {
   const Vec3* __restrict w;                  // [N] rad/s
   const std::int64_t* __restrict id;         // [N]
   const ContactTerms* __restrict terms;      // [N]
+  const double* __restrict inertia;          // [N] kg m^2 (rolling resistance)
   const ContactCompliance* __restrict compliance;  // [N], or null when uniform.on
   const std::size_t* __restrict off;         // [N+1] half-list CSR offsets
   const std::uint32_t* __restrict idx;       // [pairs] second members

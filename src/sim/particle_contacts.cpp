@@ -31,7 +31,7 @@ void ParticleContacts::refresh_terms(const Particles& p, std::uint64_t generatio
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
     const double nu = p.poisson[i];
-    terms_[i] = {p.radius[i], 1.0 / p.radius[i], 1.0 / p.mass[i], p.inertia[i]};  // (52), (53)
+    terms_[i] = {p.radius[i], 1.0 / p.mass[i]};  // (52), (53)
     compliance_[i] = {(1.0 - nu * nu) / p.young[i],                                // (51)
                       (2.0 - nu) / shear_modulus(p.young[i], nu)};                 // Mindlin G*
   }
@@ -65,7 +65,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   if (terms_.size() != n || terms_generation_ != search.generation()) refresh_terms(p, search.generation());
 
   const PairPass q{p.x.data(), p.v.data(), p.w.data(), p.id.data(),
-                   terms_.data(), uniform_.on ? nullptr : compliance_.data(), list.offsets().data(), list.indices().data(), blocks.first_members().data(), p.force.data(), p.torque.data(),
+                   terms_.data(), p.inertia.data(), uniform_.on ? nullptr : compliance_.data(), list.offsets().data(), list.indices().data(), blocks.first_members().data(), p.force.data(), p.torque.data(),
                    spring_.data(), vt0_.empty() ? nullptr : vt0_.data(), wr0_.empty() ? nullptr : wr0_.data(),
                    slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_torque_.data(), law_, uniform_, req.dt, req.phi, req.iteration, req.commit, n, list.num_pairs(), vector_select_};
 

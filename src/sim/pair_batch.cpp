@@ -31,7 +31,7 @@ namespace mpdem {
 const bool kVectorSelect = MPDEM_VECTOR_SELECT != 0;
 
 namespace {
-constexpr std::size_t kBatch = 64;                  // candidate pairs per batch
+constexpr std::size_t kBatch = 128;                 // candidate pairs per batch
 constexpr std::size_t kGroup = 8;                   // slots selected at a time
 constexpr std::size_t kLanes = 8;                   // doubles per vector (AVX-512); kBatch is a multiple
 constexpr std::size_t kAhead = 32;                  // slots ahead to prefetch
@@ -256,8 +256,8 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
     const double ri = terms[i].radius, rj = terms[j].radius;
     force[i] += f;
     torque[i] += roll - ri * arm;
-    // j's share: to j itself, or (cross pair, j in a later block) to the zeroed cross buffer.
-    // A select, not a branch: about a third of the contacts are cross pairs, unpredictably.
+    // j's share: to j itself, or (cross pair, j in a later block) to the zeroed cross buffer
+    // (about 9 % of the contacts on the 100k bed, with blocks of 4096 particles).
     const bool internal = b.cross[t] == kInternal;
     Vec3* fj = (internal ? force : cross_force) + (internal ? j : b.cross[t]);
     Vec3* tj = (internal ? torque : cross_torque) + (internal ? j : b.cross[t]);

@@ -65,16 +65,20 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   if (terms_.size() != n || terms_generation_ != search.generation()) refresh_terms(p, search.generation());
 
   const PairPass q{p.x.data(), p.v.data(), p.w.data(), p.id.data(),
-                   terms_.data(), p.inertia.data(), uniform_.on ? nullptr : compliance_.data(), list.offsets().data(), list.indices().data(), blocks.first_members().data(), p.force.data(), p.torque.data(),
+                   terms_.data(), p.inertia.data(), uniform_.on ? nullptr : compliance_.data(),
+                   list.offsets().data(), list.indices().data(), blocks.first_members().data(),
+                   p.force.data(), p.torque.data(),
                    spring_.data(), vt0_.empty() ? nullptr : vt0_.data(), wr0_.empty() ? nullptr : wr0_.data(),
-                   slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_torque_.data(), law_, uniform_, req.dt, req.phi, req.iteration, req.commit, n, list.num_pairs(), vector_select_};
+                   slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_torque_.data(),
+                   law_, uniform_, req.dt, req.phi, req.iteration, req.commit, n, list.num_pairs(), vector_select_};
 
   // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
   const std::size_t nb = blocks.num_blocks();
   // Each thread takes a run of consecutive blocks of about equal cost, as measured at the last
-  // evaluation (the list's slots before the first): blocks differ (the base of a bed has more
-  // contacts per slot than its top), and so may the threads' cores on a shared machine. Which
-  // thread evaluates a block does not change its sums.
+  // evaluation: blocks differ (the base of a bed has more contacts per slot than its top), and so
+  // may the threads' cores on a shared machine. Which thread evaluates a block does not change
+  // its sums. Until a block count has been timed, a block's cost is taken as its number of slots
+  // (scaled to about a nanosecond each; only the ratios matter).
   const auto& off = list.offsets();
   if (block_seconds_.size() != nb) {
     block_seconds_.resize(nb);
@@ -130,7 +134,8 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
 std::size_t ParticleContacts::memory_bytes() const {
   return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() +
           cross_torque_.capacity()) * sizeof(Vec3) +
-         slipped_.capacity() + terms_.capacity() * sizeof(Terms) + compliance_.capacity() * sizeof(ContactCompliance) + block_sums_.capacity() * sizeof(PairBlockSums);
+         slipped_.capacity() + terms_.capacity() * sizeof(Terms) + compliance_.capacity() * sizeof(ContactCompliance) +
+         block_sums_.capacity() * sizeof(PairBlockSums) + (block_seconds_.capacity() + block_cost_.capacity()) * sizeof(double);
 }
 
 ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborSearch& search) {

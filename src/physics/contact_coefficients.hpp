@@ -15,15 +15,21 @@ struct ContactCoefficients {
   double d_t = 0.0;   // N s/m, 2 xi_t sqrt(m* k_t)             (67), tangential_damping_coefficient
 };
 
-// E_star, G_star (Pa), r_star (m), m_star (kg), damping ratios xi_n, xi_t (-), overlap d > 0 (m).
-inline ContactCoefficients contact_coefficients(double E_star, double G_star, double r_star, double m_star,
-                                                double xi_n, double xi_t, double overlap) {
+// The stiffnesses and the elastic force, which both forms below share: one sqrt(r* d).
+inline ContactCoefficients elastic_coefficients(double E_star, double G_star, double r_star, double overlap) {
   ContactCoefficients c;
   const double root = std::sqrt(r_star * overlap);  // m
   c.k_n = 2.0 * E_star * root;
   c.f_el = (2.0 / 3.0) * c.k_n * overlap;
-  c.d_n = 2.0 * xi_n * std::sqrt(m_star * c.k_n);
   c.k_t = 8.0 * G_star * root;
+  return c;
+}
+
+// E_star, G_star (Pa), r_star (m), m_star (kg), damping ratios xi_n, xi_t (-), overlap d > 0 (m).
+inline ContactCoefficients contact_coefficients(double E_star, double G_star, double r_star, double m_star,
+                                                double xi_n, double xi_t, double overlap) {
+  ContactCoefficients c = elastic_coefficients(E_star, G_star, r_star, overlap);
+  c.d_n = 2.0 * xi_n * std::sqrt(m_star * c.k_n);
   c.d_t = xi_t > 0.0 ? 2.0 * xi_t * std::sqrt(m_star * c.k_t) : 0.0;  // no root when undamped
   return c;
 }
@@ -34,13 +40,9 @@ inline ContactCoefficients contact_coefficients(double E_star, double G_star, do
 inline ContactCoefficients contact_coefficients_fixed_moduli(double E_star, double G_star, double shear_root,
                                                              double r_star, double m_star, double xi_n, double xi_t,
                                                              double overlap) {
-  ContactCoefficients c;
-  const double root = std::sqrt(r_star * overlap);  // m
-  c.k_n = 2.0 * E_star * root;
-  c.f_el = (2.0 / 3.0) * c.k_n * overlap;
+  ContactCoefficients c = elastic_coefficients(E_star, G_star, r_star, overlap);
   const double mass_root = std::sqrt(m_star * c.k_n);  // sqrt(kg N/m)
   c.d_n = 2.0 * xi_n * mass_root;
-  c.k_t = 8.0 * G_star * root;
   c.d_t = 2.0 * xi_t * mass_root * shear_root;
   return c;
 }

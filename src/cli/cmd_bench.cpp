@@ -12,7 +12,7 @@
 #include "cli/bench_command.hpp"
 #include "io/input_error.hpp"
 #include "io/lammps_data.hpp"
-#include "sim/neighbor_search.hpp"
+#include "neighbor/neighbor_search.hpp"
 #include "sim/simulation.hpp"
 
 namespace mpdem::cli {

@@ -8,7 +8,7 @@
 
 #include "cli/tool_commands.hpp"
 #include "io/input_error.hpp"
-#include "tools/generator.hpp"
+#include "generate/generator.hpp"
 
 namespace mpdem::cli {
 

@@ -7,7 +7,7 @@
 
 #include <toml++/toml.h>
 
-#include "tools/generate_spec.hpp"
+#include "generate/generate_spec.hpp"
 
 namespace mpdem {
 

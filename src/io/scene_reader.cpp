@@ -13,7 +13,7 @@
 #include "io/stl_reader.hpp"
 #include "io/toml_section.hpp"
 #include "model/scene.hpp"
-#include "tools/generated_particles.hpp"
+#include "generate/generated_particles.hpp"
 
 namespace mpdem {
 

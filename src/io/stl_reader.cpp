@@ -15,7 +15,7 @@
 #include <string>
 
 #include "io/input_error.hpp"
-#include "tools/mesh_builder.hpp"
+#include "geometry/mesh_transform.hpp"
 
 namespace mpdem {
 

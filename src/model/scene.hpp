@@ -12,7 +12,7 @@
 #include "state/barriers.hpp"
 #include "state/motion_law.hpp"
 #include "state/particles.hpp"
-#include "tools/generate_spec.hpp"
+#include "generate/generate_spec.hpp"
 
 namespace mpdem {
 

@@ -5,11 +5,11 @@
 
 #include "core/parallel.hpp"
 #include "physics/field_forces.hpp"
-#include "sim/barrier_contacts.hpp"
-#include "sim/heat_transfer.hpp"
-#include "sim/near_field_forces.hpp"
-#include "sim/neighbor_search.hpp"
-#include "sim/particle_contacts.hpp"
+#include "contact/barrier_contacts.hpp"
+#include "thermal/heat_transfer.hpp"
+#include "field/near_field_forces.hpp"
+#include "neighbor/neighbor_search.hpp"
+#include "contact/particle_contacts.hpp"
 
 namespace mpdem {
 

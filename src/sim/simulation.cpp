@@ -8,9 +8,9 @@
 
 #include "integrate/adaptive_step.hpp"
 #include "sim/energy.hpp"
-#include "sim/output_manager.hpp"
-#include "sim/particle_contacts.hpp"
-#include "sim/progress.hpp"
+#include "io/output_manager.hpp"
+#include "contact/particle_contacts.hpp"
+#include "io/progress.hpp"
 #include "sim/run_error.hpp"
 #include "sim/stop_signal.hpp"
 

@@ -5,7 +5,8 @@
 //   centre line;  box, cylinder, funnel: towards the inside (particles inside).
 // `flip()` turns a mesh inside out (e.g. particles flowing around a cylindrical pillar).
 #include "core/vec3.hpp"
-#include "tools/triangle_mesh.hpp"
+#include "geometry/mesh_transform.hpp"
+#include "geometry/triangle_mesh.hpp"
 
 namespace mpdem {
 
@@ -45,9 +46,5 @@ TriangleMesh make_plate_with_rect_hole(double lx, double ly, double hx, double h
 // the circle (so the hole is the inscribed polygon; its narrowest width is 2 r cos(pi/segments)).
 TriangleMesh make_plate_with_round_hole(double lx, double ly, double r, int segments);
 
-// Rotation about x, then y, then z by the angles in degrees (the order of docs/scene.md).
-Vec3 rotate_xyz_deg(const Vec3& p, const Vec3& deg);
-// p -> rotate(scale p) + translate for every vertex.
-void transform_mesh(TriangleMesh& mesh, double scale, const Vec3& rotate_deg, const Vec3& translate);
 
 }  // namespace mpdem

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "io/stl_writer.hpp"
-#include "tools/triangle_mesh.hpp"
+#include "geometry/triangle_mesh.hpp"
 
 namespace mpdem {
 

@@ -1,0 +1,65 @@
+#pragma once
+// BarrierBatch: particle-barrier contacts evaluated together (sim/barrier_contacts.cpp) - the
+// batch's structure of arrays and the Hertz-Mindlin law over it.
+#include <cstddef>
+#include <cstdint>
+
+#include "core/vec3.hpp"
+#include "physics/contact_model.hpp"
+#include "physics/tangential.hpp"
+#include "contact/barrier_contact_store.hpp"
+#include "sim/interactions.hpp"
+
+namespace mpdem {
+
+// The contacts of consecutive active particles of one group, evaluated stage by stage. Why: one
+// Hertz-Mindlin contact is a long chain of dependent square roots and divisions, so finishing
+// one contact before starting the next waits on latency; the law's loop over a batch has
+// independent iterations the processor overlaps (and vectorises). Structure of arrays for that.
+struct BarrierBatch {
+  static constexpr std::size_t kLanes = 8;     // doubles per vector (AVX-512)
+  static constexpr std::size_t kContacts = 64; // contacts per batch, a multiple of kLanes
+  static constexpr std::size_t kSlots = BarrierContactStore::kSlots;
+  static_assert(kContacts % kLanes == 0 && kContacts >= kSlots, "batches hold whole vectors and a particle");
+
+  // --- the particles, in active order
+  std::size_t particles = 0;
+  std::uint32_t k[kContacts];        // active position
+  std::uint32_t end[kContacts];      // one past its last contact (the first is the previous end)
+  // --- their contacts, from detection and history (collect)
+  std::size_t count = 0;
+  std::int32_t element[kContacts];   // barrier element
+  const BarrierSlot* hist[kContacts];  // history record, or null
+  SlipDecision decide[kContacts];    // imposed stick/slip (later iterations)
+  Vec3 point[kContacts];             // m, contact point
+  double overlap[kContacts];         // m
+  double nx[kContacts], ny[kContacts], nz[kContacts];        // -, unit normal towards the particle
+  double vx[kContacts], vy[kContacts], vz[kContacts];        // m/s, particle velocity
+  double wx[kContacts], wy[kContacts], wz[kContacts];        // rad/s, particle rotation
+  double ux[kContacts], uy[kContacts], uz[kContacts];        // m/s, barrier velocity
+  double s0x[kContacts], s0y[kContacts], s0z[kContacts];     // m, stored spring (zero: none)
+  double vt0x[kContacts], vt0y[kContacts], vt0z[kContacts];  // m/s, stored tangential velocity
+  double E[kContacts], G[kContacts];                          // Pa, E*, G*
+  double r[kContacts], m[kContacts];                          // m, kg: r* = R, m* = m
+  // --- the law's results (contact_law)
+  double fx[kContacts], fy[kContacts], fz[kContacts];        // N, force on the particle
+  double tx[kContacts], ty[kContacts], tz[kContacts];        // N m, r_P x f_t
+  double sx[kContacts], sy[kContacts], sz[kContacts];        // m, spring for the next step
+  double vtx[kContacts], vty[kContacts], vtz[kContacts];     // m/s, tangential velocity
+  double fn[kContacts];                                       // N, net normal force
+  double energy[kContacts];                                   // J, elastic energy
+  double damping[kContacts];                                  // W, dashpot power
+  double friction[kContacts];                                 // W, sliding power
+  std::int64_t slip[kContacts];                               // 1 when sliding (8 bytes, like SlipDecision)
+
+  // Room for one more particle with all its contacts.
+  bool room() const { return count + kSlots <= kContacts && particles < kContacts; }
+  // Contacts rounded up to whole vectors.
+  std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }
+};
+
+// The Hertz-Mindlin law (physics.md sections 5-7) of every contact of the batch (count >= 1):
+// fills the results from the inputs, lane by lane.
+void barrier_contact_law(const ContactModel& law, const EvalRequest& req, BarrierBatch& b);
+
+}  // namespace mpdem

@@ -1,0 +1,343 @@
+#include "contact/barrier_contacts.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <memory>
+#include <stdexcept>
+
+#include "core/parallel.hpp"
+#include "physics/hertz.hpp"
+#include "physics/rolling.hpp"
+#include "physics/tangential.hpp"
+#include "contact/barrier_batch.hpp"
+
+namespace mpdem {
+
+namespace {
+constexpr double kInheritCos = 0.9;  // a seam neighbour's normal within ~25 degrees
+// Active particles ahead whose data is prefetched: they are scattered over the particle arrays
+// (only those near a wall), so each visit would otherwise wait for ~15 cache misses in turn.
+constexpr std::size_t kAhead = 8;
+
+// Brings the bytes [a, a + bytes) into the cache: every line they touch. Always inlined: GCC
+// takes a function doing nothing but prefetches for pure and deletes its calls.
+template <std::size_t bytes, int write>
+[[gnu::always_inline]] inline void prefetch_bytes(const void* a) {
+  const char* c = static_cast<const char*>(a);
+  for (std::size_t o = 0; o < bytes; o += 64) __builtin_prefetch(c + o, write);
+  if constexpr (bytes > 8) __builtin_prefetch(c + bytes - 1, write);  // the last line, if one more
+}
+template <int write = 0, class T>
+[[gnu::always_inline]] inline void prefetch_item(const std::vector<T>& a, std::size_t i) {
+  prefetch_bytes<sizeof(T), write>(a.data() + i);  // 8-byte items never straddle two lines
+}
+
+// Everything collect and flush read or write of particle i (its candidate list: only the
+// offsets, the list itself is fetched once they have arrived, see evaluate()).
+[[gnu::always_inline]] inline void prefetch_particle(const Particles& p, const BarrierBroadphase& broad, std::size_t i) {
+  prefetch_item(p.x, i);
+  prefetch_item(p.v, i);
+  prefetch_item(p.w, i);
+  prefetch_item(p.radius, i);
+  prefetch_item(p.mass, i);
+  prefetch_item(p.young, i);
+  prefetch_item(p.poisson, i);
+  prefetch_item<1>(p.force, i);
+  prefetch_item<1>(p.torque, i);
+  prefetch_item(broad.offsets(), i);
+  prefetch_item(broad.offsets(), i + 1);
+}
+
+// The first contact record of active particle k in each record array: they are read or written
+// in order, but with a stride of several lines that the hardware prefetcher does not follow.
+[[gnu::always_inline]] inline void prefetch_records(BarrierContactStore& store, std::size_t k) {
+  prefetch_bytes<sizeof(BarrierSlot), 0>(store.committed(k));
+  prefetch_bytes<sizeof(BarrierSlot), 1>(store.tentative(k));
+  prefetch_bytes<sizeof(BarrierLoad), 1>(store.loads(k));
+}
+
+// Pa, from the summed force on element e.
+double element_pressure(const Barriers& b, std::size_t e) { return -dot(b.force[e], b.normal[e]) / b.area[e]; }
+
+}  // namespace
+
+BarrierContacts::BarrierContacts(const ContactModel& law, const Barriers& b)
+    : law_(law), topo_(BarrierTopology::build(b)) {}
+
+PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req) {
+  const std::size_t n = p.size();
+  if (b.size() == 0 || n == 0) return {};
+  const BarrierBroadphase& broad = search.barrier_candidates();
+  if (broad.size() != n || broad.num_elements() != b.size())
+    throw std::logic_error("barrier contacts: the candidate lists do not match the scene");
+  if (store_.stale(broad)) store_.relayout(broad);
+
+  // The elements translate rigidly: their triangles (normals, edge directions) once per
+  // evaluation, not per candidate.
+  const std::size_t m = b.size();
+  tris_.resize(m);
+  centres_.resize(m);
+#pragma omp parallel for schedule(static) if (m > kParallelThreshold)
+  for (std::size_t e = 0; e < m; ++e) {
+    tris_[e] = current_triangle(b, e);
+    centres_[e] = b.centre(e);
+  }
+
+  // Each group (the active particles of one block of kGroup particle indices) is summed in
+  // particle order, then the groups in order: the blocked sums of deterministic_sums over all
+  // particles, whatever the number of threads, without visiting the particles far from walls.
+  // Within a group the particles go through batches (BarrierBatch), whose results are applied in
+  // particle and contact order: the same sums as one particle after the other.
+  const std::size_t groups = store_.groups();
+  const std::size_t active = store_.size();
+  partial_.resize(groups);
+  bool direct = false;  // the loads went onto the elements during the particle loop
+#pragma omp parallel if (active > kParallelThreshold)
+  {
+    // One thread visits all particles in order: it can add each contact's load to its element
+    // right away, in the order element_loads would (ascending particle), saving that pass.
+    const bool serial = omp_get_num_threads() == 1;
+    if (serial) direct = true;
+    PairModuli moduli;                             // per thread
+    std::vector<BarrierContact> found;             // per thread, reused by its particles
+    found.reserve(kSlots);
+    const auto batch = std::make_unique<BarrierBatch>();  // per thread (~40 KB: not on the stack)
+    // Runs of groups with equal numbers of active particles (those near walls cluster in index).
+    const int threads = omp_get_num_threads(), r = omp_get_thread_num();
+    const auto active_before = [&](std::size_t g) { return store_.group_begin(g); };
+    const std::size_t g1 = balanced_split(r + 1, threads, groups, active_before);
+    for (std::size_t g = balanced_split(r, threads, groups, active_before); g < g1; ++g) {
+      std::array<double, 5> acc{};
+      for (std::size_t k = store_.group_begin(g); k < store_.group_begin(g + 1); ++k) {
+        // Prefetch only (no effect on the results): particle data kAhead ahead, and the candidate
+        // list of the particle half-way, whose offsets were prefetched kAhead / 2 visits ago.
+        if (k + kAhead < active) {
+          prefetch_particle(p, broad, store_.particle(k + kAhead));
+          prefetch_records(store_, k + kAhead);
+        }
+        if (k + kAhead / 2 < active) {
+          const auto c = broad.candidates(store_.particle(k + kAhead / 2));
+          if (!c.empty()) __builtin_prefetch(c.data());
+        }
+        if (!batch->room()) flush(p, serial ? &b : nullptr, req, *batch, acc);
+        collect(k, p, b, broad, req, moduli, found, *batch, acc);
+      }
+      flush(p, serial ? &b : nullptr, req, *batch, acc);
+      partial_[g] = acc;
+    }
+  }
+  std::array<double, 5> sums{};
+  for (const auto& s : partial_)
+    for (std::size_t c = 0; c < sums.size(); ++c) sums[c] += s[c];
+  overflows_ += static_cast<std::uint64_t>(sums[4]);
+
+  if (direct)
+    for (std::size_t e = 0; e < m; ++e) b.pressure[e] = element_pressure(b, e);
+  else
+    element_loads(b);
+  if (req.commit) store_.commit();
+  return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3]};
+}
+
+void BarrierContacts::PairModuli::derive(const std::array<std::uint64_t, 4>& k, double E_i, double nu_i, double E_j,
+                                         double nu_j) {
+  valid = true;
+  key = k;
+  E = effective_modulus(E_i, nu_i, E_j, nu_j);
+  G = effective_shear_modulus(shear_modulus(E_i, nu_i), nu_i, shear_modulus(E_j, nu_j), nu_j);
+}
+
+void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers& b, const BarrierBroadphase& broad,
+                              const EvalRequest& req, PairModuli& moduli, std::vector<BarrierContact>& found,
+                              BarrierBatch& batch, std::array<double, 5>& acc) {
+  const std::size_t i = store_.particle(k);
+  const auto cand = broad.candidates(i);
+  if (cand.empty()) {  // kept only for its records: no contact now (and no force to add)
+    store_.tentative_used(k) = 0;
+    store_.load_used(k) = 0;
+    if (req.iteration == 1) store_.first_used(k) = 0;
+    return;
+  }
+  detect_barrier_contacts(b, topo_, tris_, p.x[i], p.radius[i], cand, found);
+  const BarrierSlot* old = store_.committed(k);
+  const int old_used = store_.committed_used(k);
+  const BarrierFirst* first = store_.first(k);
+  const std::size_t first_used = store_.first_used(k);
+  // At most one contact per candidate element, so the capacity never binds before kSlots.
+  const std::size_t count = std::min({found.size(), std::size_t{kSlots}, store_.capacity(k)});
+  if (found.size() > count) acc[4] += static_cast<double>(found.size() - count);
+  store_.tentative_used(k) = static_cast<std::uint8_t>(count);
+  store_.load_used(k) = static_cast<std::uint8_t>(count);
+  if (req.iteration == 1) store_.first_used(k) = static_cast<std::uint8_t>(count);
+
+  const Vec3 v = p.v[i], w = p.w[i];
+  const double r = p.radius[i], m = p.mass[i];
+  for (std::size_t c = 0; c < count; ++c) {
+    const BarrierContact& bc = found[c];
+    const std::size_t e = bc.element;
+    // History: the same element, else a seam neighbour whose contact just ended.
+    const BarrierSlot* hist = nullptr;
+    double best = kInheritCos;
+    for (int s = 0; s < old_used; ++s) {
+      if (old[s].element == static_cast<std::int32_t>(e)) { hist = &old[s]; break; }
+    }
+    if (!hist) {
+      for (int s = 0; s < old_used; ++s) {
+        if (old[s].element < 0) continue;
+        bool still = false;
+        for (std::size_t c2 = 0; c2 < count; ++c2) still |= found[c2].element == static_cast<std::uint32_t>(old[s].element);
+        const double cosang = dot(old[s].normal, bc.normal);
+        if (!still && cosang > best) { best = cosang; hist = &old[s]; }
+      }
+    }
+    // Later iterations keep the first iteration's stick/slip decision (physics/tangential.hpp).
+    SlipDecision decide = SlipDecision::Free;
+    if (req.iteration >= 2)
+      for (std::size_t s = 0; s < first_used; ++s)
+        if (first[s].element == static_cast<std::int32_t>(e))
+          decide = first[s].slipped ? SlipDecision::Slip : SlipDecision::Stick;
+    // Half-space of the barrier's material: its own E, nu in (51); r* = R, m* = m (76)-(79).
+    const PairModuli& em = moduli.of(p.young[i], p.poisson[i], b.young[e], b.poisson[e]);
+    // No history: a zero spring, which project_spring leaves exactly zero.
+    const Vec3 s0 = hist ? hist->spring : Vec3{};
+    const Vec3 vt0 = hist ? hist->vt0 : Vec3{};
+    const Vec3& u = b.velocity[e];
+    const std::size_t t = batch.count++;
+    batch.element[t] = static_cast<std::int32_t>(e);
+    batch.hist[t] = hist;
+    batch.decide[t] = decide;
+    batch.point[t] = bc.point;
+    batch.overlap[t] = bc.overlap;
+    batch.nx[t] = bc.normal.x, batch.ny[t] = bc.normal.y, batch.nz[t] = bc.normal.z;
+    batch.vx[t] = v.x, batch.vy[t] = v.y, batch.vz[t] = v.z;
+    batch.wx[t] = w.x, batch.wy[t] = w.y, batch.wz[t] = w.z;
+    batch.ux[t] = u.x, batch.uy[t] = u.y, batch.uz[t] = u.z;
+    batch.s0x[t] = s0.x, batch.s0y[t] = s0.y, batch.s0z[t] = s0.z;
+    batch.vt0x[t] = vt0.x, batch.vt0y[t] = vt0.y, batch.vt0z[t] = vt0.z;
+    batch.E[t] = em.E, batch.G[t] = em.G, batch.r[t] = r, batch.m[t] = m;
+  }
+  batch.k[batch.particles] = static_cast<std::uint32_t>(k);
+  batch.end[batch.particles] = static_cast<std::uint32_t>(batch.count);
+  ++batch.particles;
+}
+
+void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch,
+                            std::array<double, 5>& acc) {
+  if (batch.particles == 0) return;
+  if (batch.count > 0) barrier_contact_law(law_, req, batch);
+  // In particle order, each particle's contacts in order: the original per-particle sums.
+  const bool rolling = !(law_.mu_r <= 0.0);  // rolling_resistance_torque's own test
+  const double dt = req.dt;
+  // The sums in registers: acc could alias the records written below, as far as the compiler
+  // knows, and every += would wait on the previous store.
+  double sum0 = acc[0], sum1 = acc[1], sum2 = acc[2], sum3 = acc[3];
+  std::size_t t = 0;
+  for (std::size_t q = 0; q < batch.particles; ++q) {
+    const std::size_t k = batch.k[q];
+    const std::size_t i = store_.particle(k);
+    BarrierSlot* tent = store_.tentative(k);
+    BarrierLoad* load = store_.loads(k);
+    BarrierFirst* first = store_.first(k);
+    Vec3 force{}, torque{};
+    for (std::size_t c = 0; t < batch.end[q]; ++t, ++c) {
+      const BarrierSlot* hist = batch.hist[t];
+      const Vec3 w{batch.wx[t], batch.wy[t], batch.wz[t]};
+      // Against the rotation of the step start, like particle pairs (sim/particle_contacts.cpp).
+      Vec3 roll{};
+      if (rolling) {
+        const Vec3 wr0 = req.iteration > 0 ? (hist ? hist->wr0 : Vec3{}) : w;
+        roll = rolling_resistance_torque(wr0, law_.mu_r, batch.r[t], batch.fn[t], p.inertia[i], dt);
+      }
+      const Vec3 f{batch.fx[t], batch.fy[t], batch.fz[t]};
+      force += f;
+      torque += Vec3{batch.tx[t], batch.ty[t], batch.tz[t]} + roll;
+      const std::int32_t el = batch.element[t];
+      const auto slipped = static_cast<std::uint32_t>(batch.slip[t]);
+      // Field by field into place (a whole-record copy would reload fresh stores in other widths).
+      BarrierSlot& ts = tent[c];
+      ts.element = el;
+      ts.slipped = slipped;
+      ts.spring = {batch.sx[t], batch.sy[t], batch.sz[t]};
+      ts.vt0 = {batch.vtx[t], batch.vty[t], batch.vtz[t]};
+      ts.normal = {batch.nx[t], batch.ny[t], batch.nz[t]};
+      ts.wr0 = w;
+      BarrierLoad& ls = load[c];
+      ls.force = -f;
+      ls.point = batch.point[t];
+      ls.overlap = batch.overlap[t];
+      ls.element = el;
+      if (loads_to) {  // at most one contact per element and particle (detection's merge)
+        const auto e = static_cast<std::size_t>(el);
+        loads_to->force[e] += ls.force;
+        loads_to->moment[e] += cross(ls.point - centres_[e], ls.force);
+      }
+      if (req.iteration == 1) first[c] = BarrierFirst{el, slipped};
+      sum0 += 1.0;
+      sum1 += batch.energy[t];
+      sum2 += batch.damping[t];
+      sum3 += batch.friction[t] - dot(roll, w);
+    }
+    p.force[i] += force;
+    p.torque[i] += torque;
+  }
+  acc[0] = sum0, acc[1] = sum1, acc[2] = sum2, acc[3] = sum3;
+  batch.particles = 0;
+  batch.count = 0;
+}
+
+void BarrierContacts::element_loads(Barriers& b) {
+  // One element's loads are summed by one thread, over its users in particle order: the result
+  // does not depend on the threads or the schedule (dynamic: a floor element may carry most).
+  const std::size_t m = b.size();
+  const std::size_t chunk = 1 + m / 256;
+#pragma omp parallel for schedule(dynamic, chunk) if (store_.size() > kParallelThreshold)
+  for (std::size_t e = 0; e < m; ++e) {
+    std::size_t users = 0;
+    const std::uint32_t* user = store_.element_users(e, users);
+    if (users > 0) {
+      const auto el = static_cast<std::int32_t>(e);
+      const Vec3& centre = centres_[e];
+      Vec3 force = b.force[e], moment = b.moment[e];
+      for (std::size_t u = 0; u < users; ++u) {
+        const BarrierLoad* l = store_.loads(user[u]);
+        const std::size_t used = store_.load_used(user[u]);
+        for (std::size_t c = 0; c < used; ++c)
+          if (l[c].element == el) {
+            force += l[c].force;
+            moment += cross(l[c].point - centre, l[c].force);
+            break;
+          }
+      }
+      b.force[e] = force;
+      b.moment[e] = moment;
+    }
+    b.pressure[e] = element_pressure(b, e);
+  }
+}
+
+OverlapReport BarrierContacts::max_overlap(const Particles& p, const Barriers& b) const {
+  OverlapReport r;
+  for (std::size_t k = 0; k < store_.size(); ++k) {
+    const std::size_t i = store_.particle(k);
+    if (i >= p.size()) continue;
+    const BarrierLoad* l = store_.loads(k);
+    for (std::size_t c = 0; c < store_.load_used(k); ++c) {
+      const double ratio = l[c].overlap / p.radius[i];
+      if (ratio > r.ratio) r = {ratio, p.id[i], -1, b.id[static_cast<std::size_t>(l[c].element)]};
+    }
+  }
+  return r;
+}
+
+void BarrierContacts::save(BinaryWriter& w) const {
+  store_.save(w);
+  w.value(overflows_);
+}
+
+void BarrierContacts::restore(BinaryReader& r, std::size_t particles) {
+  store_.restore(r, particles);
+  overflows_ = r.value<std::uint64_t>();
+}
+
+}  // namespace mpdem

@@ -1,0 +1,92 @@
+#pragma once
+// BarrierContacts: Hertz-Mindlin contacts between particles and barrier triangles (physics.md
+// section 7): exact closest-point detection counting each physical contact once, the barrier's
+// motion-law velocity in the relative velocity, the barrier's own E and nu, r* = R, m* = m.
+//
+// History: each particle keeps up to kSlots contacts (element, spring, start-of-step tangential
+// velocity, normal). A contact that moves onto a neighbouring element of the same surface (a
+// sphere rolling across a seam) inherits the spring of the contact that just ended there, so
+// tangential forces do not jump at seams. The records live in a BarrierContactStore, only for
+// the particles near a barrier; an evaluation visits only those, in parallel. Loads on the
+// elements (force, moment about the centre, pressure) are summed per element in particle order,
+// independent of the thread count.
+//
+// Speed (the particles near walls are scattered over the particle arrays; one contact is a long
+// chain of roots and divisions): the element triangles are derived once per evaluation, the
+// data of the particles a few visits ahead is prefetched, the contact law runs over batches of
+// contacts (BarrierBatch, vectorised), and a single thread adds the loads to the elements as it
+// goes. None of it changes a result: the arithmetic and every sum's order are those of one
+// contact after the other.
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <vector>
+
+#include "physics/barrier_contact_detect.hpp"
+#include "physics/contact_model.hpp"
+#include "contact/barrier_contact_store.hpp"
+#include "sim/interactions.hpp"
+#include "neighbor/neighbor_search.hpp"
+#include "contact/particle_contacts.hpp"
+#include "state/barrier_topology.hpp"
+
+namespace mpdem {
+
+struct BarrierBatch;  // contacts evaluated together (sim/barrier_batch.hpp)
+
+class BarrierContacts {
+ public:
+  static constexpr int kSlots = BarrierContactStore::kSlots;  // simultaneous barrier contacts per particle
+
+  BarrierContacts(const ContactModel& law, const Barriers& b);
+
+  // Adds contact forces/torques to the particles and loads to the barriers.
+  PairStats evaluate(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req);
+  // Keeps the history with its particles when they are reordered or removed.
+  void permute(const std::vector<std::uint32_t>& order) { store_.permute(order); }
+  void compact(const std::vector<char>& keep) { store_.compact(keep); }
+  std::uint64_t overflows() const { return overflows_; }  // contacts dropped beyond kSlots
+  OverlapReport max_overlap(const Particles& p, const Barriers& b) const;
+  void save(BinaryWriter& w) const;  // checkpoints: the committed history
+  void restore(BinaryReader& r, std::size_t particles);
+  std::size_t memory_bytes() const { return store_.bytes(); }  // B, held by the contact records
+
+ private:
+  // E* (Pa) and G* (Pa) of the last particle-element material pair met by one thread: a bed of
+  // one material against walls of one material derives them once, not per contact (4 divisions).
+  struct PairModuli {
+    bool valid = false;
+    std::array<std::uint64_t, 4> key{};  // bit patterns of E_i, nu_i, E_j, nu_j
+    double E = 0.0;                       // Pa, effective_modulus
+    double G = 0.0;                       // Pa, effective_shear_modulus
+    // The moduli of this pair, derived anew only when it differs from the last one. Bit patterns,
+    // not ==, so the values kept are exactly those the inputs give (-0 and +0 differ).
+    const PairModuli& of(double E_i, double nu_i, double E_j, double nu_j) {
+      const std::array<std::uint64_t, 4> k{std::bit_cast<std::uint64_t>(E_i), std::bit_cast<std::uint64_t>(nu_i),
+                                           std::bit_cast<std::uint64_t>(E_j), std::bit_cast<std::uint64_t>(nu_j)};
+      if (!valid || k != key) derive(k, E_i, nu_i, E_j, nu_j);
+      return *this;
+    }
+    void derive(const std::array<std::uint64_t, 4>& k, double E_i, double nu_i, double E_j, double nu_j);
+  };
+  // Contacts of active particle k, stage 1: detects them, finds their history, sets its record
+  // counts and appends the contacts with the particle's values to the batch (acc[4]: dropped).
+  void collect(std::size_t k, const Particles& p, const Barriers& b, const BarrierBroadphase& broad,
+               const EvalRequest& req, PairModuli& moduli, std::vector<BarrierContact>& found, BarrierBatch& batch,
+               std::array<double, 5>& acc);
+  // The law over the batch, then in particle and contact order: the tentative history and loads,
+  // the particles' force and torque, and acc = {contacts, elastic energy J, damping power W,
+  // friction power W}; with loads_to, also each load onto its element. Empties the batch.
+  void flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch, std::array<double, 5>& acc);
+  void element_loads(Barriers& b);  // sums the loads of the last evaluation onto the elements, in particle order
+
+  ContactModel law_;
+  BarrierTopology topo_;
+  BarrierContactStore store_;
+  std::vector<std::array<double, 5>> partial_;  // [groups] sums of one evaluation, per group
+  std::vector<CurrentTriangle> tris_;           // [M] the elements at this evaluation's offsets
+  std::vector<Vec3> centres_;                   // [M] m, their centroids (Barriers::centre), moment arms
+  std::uint64_t overflows_ = 0;
+};
+
+}  // namespace mpdem

@@ -1,0 +1,271 @@
+#include "contact/particle_contacts.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/parallel.hpp"
+#include "physics/tangential.hpp"
+#include "contact/pair_batch.hpp"
+
+namespace mpdem {
+
+bool ParticleContacts::holds_history(std::size_t k) const {
+  return norm2(spring_[k]) > 0.0 || (!vt0_.empty() && norm2(vt0_[k]) > 0.0) || (!wr0_.empty() && norm2(wr0_[k]) > 0.0);
+}
+
+void ParticleContacts::ensure_history(std::size_t pairs) {
+  if (spring_.size() == pairs) return;  // first use: no history yet
+  spring_.assign(pairs, Vec3{});
+  vt0_.assign(step_start_ ? pairs : 0, Vec3{});
+  wr0_.assign(step_start_ && law_.mu_r > 0.0 ? pairs : 0, Vec3{});
+  slipped_.assign(step_start_ ? pairs : 0, 0);
+}
+
+void ParticleContacts::refresh_terms(const Particles& p, std::uint64_t generation) {
+  const std::size_t n = p.size();
+  terms_.resize(n);
+  compliance_.resize(n);
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double nu = p.poisson[i];
+    terms_[i] = {p.radius[i], 1.0 / p.mass[i]};  // (52), (53)
+    compliance_[i] = {(1.0 - nu * nu) / p.young[i],                                // (51)
+                      (2.0 - nu) / shear_modulus(p.young[i], nu)};                 // Mindlin G*
+  }
+  terms_generation_ = generation;
+  // One set of elastic constants for all (the usual single material): E*, G* are constants,
+  // with the values the kernel's sums would give, and the compliances are not needed.
+  const auto differs = [&](const ContactCompliance& c) {
+    return c.normal != compliance_[0].normal || c.shear != compliance_[0].shear;
+  };
+  uniform_ = UniformModuli{};
+  if (n > 0 && std::none_of(compliance_.begin(), compliance_.end(), differs)) {
+    const double E = 1.0 / (compliance_[0].normal + compliance_[0].normal);
+    const double G = 1.0 / (compliance_[0].shear + compliance_[0].shear);
+    uniform_ = {true, E, G, std::sqrt(4.0 * G / E)};
+    compliance_ = {};
+  }
+}
+
+PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req) {
+  if (!step_start_ && req.phi != 1.0)
+    throw std::logic_error("particle contacts: phi < 1 needs the step-start history (trapezoidal integrator)");
+  const VerletList& list = search.pairs();
+  const PairBlocks& blocks = search.blocks();
+  const std::size_t n = p.size();
+  ensure_history(list.num_pairs());
+  slipped_.resize(step_start_ ? list.num_pairs() : 0);
+  cross_force_.resize(blocks.num_cross());
+  cross_torque_.resize(blocks.num_cross());
+
+  // Constant properties: refreshed only when the particles may have been reordered or changed.
+  if (terms_.size() != n || terms_generation_ != search.generation()) refresh_terms(p, search.generation());
+
+  const PairPass q{p.x.data(), p.v.data(), p.w.data(), p.id.data(),
+                   terms_.data(), p.inertia.data(), uniform_.on ? nullptr : compliance_.data(),
+                   list.offsets().data(), list.indices().data(), blocks.first_members().data(),
+                   p.force.data(), p.torque.data(),
+                   spring_.data(), vt0_.empty() ? nullptr : vt0_.data(), wr0_.empty() ? nullptr : wr0_.data(),
+                   slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_torque_.data(),
+                   law_, uniform_, req.dt, req.phi, req.iteration, req.commit, n, list.num_pairs(), vector_select_};
+
+  // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
+  const std::size_t nb = blocks.num_blocks();
+  // Each thread takes a run of consecutive blocks of about equal cost, as measured at the last
+  // evaluation: blocks differ (the base of a bed has more contacts per slot than its top), and so
+  // may the threads' cores on a shared machine. Which thread evaluates a block does not change
+  // its sums. Until a block count has been timed, a block's cost is taken as its number of slots
+  // (scaled to about a nanosecond each; only the ratios matter).
+  const auto& off = list.offsets();
+  if (block_seconds_.size() != nb) {
+    block_seconds_.resize(nb);
+    for (std::size_t b = 0; b < nb; ++b)
+      block_seconds_[b] = 1e-9 * static_cast<double>(off[PairBlocks::block_end(b * PairBlocks::kBlock, n)] -
+                                                     off[b * PairBlocks::kBlock]);
+  }
+  block_cost_.resize(nb + 1);
+  block_cost_[0] = 0.0;
+  for (std::size_t b = 0; b < nb; ++b) block_cost_[b + 1] = block_cost_[b] + block_seconds_[b];
+  block_sums_.resize(nb);
+  const auto cost_before = [&](std::size_t b) { return block_cost_[b]; };
+#pragma omp parallel if (n > kParallelThreshold)
+  {
+    const int threads = omp_get_num_threads(), r = omp_get_thread_num();
+    const std::size_t b1 = balanced_split(r + 1, threads, nb, cost_before);
+    double t0 = omp_get_wtime();
+    for (std::size_t b = balanced_split(r, threads, nb, cost_before); b < b1; ++b) {
+      block_sums_[b] = contact_block(q, b * PairBlocks::kBlock, PairBlocks::block_end(b * PairBlocks::kBlock, n),
+                                     blocks.cross_base(b), blocks.cross_base(b + 1));
+      const double t1 = omp_get_wtime();
+      block_seconds_[b] = t1 - t0;
+      t0 = t1;
+    }
+  }
+
+  // 2. The second members' shares of the cross pairs, each in ascending cross index.
+  const auto& members = blocks.cross_particles();
+#pragma omp parallel for schedule(static) if (members.size() > kParallelThreshold)
+  for (std::size_t mb = 0; mb < members.size(); ++mb) {
+    Vec3 f{}, t{};
+    for (std::uint32_t c : blocks.entries(mb)) {
+      f += cross_force_[c];
+      t += cross_torque_[c];
+    }
+    p.force[members[mb]] += f;
+    p.torque[members[mb]] += t;
+  }
+
+  // 3. Totals in block order (independent of the thread count).
+  PairStats st;
+  deepest_ = OverlapReport{};
+  for (const PairBlockSums& s : block_sums_) {
+    st.contacts += static_cast<std::size_t>(s.contacts);
+    st.elastic_energy += s.elastic_energy;
+    st.damping_power += s.damping_power;
+    st.friction_power += s.friction_power;
+    if (s.deepest.ratio > deepest_.ratio) deepest_ = {s.deepest.ratio, s.deepest.first, s.deepest.second, -1};
+  }
+  return st;
+}
+
+std::size_t ParticleContacts::memory_bytes() const {
+  return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() +
+          cross_torque_.capacity()) * sizeof(Vec3) +
+         slipped_.capacity() + terms_.capacity() * sizeof(Terms) + compliance_.capacity() * sizeof(ContactCompliance) +
+         block_sums_.capacity() * sizeof(PairBlockSums) + (block_seconds_.capacity() + block_cost_.capacity()) * sizeof(double);
+}
+
+ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborSearch& search) {
+  CarriedHistory h;
+  const VerletList& list = search.pairs();
+  if (spring_.size() != list.num_pairs()) return h;
+  const auto& off = list.offsets();
+  const auto& idx = list.indices();
+  const std::size_t n = list.size();
+  const bool vt = !vt0_.empty(), wr = !wr0_.empty();
+  h.offset.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint32_t c = 0;
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) c += holds_history(k);
+    h.offset[i + 1] = h.offset[i] + c;
+  }
+  const std::size_t total = h.offset[n];
+  h.second.resize(total);
+  h.spring.resize(total);
+  if (vt) h.vt0.resize(total);
+  if (wr) h.wr0.resize(total);
+  std::size_t c = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
+      if (!holds_history(k)) continue;
+      h.second[c] = idx[k];
+      h.spring[c] = spring_[k];
+      if (vt) h.vt0[c] = vt0_[k];
+      if (wr) h.wr0[c] = wr0_[k];
+      ++c;
+    }
+  // The slot arrays are rebuilt for the new list; free them now (peak memory).
+  spring_ = {};
+  vt0_ = {};
+  wr0_ = {};
+  slipped_ = {};
+  return h;
+}
+
+void ParticleContacts::restore_history(const NeighborSearch& search, CarriedHistory h,
+                                       const std::vector<std::uint32_t>& old_index) {
+  const VerletList& list = search.pairs();
+  spring_.clear();
+  ensure_history(list.num_pairs());
+  if (h.second.empty()) return;
+  const auto& off = list.offsets();
+  const auto& idx = list.indices();
+  const std::size_t n = list.size();
+  const bool vt = !vt0_.empty() && !h.vt0.empty(), wr = !wr0_.empty() && !h.wr0.empty();
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
+      // The old pair was stored under its smaller old index; the spring acts on that member.
+      const std::uint32_t a = old_index[i], b = old_index[idx[k]];
+      const bool flip = a > b;
+      const std::uint32_t first = flip ? b : a, second = flip ? a : b;
+      if (static_cast<std::size_t>(second) + 1 >= h.offset.size()) continue;  // not in the old list
+      for (std::uint32_t c = h.offset[first]; c < h.offset[first + 1]; ++c) {
+        if (h.second[c] != second) continue;
+        spring_[k] = flip ? -h.spring[c] : h.spring[c];
+        if (vt) vt0_[k] = flip ? -h.vt0[c] : h.vt0[c];
+        if (wr) wr0_[k] = flip ? -h.wr0[c] : h.wr0[c];
+        break;
+      }
+    }
+}
+
+void ParticleContacts::save(BinaryWriter& w, const Particles& p, const NeighborSearch& search) const {
+  w.vector(export_history(p, search));
+}
+
+void ParticleContacts::restore(BinaryReader& r, const Particles& p, const NeighborSearch& search) {
+  import_history(p, search, r.vector<PairHistory>());
+}
+
+std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, const NeighborSearch& search) const {
+  std::vector<PairHistory> h;
+  const VerletList& list = search.pairs();
+  if (spring_.size() != list.num_pairs() || list.size() != p.size()) return h;
+  const auto& off = list.offsets();
+  const auto& idx = list.indices();
+  const bool vt = !vt0_.empty(), wr = !wr0_.empty();
+  for (std::size_t i = 0; i < list.size(); ++i)
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k)
+      if (holds_history(k))
+        h.push_back({p.id[i], p.id[idx[k]], spring_[k], vt ? vt0_[k] : Vec3{}, wr ? wr0_[k] : Vec3{}});
+  return h;
+}
+
+void ParticleContacts::import_history(const Particles& p, const NeighborSearch& search, std::vector<PairHistory> h) {
+  const VerletList& list = search.pairs();
+  spring_.clear();
+  ensure_history(list.num_pairs());
+  if (h.empty()) return;
+  const bool vt = !vt0_.empty(), wr = !wr0_.empty();
+  // Orient every record as (smaller id, larger id); look slots up by binary search.
+  for (PairHistory& r : h)
+    if (r.id_first > r.id_second) {
+      std::swap(r.id_first, r.id_second);
+      r.spring = -r.spring;
+      r.vt0 = -r.vt0;
+      r.wr0 = -r.wr0;
+    }
+  auto key_less = [](const PairHistory& a, const PairHistory& b) {
+    return a.id_first != b.id_first ? a.id_first < b.id_first : a.id_second < b.id_second;
+  };
+  std::sort(h.begin(), h.end(), key_less);
+  const auto& off = list.offsets();
+  const auto& idx = list.indices();
+  for (std::size_t i = 0; i < list.size(); ++i)
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
+      const std::int64_t a = p.id[i], b = p.id[idx[k]];
+      const bool flip = a > b;
+      PairHistory key{flip ? b : a, flip ? a : b, {}, {}, {}};
+      auto it = std::lower_bound(h.begin(), h.end(), key, key_less);
+      if (it == h.end() || it->id_first != key.id_first || it->id_second != key.id_second) continue;
+      spring_[k] = flip ? -it->spring : it->spring;
+      if (vt) vt0_[k] = flip ? -it->vt0 : it->vt0;
+      if (wr) wr0_[k] = flip ? -it->wr0 : it->wr0;
+    }
+}
+
+Vec3 ParticleContacts::spring_between(const NeighborSearch& search, std::size_t i, std::size_t j) const {
+  const bool flip = j < i;
+  const std::size_t a = flip ? j : i, b = flip ? i : j;
+  const auto& off = search.pairs().offsets();
+  const auto& idx = search.pairs().indices();
+  for (std::size_t k = off[a]; k < off[a + 1]; ++k)
+    if (idx[k] == b && k < spring_.size()) return flip ? -spring_[k] : spring_[k];
+  return {};
+}
+
+}  // namespace mpdem

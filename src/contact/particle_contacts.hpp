@@ -1,0 +1,111 @@
+#pragma once
+// ParticleContacts: Hertz-Mindlin contacts between particles (physics.md sections 5-6) over the
+// Verlet pair list, with the tangential spring history of every pair.
+//
+// Each pair slot k of the list holds the committed spring s [m] (the trapezoidal rule also the
+// tangential velocity at the start of the step vt0 [m/s]); only a commit evaluation updates them,
+// in place. Forces are added block by block in slot order (neighbor/pair_blocks.hpp,
+// sim/pair_batch.hpp), so totals do not depend on the thread count and f_ji = -f_ij exactly.
+#include <cstdint>
+#include <vector>
+
+#include "physics/contact_model.hpp"
+#include "sim/interactions.hpp"
+#include "neighbor/neighbor_search.hpp"
+#include "contact/pair_batch.hpp"
+
+namespace mpdem {
+
+// Contact history of one pair, keyed by the ids of its members (first = the member the spring
+// acts on), used to carry springs across list rebuilds and reorderings.
+struct PairHistory {
+  std::int64_t id_first = 0, id_second = 0;
+  Vec3 spring;   // m
+  Vec3 vt0;      // m/s
+  Vec3 wr0;      // rad/s, relative rotation w_first - w_second at the step start
+};
+
+struct PairStats {
+  std::size_t contacts = 0;
+  double elastic_energy = 0.0;      // J
+  double damping_power = 0.0;       // W, removed by normal + tangential damping
+  double friction_power = 0.0;      // W, removed by sliding and rolling friction
+};
+
+// The deepest contact of the last evaluation, relative to the smaller radius.
+struct OverlapReport {
+  double ratio = 0.0;              // -, overlap / min(R_i, R_j) (particle-barrier: / R_i)
+  std::int64_t particle = -1;      // id of the (first) particle
+  std::int64_t other = -1;         // id of the other particle, or -1
+  std::int64_t element = -1;       // id of the barrier element, or -1
+};
+
+class ParticleContacts {
+ public:
+  // step_start: keep each contact's tangential velocity (and relative rotation, with rolling
+  // resistance) of the step start and the first iteration's stick/slip decisions - what the
+  // trapezoidal rule's increment (64) needs. Velocity Verlet (phi = 1, one evaluation a step)
+  // needs only the spring.
+  ParticleContacts(const ContactModel& law, bool step_start) : law_(law), step_start_(step_start) {}
+
+  // Adds contact forces and torques to p.force / p.torque; list must be current for p.x.
+  PairStats evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req);
+
+  // The contact history across a neighbour rebuild, keyed by the particles' indices before it:
+  // taken out before the particles are permuted or removed and the list is rebuilt ...
+  struct CarriedHistory {
+    std::vector<std::uint32_t> offset{0};  // [N_old + 1] CSR over the old first member
+    std::vector<std::uint32_t> second;     // [kept] old index of the second member, ascending
+    std::vector<Vec3> spring, vt0, wr0;    // [kept] m, m/s, rad/s (vt0, wr0 empty when unused)
+  };
+  CarriedHistory carry_history(const NeighborSearch& search);
+  // ... and put back onto the rebuilt list; old_index[i] is the old index of particle i.
+  void restore_history(const NeighborSearch& search, CarriedHistory h, const std::vector<std::uint32_t>& old_index);
+
+  // History of the touching pairs (ids, springs), for checkpoints ...
+  std::vector<PairHistory> export_history(const Particles& p, const NeighborSearch& search) const;
+  // ... and back onto the slots of the rebuilt list (spring sign follows the pair's orientation).
+  void import_history(const Particles& p, const NeighborSearch& search, std::vector<PairHistory> h);
+
+  // The deepest contact of the last evaluation.
+  OverlapReport max_overlap() const { return deepest_; }
+
+  // Checkpoints (the list must be restored first).
+  void save(BinaryWriter& w, const Particles& p, const NeighborSearch& search) const;
+  void restore(BinaryReader& r, const Particles& p, const NeighborSearch& search);
+
+  // For tests: the committed spring of the pair (i, j), or zero when none.
+  Vec3 spring_between(const NeighborSearch& search, std::size_t i, std::size_t j) const;
+  std::size_t memory_bytes() const;
+  // For tests: choose the scalar candidate selection even when the AVX-512 one is built in.
+  void use_vector_select(bool on) { vector_select_ = on; }
+
+  using Terms = ContactTerms;  // per-particle values of the kernel, sim/pair_batch.hpp
+
+ private:
+  void ensure_history(std::size_t pairs);
+  bool holds_history(std::size_t k) const;  // slot k has a spring, vt0 or wr0 to keep
+  void refresh_terms(const Particles& p, std::uint64_t generation);
+
+  ContactModel law_;
+  bool step_start_;
+  // Per pair slot [pairs]; the committed history is updated in place by commit evaluations.
+  std::vector<Vec3> spring_;         // m, committed tangential spring of the slot's first member
+  std::vector<Vec3> vt0_;            // m/s, tangential velocity at the step start (step_start)
+  std::vector<Vec3> wr0_;            // rad/s, w_first - w_second at the step start (step_start, mu_r > 0)
+  std::vector<std::uint8_t> slipped_;  // stick (0) / slip (1) of the first iteration (step_start)
+  // Per cross pair [PairBlocks::num_cross()], the second member's share, added after the block pass:
+  std::vector<Vec3> cross_force_;    // N
+  std::vector<Vec3> cross_torque_;   // N m
+  std::vector<Terms> terms_;         // [N], from the particles' constant properties
+  std::vector<ContactCompliance> compliance_;  // [N], or empty when uniform_.on
+  std::uint64_t terms_generation_ = 0;  // NeighborSearch::generation() they were computed at
+  UniformModuli uniform_;            // set when all terms_ have the same elastic constants
+  std::vector<PairBlockSums> block_sums_;  // [blocks]
+  std::vector<double> block_seconds_;      // [blocks] s, each block's time at the last evaluation
+  std::vector<double> block_cost_;         // [blocks + 1] s, their sum before each block (thread shares)
+  OverlapReport deepest_;
+  bool vector_select_ = true;
+};
+
+}  // namespace mpdem

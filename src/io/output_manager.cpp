@@ -1,0 +1,190 @@
+#include "io/output_manager.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "io/atomic_file.hpp"
+#include "io/csv_log.hpp"
+#include "io/pvd_index.hpp"
+#include "io/vtu_writer.hpp"
+#include "sim/energy.hpp"
+#include "thermal/heat_transfer.hpp"
+#include "field/near_field_forces.hpp"
+
+namespace mpdem {
+
+namespace fs = std::filesystem;
+
+namespace {
+// Keeps the header and the rows whose `time` column is <= t: a resumed run continues a log from
+// its checkpoint without the rows the interrupted run wrote after it.
+void keep_rows_until(const fs::path& file, double t) {
+  if (!fs::exists(file)) return;
+  std::ifstream in(file);
+  std::string header, line, kept;
+  if (!std::getline(in, header)) return;
+  std::size_t col = 0;
+  {
+    std::stringstream hs(header);
+    std::string name;
+    while (std::getline(hs, name, ',') && name != "time") ++col;
+  }
+  kept = header + "\n";
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    std::string field;
+    for (std::size_t c = 0; c <= col && std::getline(ls, field, ','); ++c) {}
+    char* end = nullptr;
+    const double v = std::strtod(field.c_str(), &end);
+    if (end != field.c_str() && v <= t) kept += line + "\n";
+  }
+  write_file_atomically(file, [&](std::ostream& os) { os << kept; });
+}
+}  // namespace
+
+OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& barriers,
+                             std::optional<double> resume_time)
+    : model_(model), dir_(std::move(dir)), resume_time_(resume_time) {
+  const CsvLog::Open mode = resume_time ? CsvLog::Open::append : CsvLog::Open::replace;
+  auto pvd = [&](const fs::path& f) {
+    return resume_time ? std::make_unique<PvdIndex>(f, *resume_time) : std::make_unique<PvdIndex>(f);
+  };
+  auto log = [&](const fs::path& f, std::vector<std::string> cols) {
+    if (resume_time) keep_rows_until(f, *resume_time);
+    return std::make_unique<CsvLog>(f, std::move(cols), mode);
+  };
+  const OutputParams& o = model.params.output;
+  particles_vtu_.every = o.particles_every;
+  barriers_vtu_.every = o.barriers_every;
+  particles_csv_.every = o.particle_csv_every;
+  barrier_log_.every = o.barrier_log_every;
+  fs::create_directories(dir_);
+  if (particles_vtu_.every > 0.0) {
+    fs::create_directories(dir_ / "particles");
+    particles_pvd_ = pvd(dir_ / "particles.pvd");
+  }
+  if (barriers_vtu_.every > 0.0 && barriers.size() > 0) {
+    fs::create_directories(dir_ / "barriers");
+    barriers_pvd_ = pvd(dir_ / "barriers.pvd");
+  }
+  if (particles_csv_.every > 0.0) fs::create_directories(dir_ / "particles_csv");
+  std::vector<std::string> log_cols{"step", "time", "dt", "iterations", "evaluations", "evaluations_total",
+                                    "redone_steps", "particles", "removed", "contacts_pp", "contacts_pb", "kinetic",
+                                    "rotational", "potential", "elastic", "damping_dissipated", "friction_dissipated",
+                                    "total_energy"};
+  // Optional columns only for the physics a scene turns on, so plain mechanical logs keep their shape.
+  near_field_ = near_field_enabled(model.params.near_field);
+  thermal_ = model.params.analysis.thermal;
+  if (near_field_) log_cols.insert(log_cols.end() - 1, "near_field");  // part of total_energy
+  if (thermal_)
+    for (const char* c : {"heat_to_barriers", "heat_convected", "heat_radiated", "thermal_energy"}) log_cols.push_back(c);
+  log_ = log(dir_ / "log.csv", log_cols);
+  group_count_ = barriers.group_names.size();
+  if (barrier_log_.every > 0.0 && group_count_ > 0) {
+    std::vector<std::string> cols{"time"};
+    for (const auto& g : barriers.group_names)
+      for (const char* c : {"fx", "fy", "fz", "mx", "my", "mz", "area"}) cols.push_back(g + "." + c);
+    groups_ = log(dir_ / "barrier_groups.csv", cols);
+  }
+}
+
+OutputManager::~OutputManager() = default;
+
+void OutputManager::save(BinaryWriter& w) const {
+  for (const Series* s : {&particles_vtu_, &barriers_vtu_, &particles_csv_, &barrier_log_}) w.value(*s);
+}
+
+void OutputManager::restore(BinaryReader& r) {
+  for (Series* s : {&particles_vtu_, &barriers_vtu_, &particles_csv_, &barrier_log_}) {
+    const double every = s->every;  // the scene's interval wins over the checkpoint's
+    *s = r.value<Series>();
+    s->every = every;
+  }
+}
+
+bool OutputManager::due(Series& s, double t, double dt, bool force) {
+  if (s.every <= 0.0) return false;
+  const double slack = 0.5 * dt;  // round-off in the accumulated time must not skip a snapshot
+  if (s.count > 0 && t <= s.last + slack) return false;  // already written at this time
+  if (!force && t + slack < s.next) return false;
+  s.next = (std::floor((t + slack) / s.every) + 1.0) * s.every;
+  s.last = t;
+  ++s.count;
+  return true;
+}
+
+void OutputManager::snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force) {
+  if (particles_pvd_ && due(particles_vtu_, t, dt, force)) {
+    const std::string name = fmt::format("particles/particles_{:06d}.vtu", particles_vtu_.count - 1);
+    write_particles_vtu(dir_ / name, p, t);
+    particles_pvd_->add(t, name);
+  }
+  if (barriers_pvd_ && due(barriers_vtu_, t, dt, force)) {
+    const std::string name = fmt::format("barriers/barriers_{:06d}.vtu", barriers_vtu_.count - 1);
+    write_barriers_vtu(dir_ / name, b, t);
+    barriers_pvd_->add(t, name);
+  }
+  if (particles_csv_.every > 0.0 && due(particles_csv_, t, dt, force)) {
+    write_particles_csv(dir_ / fmt::format("particles_csv/particles_{:06d}.csv", particles_csv_.count - 1), p, t);
+  }
+  if (groups_ && due(barrier_log_, t, dt, force)) {
+    std::vector<double> row(1 + 7 * group_count_, 0.0);
+    row[0] = t;
+    for (std::size_t e = 0; e < b.size(); ++e) {
+      double* g = &row[1 + 7 * static_cast<std::size_t>(b.group[e])];
+      const Vec3 c = b.centre(e);
+      const Vec3 m = b.moment[e] + cross(c, b.force[e]);  // moment about the origin
+      g[0] += b.force[e].x; g[1] += b.force[e].y; g[2] += b.force[e].z;
+      g[3] += m.x; g[4] += m.y; g[5] += m.z;
+      g[6] += b.area[e];
+    }
+    groups_->row(row);
+  }
+}
+
+void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const InteractionStats& s) {
+  const ParticleEnergy e = particle_energy(p, model_.params.fields.gravity);
+  const double nf = near_field_ ? s.near_field_energy : 0.0;
+  const double total = e.kinetic + e.rotational + e.potential + s.elastic_energy + s.damping_dissipated +
+                       s.friction_dissipated + nf;
+  std::vector<double> row{static_cast<double>(r.step), r.time, r.dt,
+                          static_cast<double>(r.report ? r.report->iterations : 0),
+                          static_cast<double>(r.report ? r.report->evaluations : 0),
+                          static_cast<double>(r.evaluations_total), static_cast<double>(r.redone_steps),
+                          static_cast<double>(p.size()), static_cast<double>(r.removed_total),
+                          static_cast<double>(s.contacts_pp), static_cast<double>(s.contacts_pb), e.kinetic,
+                          e.rotational, e.potential, s.elastic_energy, s.damping_dissipated, s.friction_dissipated};
+  if (near_field_) row.push_back(nf);
+  row.push_back(total);
+  if (thermal_) {
+    row.push_back(s.heat_to_barriers);
+    row.push_back(s.heat_convected);
+    row.push_back(s.heat_radiated);
+    row.push_back(thermal_energy(p));
+  }
+  log_->row(row);
+}
+
+void OutputManager::removed(std::int64_t id, double t, const Vec3& x) {
+  if (!removed_) {
+    const fs::path f = dir_ / "removed.csv";
+    const bool resume = resume_time_ && fs::exists(f);
+    if (resume) keep_rows_until(f, *resume_time_);
+    removed_ = std::make_unique<CsvLog>(f, std::vector<std::string>{"time", "id", "x", "y", "z"},
+                                        resume ? CsvLog::Open::append : CsvLog::Open::replace);
+  }
+  const double row[] = {t, static_cast<double>(id), x.x, x.y, x.z};
+  removed_->row(row);
+}
+
+void OutputManager::flush() {
+  log_->flush();
+  if (groups_) groups_->flush();
+  if (removed_) removed_->flush();
+}
+
+}  // namespace mpdem

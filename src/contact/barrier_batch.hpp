@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "core/vec3.hpp"
-#include "physics/contact_model.hpp"
+#include "contact/contact_table.hpp"
 #include "physics/tangential.hpp"
 #include "contact/barrier_contact_store.hpp"
 #include "sim/interactions.hpp"
@@ -39,14 +39,17 @@ struct BarrierBatch {
   double ux[kContacts], uy[kContacts], uz[kContacts];        // m/s, barrier velocity
   double s0x[kContacts], s0y[kContacts], s0z[kContacts];     // m, stored spring (zero: none)
   double vt0x[kContacts], vt0y[kContacts], vt0z[kContacts];  // m/s, stored tangential velocity
-  double E[kContacts], G[kContacts];                          // Pa, E*, G*
+  // the pair's law (contact_table.hpp's PairLaw, by field)
+  ContactLawKind law[kContacts];
+  double cn[kContacts], ct[kContacts], sr[kContacts];          // PairLaw::cn, ct, shear_root
+  double xin[kContacts], xit[kContacts], mus[kContacts], mud[kContacts], mur[kContacts];  // -
   double r[kContacts], m[kContacts];                          // m, kg: r* = R, m* = m
   // --- the law's results (contact_law)
   double fx[kContacts], fy[kContacts], fz[kContacts];        // N, force on the particle
   double tx[kContacts], ty[kContacts], tz[kContacts];        // N m, r_P x f_t
   double sx[kContacts], sy[kContacts], sz[kContacts];        // m, spring for the next step
   double vtx[kContacts], vty[kContacts], vtz[kContacts];     // m/s, tangential velocity
-  double fn[kContacts];                                       // N, net normal force
+  double fn[kContacts];                                       // N, positive part of the net normal force
   double energy[kContacts];                                   // J, elastic energy
   double damping[kContacts];                                  // W, dashpot power
   double friction[kContacts];                                 // W, sliding power
@@ -56,10 +59,16 @@ struct BarrierBatch {
   bool room() const { return count + kSlots <= kContacts && particles < kContacts; }
   // Contacts rounded up to whole vectors.
   std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }
+
+  void set_law(std::size_t t, const PairLaw& c) {
+    law[t] = c.law, cn[t] = c.cn, ct[t] = c.ct, sr[t] = c.shear_root;
+    xin[t] = c.xi_n, xit[t] = c.xi_t, mus[t] = c.mu_s, mud[t] = c.mu_d, mur[t] = c.mu_r;
+  }
+  PairLaw law_of(std::size_t t) const { return {law[t], cn[t], ct[t], sr[t], xin[t], xit[t], mus[t], mud[t], mur[t]}; }
 };
 
-// The Hertz-Mindlin law (physics.md sections 5-7) of every contact of the batch (count >= 1):
-// fills the results from the inputs, lane by lane.
-void barrier_contact_law(const ContactModel& law, const EvalRequest& req, BarrierBatch& b);
+// The contact law (contact_law.hpp; physics.md sections 5-7, 13) of every contact of the batch
+// (count >= 1), for the laws the table holds: fills the results from the inputs, lane by lane.
+void barrier_contact_law(LawMix mix, const EvalRequest& req, BarrierBatch& b);
 
 }  // namespace mpdem

@@ -7,7 +7,6 @@
 #include <stdexcept>
 
 #include "core/parallel.hpp"
-#include "physics/hertz.hpp"
 #include "physics/rolling.hpp"
 #include "physics/tangential.hpp"
 #include "contact/barrier_batch.hpp"
@@ -41,8 +40,7 @@ template <int write = 0, class T>
   prefetch_item(p.w, i);
   prefetch_item(p.radius, i);
   prefetch_item(p.mass, i);
-  prefetch_item(p.young, i);
-  prefetch_item(p.poisson, i);
+  prefetch_item(p.material, i);
   prefetch_item<1>(p.force, i);
   prefetch_item<1>(p.torque, i);
   prefetch_item(broad.offsets(), i);
@@ -62,8 +60,12 @@ double element_pressure(const Barriers& b, std::size_t e) { return -dot(b.force[
 
 }  // namespace
 
-BarrierContacts::BarrierContacts(const ContactModel& law, const Barriers& b)
-    : law_(law), topo_(BarrierTopology::build(b)) {}
+BarrierContacts::BarrierContacts(const Model& model, const Barriers& b)
+    : model_(model), topo_(BarrierTopology::build(b)) {
+  for (std::size_t e = 0; e < b.size(); ++e)
+    if (b.material.size() != b.size() || b.material[e] < 0 || b.material[e] >= static_cast<int>(model.materials.size()))
+      throw std::logic_error("barrier contacts: an element without a material (resolve_material_variants)");
+}
 
 PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req) {
   const std::size_t n = p.size();
@@ -72,6 +74,7 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
   if (broad.size() != n || broad.num_elements() != b.size())
     throw std::logic_error("barrier contacts: the candidate lists do not match the scene");
   if (store_.stale(broad)) store_.relayout(broad);
+  table_.build(model_);
 
   // The elements translate rigidly: their triangles (normals, edge directions) once per
   // evaluation, not per candidate.
@@ -99,7 +102,6 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
     // right away, in the order element_loads would (ascending particle), saving that pass.
     const bool serial = omp_get_num_threads() == 1;
     if (serial) direct = true;
-    PairModuli moduli;                             // per thread
     std::vector<BarrierContact> found;             // per thread, reused by its particles
     found.reserve(kSlots);
     const auto batch = std::make_unique<BarrierBatch>();  // per thread (~40 KB: not on the stack)
@@ -121,7 +123,7 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
           if (!c.empty()) __builtin_prefetch(c.data());
         }
         if (!batch->room()) flush(p, serial ? &b : nullptr, req, *batch, acc);
-        collect(k, p, b, broad, req, moduli, found, *batch, acc);
+        collect(k, p, b, broad, req, found, *batch, acc);
       }
       flush(p, serial ? &b : nullptr, req, *batch, acc);
       partial_[g] = acc;
@@ -140,16 +142,8 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
   return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3]};
 }
 
-void BarrierContacts::PairModuli::derive(const std::array<std::uint64_t, 4>& k, double E_i, double nu_i, double E_j,
-                                         double nu_j) {
-  valid = true;
-  key = k;
-  E = effective_modulus(E_i, nu_i, E_j, nu_j);
-  G = effective_shear_modulus(shear_modulus(E_i, nu_i), nu_i, shear_modulus(E_j, nu_j), nu_j);
-}
-
 void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers& b, const BarrierBroadphase& broad,
-                              const EvalRequest& req, PairModuli& moduli, std::vector<BarrierContact>& found,
+                              const EvalRequest& req, std::vector<BarrierContact>& found,
                               BarrierBatch& batch, std::array<double, 5>& acc) {
   const std::size_t i = store_.particle(k);
   const auto cand = broad.candidates(i);
@@ -198,7 +192,8 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
         if (first[s].element == static_cast<std::int32_t>(e))
           decide = first[s].slipped ? SlipDecision::Slip : SlipDecision::Stick;
     // Half-space of the barrier's material: its own E, nu in (51); r* = R, m* = m (76)-(79).
-    const PairModuli& em = moduli.of(p.young[i], p.poisson[i], b.young[e], b.poisson[e]);
+    const PairLaw& law = table_.barrier_pair(static_cast<std::size_t>(p.material[i]),
+                                             static_cast<std::size_t>(b.material[e]));
     // No history: a zero spring, which project_spring leaves exactly zero.
     const Vec3 s0 = hist ? hist->spring : Vec3{};
     const Vec3 vt0 = hist ? hist->vt0 : Vec3{};
@@ -215,7 +210,8 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
     batch.ux[t] = u.x, batch.uy[t] = u.y, batch.uz[t] = u.z;
     batch.s0x[t] = s0.x, batch.s0y[t] = s0.y, batch.s0z[t] = s0.z;
     batch.vt0x[t] = vt0.x, batch.vt0y[t] = vt0.y, batch.vt0z[t] = vt0.z;
-    batch.E[t] = em.E, batch.G[t] = em.G, batch.r[t] = r, batch.m[t] = m;
+    batch.set_law(t, law);
+    batch.r[t] = r, batch.m[t] = m;
   }
   batch.k[batch.particles] = static_cast<std::uint32_t>(k);
   batch.end[batch.particles] = static_cast<std::uint32_t>(batch.count);
@@ -225,9 +221,9 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
 void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch,
                             std::array<double, 5>& acc) {
   if (batch.particles == 0) return;
-  if (batch.count > 0) barrier_contact_law(law_, req, batch);
+  if (batch.count > 0) barrier_contact_law(table_.barrier_mix(), req, batch);
   // In particle order, each particle's contacts in order: the original per-particle sums.
-  const bool rolling = !(law_.mu_r <= 0.0);  // rolling_resistance_torque's own test
+  const bool rolling = table_.any_rolling();
   const double dt = req.dt;
   // The sums in registers: acc could alias the records written below, as far as the compiler
   // knows, and every += would wait on the previous store.
@@ -247,7 +243,7 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
       Vec3 roll{};
       if (rolling) {
         const Vec3 wr0 = req.iteration > 0 ? (hist ? hist->wr0 : Vec3{}) : w;
-        roll = rolling_resistance_torque(wr0, law_.mu_r, batch.r[t], batch.fn[t], p.inertia[i], dt);
+        roll = rolling_resistance_torque(wr0, batch.mur[t], batch.r[t], batch.fn[t], p.inertia[i], dt);
       }
       const Vec3 f{batch.fx[t], batch.fy[t], batch.fz[t]};
       force += f;

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "physics/barrier_contact_detect.hpp"
-#include "physics/contact_model.hpp"
+#include "contact/contact_table.hpp"
 #include "contact/barrier_contact_store.hpp"
 #include "sim/interactions.hpp"
 #include "neighbor/neighbor_search.hpp"
@@ -38,7 +38,8 @@ class BarrierContacts {
  public:
   static constexpr int kSlots = BarrierContactStore::kSlots;  // simultaneous barrier contacts per particle
 
-  BarrierContacts(const ContactModel& law, const Barriers& b);
+  // The laws come from the model's materials and [contact] tables, looked up at every evaluation.
+  BarrierContacts(const Model& model, const Barriers& b);
 
   // Adds contact forces/torques to the particles and loads to the barriers.
   PairStats evaluate(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req);
@@ -52,27 +53,10 @@ class BarrierContacts {
   std::size_t memory_bytes() const { return store_.bytes(); }  // B, held by the contact records
 
  private:
-  // E* (Pa) and G* (Pa) of the last particle-element material pair met by one thread: a bed of
-  // one material against walls of one material derives them once, not per contact (4 divisions).
-  struct PairModuli {
-    bool valid = false;
-    std::array<std::uint64_t, 4> key{};  // bit patterns of E_i, nu_i, E_j, nu_j
-    double E = 0.0;                       // Pa, effective_modulus
-    double G = 0.0;                       // Pa, effective_shear_modulus
-    // The moduli of this pair, derived anew only when it differs from the last one. Bit patterns,
-    // not ==, so the values kept are exactly those the inputs give (-0 and +0 differ).
-    const PairModuli& of(double E_i, double nu_i, double E_j, double nu_j) {
-      const std::array<std::uint64_t, 4> k{std::bit_cast<std::uint64_t>(E_i), std::bit_cast<std::uint64_t>(nu_i),
-                                           std::bit_cast<std::uint64_t>(E_j), std::bit_cast<std::uint64_t>(nu_j)};
-      if (!valid || k != key) derive(k, E_i, nu_i, E_j, nu_j);
-      return *this;
-    }
-    void derive(const std::array<std::uint64_t, 4>& k, double E_i, double nu_i, double E_j, double nu_j);
-  };
   // Contacts of active particle k, stage 1: detects them, finds their history, sets its record
   // counts and appends the contacts with the particle's values to the batch (acc[4]: dropped).
   void collect(std::size_t k, const Particles& p, const Barriers& b, const BarrierBroadphase& broad,
-               const EvalRequest& req, PairModuli& moduli, std::vector<BarrierContact>& found, BarrierBatch& batch,
+               const EvalRequest& req, std::vector<BarrierContact>& found, BarrierBatch& batch,
                std::array<double, 5>& acc);
   // The law over the batch, then in particle and contact order: the tentative history and loads,
   // the particles' force and torque, and acc = {contacts, elastic energy J, damping power W,
@@ -80,7 +64,8 @@ class BarrierContacts {
   void flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch, std::array<double, 5>& acc);
   void element_loads(Barriers& b);  // sums the loads of the last evaluation onto the elements, in particle order
 
-  ContactModel law_;
+  const Model& model_;
+  ContactTable table_;                          // rebuilt from model_ at every evaluation
   BarrierTopology topo_;
   BarrierContactStore store_;
   std::vector<std::array<double, 5>> partial_;  // [groups] sums of one evaluation, per group

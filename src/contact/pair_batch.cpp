@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <type_traits>
 
+#include "contact/contact_law.hpp"
 #include "neighbor/pair_blocks.hpp"
-#include "physics/contact_coefficients.hpp"
-#include "physics/hertz.hpp"
 #include "physics/rolling.hpp"
-#include "physics/tangential.hpp"
 
 // GCC vectorises the indexed loads of the gather stages into element-by-element gathers,
 // slower than plain loads; other compilers get no attribute.
@@ -50,23 +49,22 @@ struct Batch {
   double dvx[kBatch], dvy[kBatch], dvz[kBatch];  // m/s, v_i - v_j
   double wsx[kBatch], wsy[kBatch], wsz[kBatch];  // m/s, R_i w_i + R_j w_j
   double reach[kBatch];                          // m, R_i + R_j
-  double sc[kBatch], ss[kBatch];                 // 1/Pa: sums of the members' ContactCompliance
   double rr[kBatch], sm[kBatch];                 // m^2, 1/kg: R_i R_j, 1/m_i + 1/m_j
+  // The pair's law (several materials only; one material: PairPass::uniform_law).
+  ContactLawKind law[kBatch];
+  double cn[kBatch], ct[kBatch], sr[kBatch];     // PairLaw::cn, ct, shear_root
+  double xin[kBatch], xit[kBatch], mus[kBatch], mud[kBatch], mur[kBatch];  // -, damping, friction
   // Stage 1: geometry and kinematics.
   double overlap[kBatch];              // m, 0 when apart
   double nx[kBatch], ny[kBatch], nz[kBatch];     // -, n_ij, from j to i
   double vtx[kBatch], vty[kBatch], vtz[kBatch];  // m/s, tangential relative velocity (61)
   double r[kBatch];                    // m, r* (52)
-  // Stage 2: normal law.
-  double f_el[kBatch];                 // N, elastic Hertz force
-  double fn[kBatch];                   // N, net normal force (clamped at 0)
-  double pn[kBatch];                   // W, normal damping power
-  double kt[kBatch], dtc[kBatch];      // N/m, N s/m
-  // Stage 3a: history.
+  // Stage 2a: history.
   double s0x[kBatch], s0y[kBatch], s0z[kBatch];  // m, stored spring
-  double dsx[kBatch], dsy[kBatch], dsz[kBatch];  // m, increment (64)
+  double v0x[kBatch], v0y[kBatch], v0z[kBatch];  // m/s, step-start tangential velocity (kStepStart)
   SlipDecision decide[kBatch];
-  // Stage 3: tangential law.
+  // Stage 2: the law.
+  double fn[kBatch];                   // N, positive part of the net normal force (rolling resistance)
   double sx[kBatch], sy[kBatch], sz[kBatch];     // m, spring for the next step
   std::int64_t slip[kBatch];           // 1 when sliding (8 bytes, like SlipDecision)
   // Stage 4a: results.
@@ -91,7 +89,7 @@ void forget_history(const PairPass& q, std::size_t k) {
 
 // Stage 1a: the members' values for the batch (indexed loads). Kept scalar: vectorised, the
 // compiler emulates the gathers element by element, which is slower than plain loads.
-// kUniform (every particle has the same elastic constants): E* and G* are constants, not sums.
+// Several materials (!kUniform): each pair's law from the table, by the members' materials.
 template <bool kUniform>
 MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
   // Lanes past count repeat the last candidate (run() is called with count >= 1).
@@ -109,119 +107,96 @@ MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
     b.dvx[t] = dv.x, b.dvy[t] = dv.y, b.dvz[t] = dv.z;
     b.wsx[t] = ws.x, b.wsy[t] = ws.y, b.wsz[t] = ws.z;
     if constexpr (!kUniform) {
-      b.sc[t] = q.compliance[i].normal + q.compliance[j].normal;
-      b.ss[t] = q.compliance[i].shear + q.compliance[j].shear;
+      const PairLaw& c = q.laws[static_cast<std::size_t>(q.material[i]) * q.materials + q.material[j]];
+      b.law[t] = c.law, b.cn[t] = c.cn, b.ct[t] = c.ct, b.sr[t] = c.shear_root;
+      b.xin[t] = c.xi_n, b.xit[t] = c.xi_t, b.mus[t] = c.mu_s, b.mud[t] = c.mu_d, b.mur[t] = c.mu_r;
     }
     b.rr[t] = ri * rj;
     b.sm[t] = ti.inv_mass + tj.inv_mass;
   }
 }
 
-// Stage 1 (60)-(62): overlap, normal, relative velocity at the contact point; and the normal
-// law (49)-(50), (65), (67) (an apart candidate, overlap 0, gets zero coefficients). One loop:
-// the intermediate values stay in registers.
-template <bool kUniform>
-void geometry_normal(const PairPass& q, Batch& b) {
-  const double xi_n = q.law.xi_n, xi_t = q.law.xi_t;
-  const UniformModuli u = q.uniform;
-  gather_members<kUniform>(q, b);
-  // 1b. The arithmetic, over contiguous arrays (vectorised).
-  for (std::size_t t = 0; t < b.lanes(); ++t) {
-    const Vec3 d{b.dx[t], b.dy[t], b.dz[t]};
-    const double dist = std::sqrt(norm2(d));
-    const double reach = b.reach[t];
-    const double ov = reach - dist;
-    b.overlap[t] = ov > 0.0 ? ov : 0.0;
-    // Coincident centres get +z, so nothing becomes NaN.
-    const double inv = 1.0 / (dist > 0.0 ? dist : 1.0);
-    const Vec3 nrm = dist > 0.0 ? d * inv : Vec3{0.0, 0.0, 1.0};
-    b.nx[t] = nrm.x;
-    b.ny[t] = nrm.y;
-    b.nz[t] = nrm.z;
-    // r* = R_i R_j / (R_i + R_j) (52) and m* = 1 / sm (53) from one division.
-    const double inv_rm = 1.0 / (reach * b.sm[t]);
-    const double r = b.rr[t] * b.sm[t] * inv_rm, m = reach * inv_rm;
-    b.r[t] = r;
-    // (60) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
-    const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
-    const double vn = dot(vrel, nrm);
-    const Vec3 vt = vrel - vn * nrm;  // (61)
-    b.vtx[t] = vt.x;
-    b.vty[t] = vt.y;
-    b.vtz[t] = vt.z;
-    const ContactCoefficients cc =
-        kUniform ? contact_coefficients_fixed_moduli(u.E_star, u.G_star, u.shear_root, r, m, xi_n, xi_t, b.overlap[t])
-                 : contact_coefficients(1.0 / b.sc[t], 1.0 / b.ss[t], r, m, xi_n, xi_t, b.overlap[t]);  // (51), G*
-    const NormalForce fn = damped_normal_force(cc.f_el, cc.d_n, vn);
-    b.f_el[t] = cc.f_el;
-    b.fn[t] = fn.magnitude;
-    b.pn[t] = fn.dissipated_power;
-    b.kt[t] = cc.k_t;
-    b.dtc[t] = cc.d_t;
-  }
-}
-
-// Stage 3 (57)-(70): the stored spring on the current tangent plane plus the trapezoidal
-// increment (64) (Verlet: phi = 1), Coulomb stick or slip.
-// Stage 3a: each slot's stored spring, and (kFull) the increment (64) and the imposed stick/slip
-// decision (indexed loads, scalar like gather_members), so that the law's loop has no branch.
-// Without step-start velocities and before the second iteration (velocity Verlet, and the
-// trapezoidal rule's first evaluations) the increment is dt phi v_t and the decision free: the
-// law's loop forms them itself (!kFull), with the same arithmetic.
-template <bool kFull>
+// Stage 2a: each slot's stored spring and (kStepStart: the trapezoidal rule) its step-start
+// tangential velocity and imposed stick/slip decision (indexed loads, scalar like gather_members).
+template <bool kStepStart>
 MPDEM_SCALAR_LOOPS void gather_history(const PairPass& q, Batch& b) {
-  const double dt = q.dt, phi = q.phi;
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const std::size_t k = b.slot[t];
     const Vec3 s0 = q.spring[k];
     b.s0x[t] = s0.x, b.s0y[t] = s0.y, b.s0z[t] = s0.z;
-    if constexpr (kFull) {
-      const Vec3 ds = q.vt0 ? dt * ((1.0 - phi) * q.vt0[k] + phi * b.vt(t)) : (dt * phi) * b.vt(t);
-      b.dsx[t] = ds.x, b.dsy[t] = ds.y, b.dsz[t] = ds.z;
+    if constexpr (kStepStart) {
+      const Vec3 v0 = q.vt0[k];
+      b.v0x[t] = v0.x, b.v0y[t] = v0.y, b.v0z[t] = v0.z;
       b.decide[t] = q.iteration < 2 ? SlipDecision::Free : q.slipped[k] ? SlipDecision::Slip : SlipDecision::Stick;
     }
   }
 }
 
-template <bool kFull>
-void tangential_stage(const PairPass& q, Batch& b) {
-  const double mu_s = q.law.mu_s, mu_d = q.law.mu_d, dt_phi = q.dt * q.phi;
-  gather_history<kFull>(q, b);
+// Stages 1 and 2: geometry and kinematics (60)-(62), the spring increment (64) (Verlet: phi = 1)
+// and the contact law (evaluate_contact, contact_law.hpp), over contiguous arrays (vectorised;
+// an apart candidate, overlap 0, gets finite values that apply() skips). One loop: the
+// intermediate values stay in registers.
+template <bool kUniform, class Law, bool kStepStart>
+void contact_stage(const PairPass& q, Batch& b) {
+  gather_members<kUniform>(q, b);
+  gather_history<kStepStart>(q, b);
+  const double dt = q.dt, phi = q.phi, dt_phi = q.dt * q.phi;
+  const PairLaw u = q.uniform_law;
   for (std::size_t t = 0; t < b.lanes(); ++t) {
-    const Vec3 ds = kFull ? Vec3{b.dsx[t], b.dsy[t], b.dsz[t]} : dt_phi * b.vt(t);
-    const SlipDecision decide = kFull ? b.decide[t] : SlipDecision::Free;
-    const TangentialResult ft = tangential_force(project_spring({b.s0x[t], b.s0y[t], b.s0z[t]}, b.normal(t)), ds,
-                                                 b.vt(t), b.kt[t], b.dtc[t], mu_s, mu_d, b.fn[t], decide);
-    b.sx[t] = ft.spring.x;
-    b.sy[t] = ft.spring.y;
-    b.sz[t] = ft.spring.z;
-    b.slip[t] = ft.slipped ? 1 : 0;
-    // Stage 4a: the contact's force, torque arm and energy terms.
-    const Vec3 nrm = b.normal(t);
-    const Vec3 f = b.fn[t] * nrm + ft.force;
-    const Vec3 arm = cross(nrm, ft.force);  // torque r_P x f_t = -R n x f_t on both members (62)
+    const Vec3 d{b.dx[t], b.dy[t], b.dz[t]};
+    const double dist = std::sqrt(norm2(d));
+    const double ov = b.reach[t] - dist;
+    ContactState c;
+    c.overlap = ov > 0.0 ? ov : 0.0;
+    // Coincident centres get +z, so nothing becomes NaN.
+    const double inv = 1.0 / (dist > 0.0 ? dist : 1.0);
+    const Vec3 nrm = dist > 0.0 ? d * inv : Vec3{0.0, 0.0, 1.0};
+    c.normal = nrm;
+    // r* = R_i R_j / (R_i + R_j) (52) and m* = 1 / sm (53) from one division.
+    const double inv_rm = 1.0 / (b.reach[t] * b.sm[t]);
+    c.r_star = b.rr[t] * b.sm[t] * inv_rm;
+    c.m_star = b.reach[t] * inv_rm;
+    // (60) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
+    const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
+    c.normal_rate = dot(vrel, nrm);
+    c.vt = vrel - c.normal_rate * nrm;  // (61)
+    c.spring = {b.s0x[t], b.s0y[t], b.s0z[t]};
+    if constexpr (kStepStart) {
+      c.increment = dt * ((1.0 - phi) * Vec3{b.v0x[t], b.v0y[t], b.v0z[t]} + phi * c.vt);
+      c.decide = b.decide[t];
+    } else {
+      c.increment = dt_phi * c.vt;
+    }
+    const PairLaw law = kUniform ? u
+                                 : PairLaw{b.law[t], b.cn[t], b.ct[t], b.sr[t], b.xin[t], b.xit[t],
+                                           b.mus[t], b.mud[t], b.mur[t]};
+    const ContactResult r = evaluate_contact<Law>(law, c);
+    b.overlap[t] = c.overlap;
+    b.nx[t] = nrm.x, b.ny[t] = nrm.y, b.nz[t] = nrm.z;
+    b.vtx[t] = c.vt.x, b.vty[t] = c.vt.y, b.vtz[t] = c.vt.z;
+    b.r[t] = c.r_star;
+    b.fn[t] = r.fn_limit;
+    b.sx[t] = r.spring.x, b.sy[t] = r.spring.y, b.sz[t] = r.spring.z;
+    b.slip[t] = r.slipped ? 1 : 0;
+    // The contact's force, torque arm and energy terms.
+    const Vec3 f = r.fn * nrm + r.ft;
+    const Vec3 arm = cross(nrm, r.ft);  // torque r_P x f_t = -R n x f_t on both members (62)
     b.fx[t] = f.x, b.fy[t] = f.y, b.fz[t] = f.z;
     b.ax[t] = arm.x, b.ay[t] = arm.y, b.az[t] = arm.z;
-    b.energy[t] = hertz_energy_from_force(b.f_el[t], b.overlap[t]) + 0.5 * b.kt[t] * (ft.spring.x * ft.spring.x +
-                  ft.spring.y * ft.spring.y + ft.spring.z * ft.spring.z);
-    b.damping[t] = b.pn[t] + (ft.slipped ? 0.0 : ft.dissipated_power);
-    b.friction[t] = ft.slipped ? ft.dissipated_power : 0.0;
+    b.energy[t] = r.energy;
+    b.damping[t] = r.damping;
+    b.friction[t] = r.friction;
   }
 }
 
-void tangential_law(const PairPass& q, Batch& b) {
-  if (!q.vt0 && q.iteration < 2)
-    tangential_stage<false>(q, b);
-  else
-    tangential_stage<true>(q, b);
-}
-
-// Stage 4b: history, rolling resistance (71), the forces and the sums, in slot order.
+// Stage 3: history, rolling resistance (71), the forces and the sums, in slot order.
 // The sums and the arrays' addresses are local: kept in out and q, every store to a particle
 // would make the compiler reload them, and each contact's sums would wait for the previous
 // contact's store (a store-to-load chain through memory).
+template <bool kUniform>
 void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
-  const bool rolling = q.law.mu_r > 0.0, commit = q.commit, first_iteration = q.iteration == 1;
+  const bool rolling = q.rolling, commit = q.commit, first_iteration = q.iteration == 1;
+  const double uniform_mu_r = q.uniform_law.mu_r;
   const Vec3* const w = q.w;
   const ContactTerms* const terms = q.terms;
   Vec3* const force = q.force;
@@ -240,12 +215,12 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
     }
     if (first_iteration) q.slipped[k] = static_cast<std::uint8_t>(b.slip[t]);
     // Rolling resistance against the relative rotation of the step start (the state itself
-    // outside the iteration): constant during the iteration (docs/contact_model.md).
+    // outside the iteration): constant during the iteration (docs/integrators.md).
     Vec3 roll{}, wrel{};
     if (rolling || wr0) wrel = w[i] - w[j];
     if (rolling)
-      roll = rolling_resistance_torque(q.iteration > 0 ? wr0[k] : wrel, q.law.mu_r, b.r[t], b.fn[t],
-                                       rolling_inertia_pair(q.inertia[i], q.inertia[j]), q.dt);
+      roll = rolling_resistance_torque(q.iteration > 0 ? wr0[k] : wrel, kUniform ? uniform_mu_r : b.mur[t], b.r[t],
+                                       b.fn[t], rolling_inertia_pair(q.inertia[i], q.inertia[j]), q.dt);
     if (commit) {
       spring[k] = {b.sx[t], b.sy[t], b.sz[t]};
       if (vt0) vt0[k] = b.vt(t);
@@ -274,11 +249,10 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
   out = s;
 }
 
-template <bool kUniform>
+template <bool kUniform, class Law, bool kStepStart>
 void run(const PairPass& q, Batch& b, PairBlockSums& out) {
-  geometry_normal<kUniform>(q, b);
-  tangential_law(q, b);
-  apply(q, b, out);
+  contact_stage<kUniform, Law, kStepStart>(q, b);
+  apply<kUniform>(q, b, out);
   b.count = 0;
 }
 
@@ -375,7 +349,7 @@ void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_t cnt, 
 }
 #endif
 
-template <bool kUniform>
+template <bool kUniform, class Law, bool kStepStart>
 PairBlockSums evaluate_block(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t cross_first,
                              std::size_t cross_last) {
   PairBlockSums out;
@@ -427,18 +401,35 @@ PairBlockSums evaluate_block(const PairPass& q, std::size_t lo, std::size_t hi, 
 #else
     select_scalar(q, b, k, cnt, end, c);
 #endif
-    if (b.count + kGroup > kBatch) run<kUniform>(q, b, out);
+    if (b.count + kGroup > kBatch) run<kUniform, Law, kStepStart>(q, b, out);
   }
-  if (b.count > 0) run<kUniform>(q, b, out);
+  if (b.count > 0) run<kUniform, Law, kStepStart>(q, b, out);
   return out;
+}
+
+// One instantiation per law mix, material count (one or several) and integrator history. One
+// material has one law: no mix then.
+template <class Law>
+PairBlockSums block_for_law(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t c0, std::size_t c1) {
+  const bool step_start = q.vt0 != nullptr;
+  if constexpr (!std::is_same_v<Law, MixedLaw>) {
+    if (q.uniform)
+      return step_start ? evaluate_block<true, Law, true>(q, lo, hi, c0, c1)
+                        : evaluate_block<true, Law, false>(q, lo, hi, c0, c1);
+  }
+  return step_start ? evaluate_block<false, Law, true>(q, lo, hi, c0, c1)
+                    : evaluate_block<false, Law, false>(q, lo, hi, c0, c1);
 }
 
 }  // namespace
 
 PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t cross_first,
                             std::size_t cross_last) {
-  return q.uniform.on ? evaluate_block<true>(q, lo, hi, cross_first, cross_last)
-                      : evaluate_block<false>(q, lo, hi, cross_first, cross_last);
+  if (q.uniform || q.mix != LawMix::Mixed)
+    return q.uniform_law.law == ContactLawKind::Linear || (!q.uniform && q.mix == LawMix::Linear)
+               ? block_for_law<LinearLaw>(q, lo, hi, cross_first, cross_last)
+               : block_for_law<HertzLaw>(q, lo, hi, cross_first, cross_last);
+  return block_for_law<MixedLaw>(q, lo, hi, cross_first, cross_last);
 }
 
 }  // namespace mpdem

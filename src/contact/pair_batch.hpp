@@ -12,7 +12,7 @@
 #include <cstdint>
 
 #include "core/vec3.hpp"
-#include "physics/contact_model.hpp"
+#include "contact/contact_table.hpp"
 
 namespace mpdem {
 
@@ -21,22 +21,6 @@ namespace mpdem {
 struct ContactTerms {
   double radius = 0.0;    // m
   double inv_mass = 0.0;  // 1/kg
-};
-
-// The per-particle halves of (51) and of Mindlin's G*, read only when the particles' elastic
-// constants differ (UniformModuli).
-struct ContactCompliance {
-  double normal = 0.0;  // 1/Pa, (1 - nu^2)/E
-  double shear = 0.0;   // 1/Pa, (2 - nu)/G
-};
-
-// Set when every particle has the same elastic constants (one material, the usual case): E* and
-// G* are then constants, and the tangential damping follows from the normal one's square root.
-struct UniformModuli {
-  bool on = false;
-  double E_star = 0.0;      // Pa, (51)
-  double G_star = 0.0;      // Pa, Mindlin G*
-  double shear_root = 0.0;  // -, sqrt(k_t / k_n) = sqrt(4 G* / E*)
 };
 
 // The deepest contact, relative to the smaller radius.
@@ -63,7 +47,8 @@ struct PairPass {
   const std::int64_t* __restrict id;         // [N]
   const ContactTerms* __restrict terms;      // [N]
   const double* __restrict inertia;          // [N] kg m^2 (rolling resistance)
-  const ContactCompliance* __restrict compliance;  // [N], or null when uniform.on
+  const int* __restrict material;            // [N] material index
+  const PairLaw* __restrict laws;            // [materials x materials] contact table (contact_table.hpp)
   const std::size_t* __restrict off;         // [N+1] half-list CSR offsets
   const std::uint32_t* __restrict idx;       // [pairs] second members
   const std::uint32_t* __restrict first;     // [pairs] first members
@@ -75,8 +60,11 @@ struct PairPass {
   std::uint8_t* __restrict slipped;          // [pairs] first iteration's slip, or null
   Vec3* __restrict cross_force;              // [cross] N, force on the second member
   Vec3* __restrict cross_torque;             // [cross] N m, torque on the second member
-  ContactModel law;
-  UniformModuli uniform;
+  std::size_t materials = 0;                 // rows of laws
+  bool uniform = false;                      // every particle has one material: uniform_law for all pairs
+  PairLaw uniform_law;
+  LawMix mix = LawMix::Hertz;                // the laws the table holds
+  bool rolling = false;                      // some pair has rolling resistance
   double dt = 0.0;                           // s
   double phi = 1.0;                          // -
   int iteration = 0;

@@ -20,34 +20,24 @@ void ParticleContacts::ensure_history(std::size_t pairs) {
   if (spring_.size() == pairs) return;  // first use: no history yet
   spring_.assign(pairs, Vec3{});
   vt0_.assign(step_start_ ? pairs : 0, Vec3{});
-  wr0_.assign(step_start_ && law_.mu_r > 0.0 ? pairs : 0, Vec3{});
+  wr0_.assign(step_start_ && table_.any_rolling() ? pairs : 0, Vec3{});
   slipped_.assign(step_start_ ? pairs : 0, 0);
 }
 
 void ParticleContacts::refresh_terms(const Particles& p, std::uint64_t generation) {
   const std::size_t n = p.size();
   terms_.resize(n);
-  compliance_.resize(n);
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-  for (std::size_t i = 0; i < n; ++i) {
-    const double nu = p.poisson[i];
-    terms_[i] = {p.radius[i], 1.0 / p.mass[i]};  // (52), (53)
-    compliance_[i] = {(1.0 - nu * nu) / p.young[i],                                // (51)
-                      (2.0 - nu) / shear_modulus(p.young[i], nu)};                 // Mindlin G*
-  }
+  for (std::size_t i = 0; i < n; ++i) terms_[i] = {p.radius[i], 1.0 / p.mass[i]};  // (52), (53)
   terms_generation_ = generation;
-  // One set of elastic constants for all (the usual single material): E*, G* are constants,
-  // with the values the kernel's sums would give, and the compliances are not needed.
-  const auto differs = [&](const ContactCompliance& c) {
-    return c.normal != compliance_[0].normal || c.shear != compliance_[0].shear;
-  };
-  uniform_ = UniformModuli{};
-  if (n > 0 && std::none_of(compliance_.begin(), compliance_.end(), differs)) {
-    const double E = 1.0 / (compliance_[0].normal + compliance_[0].normal);
-    const double G = 1.0 / (compliance_[0].shear + compliance_[0].shear);
-    uniform_ = {true, E, G, std::sqrt(4.0 * G / E)};
-    compliance_ = {};
-  }
+  // Which materials the particles have changes only with the particles themselves (a rebuild);
+  // the laws' values are looked up afresh at every evaluation.
+  const int materials = static_cast<int>(model_.materials.size());
+  for (std::size_t i = 0; i < n; ++i)
+    if (p.material[i] < 0 || p.material[i] >= materials)
+      throw std::logic_error("particle contacts: a particle without a material (resolve_material_variants)");
+  const auto other = [&](int m) { return m != p.material[0]; };
+  single_material_ = n > 0 && std::none_of(p.material.begin(), p.material.end(), other) ? p.material[0] : -1;
 }
 
 PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req) {
@@ -56,21 +46,28 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   const VerletList& list = search.pairs();
   const PairBlocks& blocks = search.blocks();
   const std::size_t n = p.size();
+  table_.build(model_);
+  // Rolling resistance switched on between steps needs the step-start rotations.
+  if (step_start_ && table_.any_rolling() && wr0_.size() != list.num_pairs()) wr0_.assign(list.num_pairs(), Vec3{});
   ensure_history(list.num_pairs());
   slipped_.resize(step_start_ ? list.num_pairs() : 0);
   cross_force_.resize(blocks.num_cross());
   cross_torque_.resize(blocks.num_cross());
 
-  // Constant properties: refreshed only when the particles may have been reordered or changed.
+  // Per-particle terms: refreshed only when the particles may have been reordered or changed.
   if (terms_.size() != n || terms_generation_ != search.generation()) refresh_terms(p, search.generation());
+  const bool uniform = single_material_ >= 0;
+  const auto m0 = static_cast<std::size_t>(uniform ? single_material_ : 0);
 
   const PairPass q{p.x.data(), p.v.data(), p.w.data(), p.id.data(),
-                   terms_.data(), p.inertia.data(), uniform_.on ? nullptr : compliance_.data(),
+                   terms_.data(), p.inertia.data(), p.material.data(), table_.particle_pairs(),
                    list.offsets().data(), list.indices().data(), blocks.first_members().data(),
                    p.force.data(), p.torque.data(),
                    spring_.data(), vt0_.empty() ? nullptr : vt0_.data(), wr0_.empty() ? nullptr : wr0_.data(),
                    slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_torque_.data(),
-                   law_, uniform_, req.dt, req.phi, req.iteration, req.commit, n, list.num_pairs(), vector_select_};
+                   table_.materials(), uniform, n > 0 ? table_.particle_pair(m0, m0) : PairLaw{},
+                   table_.particle_mix(), table_.any_rolling(),
+                   req.dt, req.phi, req.iteration, req.commit, n, list.num_pairs(), vector_select_};
 
   // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
   const std::size_t nb = blocks.num_blocks();
@@ -134,7 +131,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
 std::size_t ParticleContacts::memory_bytes() const {
   return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() +
           cross_torque_.capacity()) * sizeof(Vec3) +
-         slipped_.capacity() + terms_.capacity() * sizeof(Terms) + compliance_.capacity() * sizeof(ContactCompliance) +
+         slipped_.capacity() + terms_.capacity() * sizeof(Terms) +
          block_sums_.capacity() * sizeof(PairBlockSums) + (block_seconds_.capacity() + block_cost_.capacity()) * sizeof(double);
 }
 
@@ -179,6 +176,9 @@ void ParticleContacts::restore_history(const NeighborSearch& search, CarriedHist
                                        const std::vector<std::uint32_t>& old_index) {
   const VerletList& list = search.pairs();
   spring_.clear();
+  table_.build(model_);
+  // Rolling resistance switched on between steps needs the step-start rotations.
+  if (step_start_ && table_.any_rolling() && wr0_.size() != list.num_pairs()) wr0_.assign(list.num_pairs(), Vec3{});
   ensure_history(list.num_pairs());
   if (h.second.empty()) return;
   const auto& off = list.offsets();
@@ -228,6 +228,9 @@ std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, co
 void ParticleContacts::import_history(const Particles& p, const NeighborSearch& search, std::vector<PairHistory> h) {
   const VerletList& list = search.pairs();
   spring_.clear();
+  table_.build(model_);
+  // Rolling resistance switched on between steps needs the step-start rotations.
+  if (step_start_ && table_.any_rolling() && wr0_.size() != list.num_pairs()) wr0_.assign(list.num_pairs(), Vec3{});
   ensure_history(list.num_pairs());
   if (h.empty()) return;
   const bool vt = !vt0_.empty(), wr = !wr0_.empty();

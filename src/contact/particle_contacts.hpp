@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "physics/contact_model.hpp"
+#include "contact/contact_table.hpp"
 #include "sim/interactions.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "contact/pair_batch.hpp"
@@ -46,7 +46,8 @@ class ParticleContacts {
   // resistance) of the step start and the first iteration's stick/slip decisions - what the
   // trapezoidal rule's increment (64) needs. Velocity Verlet (phi = 1, one evaluation a step)
   // needs only the spring.
-  ParticleContacts(const ContactModel& law, bool step_start) : law_(law), step_start_(step_start) {}
+  // The laws come from the model's materials and [contact] tables, looked up at every evaluation.
+  ParticleContacts(const Model& model, bool step_start) : model_(model), step_start_(step_start) {}
 
   // Adds contact forces and torques to p.force / p.torque; list must be current for p.x.
   PairStats evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req);
@@ -87,7 +88,8 @@ class ParticleContacts {
   bool holds_history(std::size_t k) const;  // slot k has a spring, vt0 or wr0 to keep
   void refresh_terms(const Particles& p, std::uint64_t generation);
 
-  ContactModel law_;
+  const Model& model_;
+  ContactTable table_;               // rebuilt from model_ at every evaluation
   bool step_start_;
   // Per pair slot [pairs]; the committed history is updated in place by commit evaluations.
   std::vector<Vec3> spring_;         // m, committed tangential spring of the slot's first member
@@ -97,10 +99,9 @@ class ParticleContacts {
   // Per cross pair [PairBlocks::num_cross()], the second member's share, added after the block pass:
   std::vector<Vec3> cross_force_;    // N
   std::vector<Vec3> cross_torque_;   // N m
-  std::vector<Terms> terms_;         // [N], from the particles' constant properties
-  std::vector<ContactCompliance> compliance_;  // [N], or empty when uniform_.on
+  std::vector<Terms> terms_;         // [N], from the particles' radii and masses
   std::uint64_t terms_generation_ = 0;  // NeighborSearch::generation() they were computed at
-  UniformModuli uniform_;            // set when all terms_ have the same elastic constants
+  int single_material_ = -1;         // the material of every particle, or -1 (several)
   std::vector<PairBlockSums> block_sums_;  // [blocks]
   std::vector<double> block_seconds_;      // [blocks] s, each block's time at the last evaluation
   std::vector<double> block_cost_;         // [blocks + 1] s, their sum before each block (thread shares)

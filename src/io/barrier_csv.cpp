@@ -45,8 +45,9 @@ void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& so
 
   // Element defaults: the source's material, else the first material, else Material's defaults.
   Material mat;
-  if (const int m = model.material_index(source.material); m >= 0) mat = model.materials[m];
-  else if (!model.materials.empty()) mat = model.materials.front();
+  int mat_index = model.material_index(source.material);  // -1 without materials
+  if (mat_index < 0 && !model.materials.empty()) mat_index = 0;
+  if (mat_index >= 0) mat = model.materials[mat_index];
   const std::string default_group = source.group.empty() ? file.stem().string() : source.group;
   const double default_temperature = source.temperature.value_or(std::numeric_limits<double>::quiet_NaN());
 
@@ -96,6 +97,7 @@ void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& so
     const int g = out.group_index(group);
     if (!out.add(bid, p1, p2, p3, g, E, nu, law, source.thickness, temp))
       throw InputError(t.file(), row.line, "", "degenerate triangle (zero area: its three vertices are collinear)");
+    out.material.back() = mat_index;
   }
 }
 

@@ -7,11 +7,13 @@
 #include <toml++/toml.h>
 
 #include "io/barrier_csv.hpp"
+#include "io/contact_reader.hpp"
 #include "io/generate_spec_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/particle_csv.hpp"
 #include "io/stl_reader.hpp"
 #include "io/toml_section.hpp"
+#include "model/material_variants.hpp"
 #include "model/scene.hpp"
 #include "generate/generated_particles.hpp"
 
@@ -80,29 +82,8 @@ void read_analysis_and_fields(const TomlSection& root, Params& p) {
   }
 }
 
-void read_contact_law(const TomlSection& contact, std::string_view kind, ContactLawParams& c) {
-  const auto s = contact.table(kind, {"restitution", "damping_ratio", "mu_static", "mu_dynamic", "mu_rolling",
-                                      "tangential_damping"});
-  if (!s) return;
-  c.restitution = s->number("restitution", kRestitutionRange);
-  c.damping_ratio = s->number("damping_ratio", kNonNegative);
-  if (c.restitution && c.damping_ratio)
-    s->fail("damping_ratio", "give either restitution or damping_ratio, not both");
-  s->get("mu_static", c.mu_static, kNonNegative);
-  s->get("mu_dynamic", c.mu_dynamic, kNonNegative);
-  s->get("mu_rolling", c.mu_rolling, kNonNegative);
-  s->get("tangential_damping", c.tangential_damping, kNonNegative);
-  if (c.mu_dynamic > c.mu_static)
-    s->fail(s->has("mu_dynamic") ? "mu_dynamic" : "mu_static",
-            "expected mu_dynamic <= mu_static, got mu_dynamic = " + number_text(c.mu_dynamic) +
-                (s->has("mu_dynamic") ? "" : " (default)") + " > mu_static = " + number_text(c.mu_static));
-}
-
-void read_contact_and_thermal(const TomlSection& root, Params& p) {
-  if (const auto s = root.table("contact", {"particle_particle", "particle_barrier"})) {
-    read_contact_law(*s, "particle_particle", p.contact.particle_particle);
-    read_contact_law(*s, "particle_barrier", p.contact.particle_barrier);
-  }
+void read_contact_and_thermal(const TomlSection& root, const Model& model, Params& p) {
+  read_contact(root, model, p.contact);
   if (const auto s = root.table("thermal", {"air_temperature", "air_velocity", "environment_temperature",
                                             "conduction", "convection", "radiation"})) {
     s->get("air_temperature", p.thermal.air_temperature, kPositive);
@@ -112,14 +93,6 @@ void read_contact_and_thermal(const TomlSection& root, Params& p) {
     s->get("convection", p.thermal.convection);
     s->get("radiation", p.thermal.radiation);
   }
-}
-
-// "unknown material 'x' (known: a, b)" unless `name` is a material.
-void check_material(const TomlSection& s, std::string_view k, const std::string& name, const Model& model) {
-  if (model.material_index(name) >= 0) return;
-  std::string known;
-  for (const Material& m : model.materials) known += (known.empty() ? "" : ", ") + m.name;
-  s.fail(k, "unknown material '" + name + "' (known: " + (known.empty() ? "none" : known) + ")");
 }
 
 void read_materials(const TomlSection& root, Model& model) {
@@ -299,8 +272,8 @@ Scene parse_scene_file(const std::filesystem::path& file) {
   read_time(root, p.time);
   read_tolerance(root, p.tolerance);
   read_analysis_and_fields(root, p);
-  read_contact_and_thermal(root, p);
   read_materials(root, scene.model);
+  read_contact_and_thermal(root, scene.model, p);
   read_near_field(root, scene.model, p.near_field);
   read_sources(root, doc, scene);
   read_domain_neighbor_output(root, p);
@@ -318,6 +291,7 @@ Scene load_scene(const std::filesystem::path& file) {
     if (!src.stl.empty()) read_stl_barriers(src, scene.model, scene.barriers);
     else read_barrier_csv(src.file, src, scene.model, scene.barriers);
   }
+  resolve_material_variants(scene.model, scene.particles, scene.barriers, scene.file.string());
   // neighbor.skin stays 0 when [neighbor] gives none: the engine derives it from the radii.
   return scene;
 }

@@ -194,8 +194,9 @@ namespace mpdem {
 void read_stl_barriers(const BarrierSource& src, const Model& model, Barriers& out) {
   const StlMesh stl = read_stl(src.stl);
   Material mat;
-  if (const int m = model.material_index(src.material); m >= 0) mat = model.materials[m];
-  else if (!model.materials.empty()) mat = model.materials.front();
+  int mat_index = model.material_index(src.material);  // -1 without materials
+  if (mat_index < 0 && !model.materials.empty()) mat_index = 0;
+  if (mat_index >= 0) mat = model.materials[mat_index];
   const int g = out.group_index(src.group.empty() ? src.stl.stem().string() : src.group);
   const double temp = src.temperature.value_or(std::numeric_limits<double>::quiet_NaN());
   std::int64_t next_id = 0;
@@ -207,7 +208,10 @@ void read_stl_barriers(const BarrierSource& src, const Model& model, Barriers& o
     std::array<Vec3, 3> p;
     for (int k = 0; k < 3; ++k)
       p[k] = (rotate ? rotate_xyz_deg(t[k] * src.scale, src.rotate_deg) : t[k] * src.scale) + src.translate;
-    if (out.add(next_id, p[0], p[1], p[2], g, mat.young, mat.poisson, src.motion, src.thickness, temp)) ++next_id;
+    if (out.add(next_id, p[0], p[1], p[2], g, mat.young, mat.poisson, src.motion, src.thickness, temp)) {
+      out.material.back() = mat_index;
+      ++next_id;
+    }
     else ++dropped;  // collapsed by the transform
   }
   if (dropped > 0)

@@ -108,6 +108,23 @@ std::optional<Vec3> TomlSection::vec3(std::string_view k) const {
   return Vec3{c[0], c[1], c[2]};
 }
 
+std::optional<std::vector<std::string>> TomlSection::strings(std::string_view k, std::size_t count) const {
+  const toml::node* n = node(k);
+  if (!n) return std::nullopt;
+  const auto* a = n->as_array();
+  const std::string want = "expected an array of " + std::to_string(count) + " strings";
+  if (!a) fail(k, want + ", got " + type_name(*n));
+  if (a->size() != count) fail(k, want + ", got an array of " + std::to_string(a->size()) + " elements");
+  std::vector<std::string> out;
+  for (std::size_t j = 0; j < count; ++j) {
+    const toml::node& e = *a->get(j);
+    const auto* str = e.as_string();
+    if (!str) fail(k, want + ", element " + std::to_string(j + 1) + " is " + type_name(e));
+    out.push_back(str->get());
+  }
+  return out;
+}
+
 std::optional<TomlSection> TomlSection::table(std::string_view k, std::initializer_list<std::string_view> known) const {
   const toml::node* n = node(k);
   if (!n) return std::nullopt;

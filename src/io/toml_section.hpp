@@ -36,6 +36,8 @@ class TomlSection {
   std::optional<bool> boolean(std::string_view k) const;
   std::optional<std::string> string(std::string_view k) const;
   std::optional<Vec3> vec3(std::string_view k) const;
+  // An array of `count` strings ("expected an array of 2 strings" otherwise).
+  std::optional<std::vector<std::string>> strings(std::string_view k, std::size_t count) const;
   // Sub-table (standard or inline); "expected a table" when k holds anything else.
   std::optional<TomlSection> table(std::string_view k, std::initializer_list<std::string_view> known) const;
   // Array of tables ([[k]]); "expected an array of tables [[k]]" otherwise. Empty when absent.

@@ -15,6 +15,9 @@ struct Material {
   double emissivity = 0.9;        // - in [0, 1]
   double charge = 0.0;            // C, default particle charge
   double temperature = 293.15;    // K, default initial particle temperature
+  // A copy of another material with the per-particle or per-element values a particle or barrier
+  // CSV gave (model/material_variants.hpp): its index, or -1 for a material of the scene.
+  int variant_of = -1;
 };
 
 }  // namespace mpdem

@@ -4,6 +4,8 @@
 // near field, contact dissipation, analysis type) plus domain, neighbour search and output.
 // Constant during a run. Every field states its SI unit; defaults here are the documented
 // defaults of docs/scene.md.
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <string>
@@ -75,19 +77,40 @@ struct NearFieldParams {
   double cutoff = 0.0;                // m, range of both laws (0 = near field off)
 };
 
-// Coefficients of one contact kind (particle-particle or particle-barrier).
+// The force law of a contact (docs/contact_model.md): Hertz-Mindlin (physics.md sections 5-6) or
+// the linear spring-dashpot with a Coulomb-capped tangential spring (section 13).
+enum class ContactLawKind : std::int64_t { Hertz, Linear };
+
+// Coefficients of one contact kind (particle-particle or particle-barrier): the defaults of
+// every pair of materials.
 struct ContactLawParams {
+  ContactLawKind law = ContactLawKind::Hertz;
   std::optional<double> restitution;  // e in (0, 1]; calibrated damping (physics.md 5 Departure)
   std::optional<double> damping_ratio;// xi_n >= 0 used as written in (50); exclusive with e
   double mu_static = 0.5;             // -, static Coulomb coefficient
   double mu_dynamic = 0.4;            // -, dynamic Coulomb coefficient (<= mu_static)
   double mu_rolling = 0.0;            // -, rolling resistance coefficient
   double tangential_damping = 0.0;    // xi_t, tangential damping ratio (67)
+  double stiffness_normal = 0.0;      // N/m, k_n of the linear law (required for it, > 0)
+  std::optional<double> stiffness_tangential;  // N/m, k_t of the linear law (default 2/7 k_n)
+};
+
+// [[contact.pair]]: overrides of the defaults for the contacts between two materials (a
+// particle of one and a particle or barrier of the other; `kind` restricts it to one of the two).
+struct ContactPairParams {
+  std::string material_a, material_b;
+  bool particle_particle = true;      // applies to particle-particle contacts
+  bool particle_barrier = true;       // applies to particle-barrier contacts
+  std::optional<ContactLawKind> law;
+  std::optional<double> restitution, damping_ratio, mu_static, mu_dynamic, mu_rolling, tangential_damping;
+  std::optional<double> stiffness_normal, stiffness_tangential;
+  std::size_t line = 0;               // line of the entry, for messages
 };
 
 struct ContactParams {
   ContactLawParams particle_particle;
   ContactLawParams particle_barrier;
+  std::vector<ContactPairParams> pairs;
 };
 
 struct ThermalParams {

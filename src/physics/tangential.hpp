@@ -25,16 +25,6 @@ inline double effective_shear_modulus(double G_i, double nu_i, double G_j, doubl
 // Infinitely stiff barrier (G_j -> infinity): G* = G_i / (2 - nu_i)   [Pa]   (section 7)
 inline double effective_shear_modulus_rigid(double G_i, double nu_i) { return G_i / (2.0 - nu_i); }
 
-// k_t = 8 G* sqrt(r* |delta|)                                                (65)   [N/m]
-inline double tangential_stiffness(double G_star, double r_star, double overlap) {
-  return 8.0 * G_star * std::sqrt(r_star * overlap);
-}
-
-// d_t = 2 xi_t sqrt(m* k_t)                                                  (67)   [N s/m]
-inline double tangential_damping_coefficient(double xi_t, double m_star, double k_t) {
-  return 2.0 * xi_t * std::sqrt(m_star * k_t);
-}
-
 // Step 1 of section 6, (59): project the stored spring s (m) onto the plane normal to the
 // current contact normal n (unit), then rescale it to its previous length, so a rigid rotation
 // of the pair turns the spring with it instead of shrinking it. A spring parallel to n (no

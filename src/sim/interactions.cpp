@@ -25,9 +25,9 @@ Interactions::Interactions(const Model& model, const Particles& p, const Barrier
       // The list reaches beyond contact by the near-field cutoff (0 when the near field is off).
       search_(std::make_unique<NeighborSearch>(default_skin(model, p),
                                                near_field_extra_range(model.params.near_field, p))),
-      pp_(std::make_unique<ParticleContacts>(ContactModel::from(model.params.contact.particle_particle),
+      pp_(std::make_unique<ParticleContacts>(model,
                                              model.params.time.integrator != Integrator::Verlet)),
-      pb_(std::make_unique<BarrierContacts>(ContactModel::from(model.params.contact.particle_barrier), b)) {
+      pb_(std::make_unique<BarrierContacts>(model, b)) {
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
   if (model.params.analysis.thermal) heat_ = std::make_unique<HeatTransfer>(model, b);
   search_->set_incoming_index(near_ || heat_);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "integrate/adaptive_step.hpp"
+#include "model/material_variants.hpp"
 #include "sim/energy.hpp"
 #include "io/output_manager.hpp"
 #include "contact/particle_contacts.hpp"
@@ -21,8 +22,17 @@ std::filesystem::path output_dir_for(const Scene& scene, const RunOptions& optio
   return scene.dir / scene.model.params.output.dir;
 }
 
+namespace {
+// Every particle and element gets the material of its own constants (scenes built in code may
+// set them per particle), before the contact laws index their tables by material.
+Scene& with_materials_by_index(Scene& scene) {
+  resolve_material_variants(scene.model, scene.particles, scene.barriers, scene.file.string());
+  return scene;
+}
+}  // namespace
+
 Simulation::Simulation(Scene& scene, RunOptions options)
-    : scene_(scene), options_(std::move(options)),
+    : scene_(with_materials_by_index(scene)), options_(std::move(options)),
       interactions_(std::make_unique<Interactions>(scene.model, scene.particles, scene.barriers)),
       trapezoidal_(scene.model.params), verlet_(scene.model.params), dt_(scene.model.params.time.dt) {}
 

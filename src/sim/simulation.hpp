@@ -62,6 +62,7 @@ class Simulation {
   Barriers& barriers() { return scene_.barriers; }
   Interactions& interactions() { return *interactions_; }
   const Model& model() const { return scene_.model; }
+  Model& model() { return scene_.model; }  // a material edited between steps acts at the next step
 
  private:
   void check_state(const StepReport& rep);  // NaN / infinity, energy jumps, domain exits

@@ -15,6 +15,7 @@ bool Barriers::add(std::int64_t bid, const Vec3& a, const Vec3& b, const Vec3& c
   normal.push_back(n / twice_area);
   area.push_back(0.5 * twice_area);
   group.push_back(grp);
+  material.push_back(-1);
   young.push_back(E);
   poisson.push_back(nu);
   thickness.push_back(t_b);

@@ -19,8 +19,9 @@ struct Barriers {
   std::vector<Vec3> normal;            // -, unit normal (p1 - p0) x (p2 - p0) / |...|
   std::vector<double> area;            // m^2
   std::vector<int> group;              // index into group_names
-  std::vector<double> young;           // Pa
-  std::vector<double> poisson;         // -
+  std::vector<int> material;           // index into Model::materials (-1 until the scene assigns one)
+  std::vector<double> young;           // Pa, the material's (model/material_variants.hpp)
+  std::vector<double> poisson;         // -, the material's
   std::vector<double> thickness;       // m, fictitious thickness t_b (110)
   std::vector<double> temperature;     // K, fixed temperature; NaN = thermally insulated
   std::vector<MotionLaw> motion;       // rigid motion law

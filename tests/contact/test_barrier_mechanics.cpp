@@ -21,6 +21,7 @@
 
 #include "core/parallel.hpp"
 #include "sim/energy.hpp"
+#include "model/material_variants.hpp"
 #include "sim/interactions.hpp"
 #include "sim/simulation.hpp"
 #include "support/contact_scenes.hpp"
@@ -565,6 +566,7 @@ TEST(BarrierContactHistory, SurvivesReorderingRebuildAndRemoval) {
   // The same state without any history gives other forces: the test sees the history.
   Scene bare = fresh_scene;
   bare.particles = p;
+  resolve_material_variants(bare.model, bare.particles, bare.barriers, "");
   Interactions fresh(bare.model, bare.particles, bare.barriers);
   fresh.evaluate(bare.particles, bare.barriers, req);
   std::size_t differ = 0;

@@ -10,6 +10,7 @@
 #include "core/vec3.hpp"
 #include "physics/contact_geometry.hpp"
 #include "physics/hertz.hpp"
+#include "support/hertz_oracle.hpp"
 #include "physics/restitution.hpp"
 #include "physics/rolling.hpp"
 #include "physics/tangential.hpp"

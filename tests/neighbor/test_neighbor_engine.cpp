@@ -28,6 +28,7 @@
 #include "neighbor/pair_blocks.hpp"
 #include "contact/pair_batch.hpp"
 #include "integrate/verlet.hpp"
+#include "model/material_variants.hpp"
 #include "sim/interactions.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "contact/particle_contacts.hpp"
@@ -201,6 +202,7 @@ TEST(NeighborEngine, ListsAndContactsEqualBruteForceAcrossRebuilds) {
   const double skin = 0.2 * r0;
   s.model.params.neighbor.skin = skin;
   Particles& p = s.particles;
+  resolve_material_variants(s.model, p, s.barriers, "");
   Interactions in(s.model, p, s.barriers);
   ASSERT_DOUBLE_EQ(in.skin(), skin);
   in.force_rebuild(p, s.barriers, true);
@@ -315,6 +317,7 @@ TEST(NeighborEngine, SpringsSurviveRebuildAndReordering) {
   // A skin wide enough that the steps below need no rebuild: a rebuild at a commit evaluation
   // would already reorder the particles, and the forced reordering below must move most.
   s.model.params.neighbor.skin = 1e-3;
+  resolve_material_variants(s.model, p, s.barriers, "");
   Interactions in(s.model, p, s.barriers);
   in.force_rebuild(p, s.barriers, false);
   in.evaluate(p, s.barriers, EvalRequest{0.0, 0.0, 1.0, true});

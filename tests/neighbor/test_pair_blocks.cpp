@@ -1,5 +1,4 @@
-// PairBlocks (neighbor/pair_blocks.hpp) and the shared-root contact coefficients
-// (physics/contact_coefficients.hpp): the structures behind the race-free, thread-count
+// PairBlocks (neighbor/pair_blocks.hpp): the structure behind the race-free, thread-count
 // independent pair loop.
 #include <gtest/gtest.h>
 
@@ -12,9 +11,6 @@
 
 #include "neighbor/pair_blocks.hpp"
 #include "neighbor/verlet_list.hpp"
-#include "physics/contact_coefficients.hpp"
-#include "physics/hertz.hpp"
-#include "physics/tangential.hpp"
 
 namespace mpdem {
 namespace {
@@ -99,29 +95,6 @@ TEST(PairBlocks, SmallSetsHaveNoCrossPairs) {
   EXPECT_EQ(blocks.num_blocks(), 1u);
   EXPECT_EQ(blocks.num_cross(), 0u);
   EXPECT_TRUE(blocks.cross_particles().empty());
-}
-
-// The shared-root coefficients equal the single-law functions (relative 1e-14: only the order
-// of the multiplications differs).
-TEST(ContactCoefficients, EqualTheSingleLawFunctions) {
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> lg(-1.0, 1.0);
-  for (int trial = 0; trial < 1000; ++trial) {
-    const double E = 1e7 * std::pow(10.0, 3 * lg(rng)), G = 0.4 * E, r = 1e-3 * std::pow(10.0, lg(rng));
-    const double m = 1e-5 * std::pow(10.0, 2 * lg(rng)), d = 1e-3 * r * std::pow(10.0, lg(rng));
-    const double xi_n = 0.2 + 0.1 * lg(rng), xi_t = trial % 2 ? 0.0 : 0.3;
-    const ContactCoefficients c = contact_coefficients(E, G, r, m, xi_n, xi_t, d);
-    auto rel = [](double a, double b) { return std::abs(a - b) / std::abs(b); };
-    EXPECT_LT(rel(c.k_n, hertz_stiffness(E, r, d)), 1e-14);
-    EXPECT_LT(rel(c.f_el, hertz_elastic_force(E, r, d)), 1e-14);
-    EXPECT_LT(rel(c.d_n, normal_damping_coefficient(xi_n, m, E, r, d)), 1e-14);
-    EXPECT_LT(rel(c.k_t, tangential_stiffness(G, r, d)), 1e-14);
-    if (xi_t > 0.0)
-      EXPECT_LT(rel(c.d_t, tangential_damping_coefficient(xi_t, m, c.k_t)), 1e-14);
-    else
-      EXPECT_EQ(c.d_t, 0.0);
-    EXPECT_LT(rel(hertz_energy_from_force(c.f_el, d), hertz_elastic_energy(E, r, d)), 1e-14);
-  }
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "model/scene.hpp"
-#include "physics/hertz.hpp"
+#include "hertz_oracle.hpp"
 #include "scene_builder.hpp"
 
 namespace mpdem::test {

@@ -1,0 +1,119 @@
+#pragma once
+// The contact laws, each written once (physics.md sections 5, 6 and 13), and the one evaluation
+// of a contact that the particle-pair and particle-barrier kernels and the tests all call.
+//
+// A law is a type with one function, `stiffness`, giving the overlap-dependent normal stiffness,
+// elastic force, tangential stiffness and stored normal energy from the pair's constants
+// (PairLaw, contact/contact_table.hpp), and a flag saying whether the net normal force is clamped
+// at zero. Everything else of a contact (damping from the calibrated ratio, the projected spring,
+// Coulomb stick-slip, energy and the damping/friction split) is common and lives in
+// evaluate_contact<Law>. The kernels are templates over the law, so no law is dispatched per
+// contact; MixedLaw serves a scene whose table mixes laws (both evaluated, one selected per lane).
+// Everything is branch-free (selects), so that the kernels' loops over batches vectorise.
+#include <cmath>
+
+#include "contact/contact_table.hpp"
+#include "core/vec3.hpp"
+#include "physics/tangential.hpp"
+
+namespace mpdem {
+
+struct Stiffness {
+  double k_n = 0.0;     // N/m, normal stiffness dF/d(delta)
+  double f_el = 0.0;    // N, elastic normal force
+  double k_t = 0.0;     // N/m, tangential stiffness
+  double energy = 0.0;  // J, elastic energy of the normal spring
+  bool clamp = true;    // the net normal force is clamped at zero (never attractive)
+};
+
+// Hertz-Mindlin (physics.md sections 5-6): with root = sqrt(r* delta),
+// k_n = 2 E* root, f_el = 4/3 E* sqrt(r*) delta^(3/2) = 2/3 k_n delta (49), k_t = 8 G* root (65),
+// energy 8/15 E* sqrt(r*) delta^(5/2) = 2/5 f_el delta (section 12). c.cn = 2 E*, c.ct = 8 G*.
+struct HertzLaw {
+  static Stiffness stiffness(const PairLaw& c, double r_star, double overlap) {
+    Stiffness s;
+    const double root = std::sqrt(r_star * overlap);  // m
+    s.k_n = c.cn * root;
+    s.f_el = (2.0 / 3.0) * s.k_n * overlap;
+    s.k_t = c.ct * root;
+    s.energy = 0.4 * s.f_el * overlap;
+    return s;
+  }
+};
+
+// Linear spring-dashpot with a Coulomb-capped tangential spring (Cundall-Strack; physics.md
+// section 13): k_n = c.cn, k_t = c.ct constant, f_el = k_n delta, energy 1/2 k_n delta^2. Not
+// clamped: the restitution and contact time of the damped linear oscillator then hold exactly.
+struct LinearLaw {
+  static Stiffness stiffness(const PairLaw& c, double /*r_star*/, double overlap) {
+    Stiffness s;
+    s.k_n = c.cn;
+    s.f_el = s.k_n * overlap;
+    s.k_t = c.ct;
+    s.energy = 0.5 * s.f_el * overlap;
+    s.clamp = false;
+    return s;
+  }
+};
+
+// Either law, chosen per pair by c.law (a select, not a branch).
+struct MixedLaw {
+  static Stiffness stiffness(const PairLaw& c, double r_star, double overlap) {
+    const Stiffness h = HertzLaw::stiffness(c, r_star, overlap);
+    const Stiffness l = LinearLaw::stiffness(c, r_star, overlap);
+    const bool lin = c.law == ContactLawKind::Linear;
+    return {lin ? l.k_n : h.k_n, lin ? l.f_el : h.f_el, lin ? l.k_t : h.k_t, lin ? l.energy : h.energy, !lin};
+  }
+};
+
+// One contact as the kernel's geometry gives it.
+struct ContactState {
+  double overlap = 0.0;   // m, > 0 in contact
+  double r_star = 0.0;    // m, (52) (barrier: R)
+  double m_star = 0.0;    // kg, (53) (barrier: m)
+  Vec3 normal;            // -, unit, towards the body the force acts on
+  double normal_rate = 0.0;  // m/s, v_rel . n (negative approaching)
+  Vec3 vt;                // m/s, tangential relative velocity (61)
+  Vec3 spring;            // m, stored spring (any plane; projected here (59))
+  Vec3 increment;         // m, spring increment of the step (64)
+  SlipDecision decide = SlipDecision::Free;
+};
+
+struct ContactResult {
+  double fn = 0.0;        // N, net normal force along n, >= 0 where the law clamps
+  double fn_limit = 0.0;  // N, max(fn, 0): what Coulomb's limit and rolling resistance scale with
+  Vec3 ft;                // N, tangential force
+  Vec3 spring;            // m, spring for the next step
+  bool slipped = false;
+  double energy = 0.0;    // J, elastic energy stored (normal + tangential spring)
+  double damping = 0.0;   // W, dissipated by the normal and (sticking) tangential dashpots
+  double friction = 0.0;  // W, dissipated by sliding
+};
+
+// Damping d_n = 2 xi_n sqrt(m* k_n) (50) and d_t = 2 xi_t sqrt(m* k_t) (67), which shares the
+// root: sqrt(m* k_t) = sqrt(m* k_n) sqrt(k_t / k_n), and k_t / k_n is constant for both laws
+// (c.shear_root). The net normal force f = f_el - d_n rate (49); the power removed
+// (f_el - f_n) rate (tests/support/hertz_oracle.hpp's damped_normal_force explains the clamped case).
+template <class Law>
+inline ContactResult evaluate_contact(const PairLaw& c, const ContactState& s) {
+  ContactResult out;
+  const Stiffness k = Law::stiffness(c, s.r_star, s.overlap);
+  const double mass_root = std::sqrt(s.m_star * k.k_n);  // sqrt(kg N/m)
+  const double d_n = 2.0 * c.xi_n * mass_root;
+  const double d_t = 2.0 * c.xi_t * mass_root * c.shear_root;
+  const double f = k.f_el - d_n * s.normal_rate;
+  out.fn = (k.clamp & (f < 0.0)) ? 0.0 : f;
+  const double normal_power = (k.f_el - out.fn) * s.normal_rate;
+  out.fn_limit = out.fn > 0.0 ? out.fn : 0.0;
+  const TangentialResult t = tangential_force(project_spring(s.spring, s.normal), s.increment, s.vt, k.k_t, d_t,
+                                              c.mu_s, c.mu_d, out.fn_limit, s.decide);
+  out.ft = t.force;
+  out.spring = t.spring;
+  out.slipped = t.slipped;
+  out.energy = k.energy + 0.5 * k.k_t * norm2(t.spring);
+  out.damping = normal_power + (t.slipped ? 0.0 : t.dissipated_power);
+  out.friction = t.slipped ? t.dissipated_power : 0.0;
+  return out;
+}
+
+}  // namespace mpdem

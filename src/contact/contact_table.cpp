@@ -1,0 +1,105 @@
+#include "contact/contact_table.hpp"
+
+#include <cmath>
+
+#include "physics/hertz.hpp"
+#include "physics/restitution.hpp"
+#include "physics/tangential.hpp"
+
+namespace mpdem {
+
+namespace {
+
+// The defaults of one contact kind with the overrides of every [[contact.pair]] entry that names
+// materials a and b (or the materials they are variants of) and applies to that kind.
+ContactLawParams pair_params(const Model& model, const ContactLawParams& defaults, std::size_t a, std::size_t b,
+                             bool particle_particle) {
+  const auto named = [&](std::size_t m, const std::string& name) {
+    const Material& mat = model.materials[m];
+    return mat.name == name || (mat.variant_of >= 0 && model.materials[mat.variant_of].name == name);
+  };
+  ContactLawParams p = defaults;
+  for (const ContactPairParams& e : model.params.contact.pairs) {
+    if (particle_particle ? !e.particle_particle : !e.particle_barrier) continue;
+    const bool match = (named(a, e.material_a) && named(b, e.material_b)) ||
+                       (named(a, e.material_b) && named(b, e.material_a));
+    if (!match) continue;
+    if (e.law) p.law = *e.law;
+    if (e.restitution || e.damping_ratio) {
+      p.restitution = e.restitution;
+      p.damping_ratio = e.damping_ratio;
+    }
+    if (e.mu_static) p.mu_static = *e.mu_static;
+    if (e.mu_dynamic) p.mu_dynamic = *e.mu_dynamic;
+    if (e.mu_rolling) p.mu_rolling = *e.mu_rolling;
+    if (e.tangential_damping) p.tangential_damping = *e.tangential_damping;
+    if (e.stiffness_normal) p.stiffness_normal = *e.stiffness_normal;
+    if (e.stiffness_tangential) p.stiffness_tangential = *e.stiffness_tangential;
+  }
+  return p;
+}
+
+LawMix mix_of(const std::vector<PairLaw>& laws) {
+  bool hertz = false, linear = false;
+  for (const PairLaw& l : laws) (l.law == ContactLawKind::Linear ? linear : hertz) = true;
+  return hertz && linear ? LawMix::Mixed : (linear ? LawMix::Linear : LawMix::Hertz);
+}
+
+}  // namespace
+
+PairLaw resolve_pair_law(const ContactLawParams& p, double E_star, double G_star) {
+  PairLaw l;
+  l.law = p.law;
+  const bool linear = p.law == ContactLawKind::Linear;
+  if (linear) {
+    l.cn = p.stiffness_normal;
+    l.ct = p.stiffness_tangential.value_or(2.0 / 7.0 * p.stiffness_normal);
+  } else {
+    l.cn = 2.0 * E_star;
+    l.ct = 8.0 * G_star;
+  }
+  l.shear_root = l.cn > 0.0 ? std::sqrt(l.ct / l.cn) : 0.0;
+  // Restitution -> damping ratio: the Hertz calibration (section 5 Departure), or for the linear
+  // law the exact (55), whose oscillator it was derived for.
+  if (p.damping_ratio)
+    l.xi_n = *p.damping_ratio;
+  else if (p.restitution)
+    l.xi_n = linear ? thesis_damping_ratio(*p.restitution) : damping_ratio_for_restitution(*p.restitution);
+  l.xi_t = p.tangential_damping;
+  l.mu_s = p.mu_static;
+  l.mu_d = p.mu_dynamic;
+  l.mu_r = p.mu_rolling;
+  return l;
+}
+
+void ContactTable::build(const Model& model) {
+  const std::vector<Material>& mats = model.materials;
+  n_ = mats.size();
+  pp_.resize(n_ * n_);
+  pb_.resize(n_ * n_);
+  rolling_ = false;
+  for (std::size_t a = 0; a < n_; ++a) {
+    const Material& ma = mats[a];
+    const double ca = (1.0 - ma.poisson * ma.poisson) / ma.young;       // (51)
+    const double sa = (2.0 - ma.poisson) / shear_modulus(ma.young, ma.poisson);  // Mindlin G*
+    for (std::size_t b = 0; b < n_; ++b) {
+      const Material& mb = mats[b];
+      const double cb = (1.0 - mb.poisson * mb.poisson) / mb.young;
+      const double sb = (2.0 - mb.poisson) / shear_modulus(mb.young, mb.poisson);
+      // Particle pairs: E* = 1 / (sum of the members' compliances) (51), G* likewise.
+      pp_[a * n_ + b] = resolve_pair_law(pair_params(model, model.params.contact.particle_particle, a, b, true),
+                                         1.0 / (ca + cb), 1.0 / (sa + sb));
+      // A particle against the half-space of the barrier's material (section 7).
+      pb_[a * n_ + b] = resolve_pair_law(
+          pair_params(model, model.params.contact.particle_barrier, a, b, false),
+          effective_modulus(ma.young, ma.poisson, mb.young, mb.poisson),
+          effective_shear_modulus(shear_modulus(ma.young, ma.poisson), ma.poisson, shear_modulus(mb.young, mb.poisson),
+                                  mb.poisson));
+      rolling_ = rolling_ || pp_[a * n_ + b].mu_r > 0.0 || pb_[a * n_ + b].mu_r > 0.0;
+    }
+  }
+  pp_mix_ = mix_of(pp_);
+  pb_mix_ = mix_of(pb_);
+}
+
+}  // namespace mpdem

@@ -127,7 +127,7 @@ int bench_command(const BenchArgs& args) {
   }
   const std::size_t n = scene.particles.size();
 
-  Simulation sim(scene, RunOptions{{}, false, false});
+  Simulation sim(std::move(scene), RunOptions{{}, false, false});
   for (long k = 0; k < a.relax; ++k) sim.advance(a.dt);
 
   const std::uint64_t rebuilds0 = sim.interactions().stats().rebuilds;
@@ -151,7 +151,7 @@ int bench_command(const BenchArgs& args) {
   const long rss = peak_rss_kib();
   const std::string integ = a.integrator == "verlet" ? "verlet" : fmt::format("trapezoidal(phi={})", a.phi);
 
-  fmt::print("mpdem bench: {} particles, {} walls (triangles {}), {} threads, {}\n", n, 5, scene.barriers.size(),
+  fmt::print("mpdem bench: {} particles, {} walls (triangles {}), {} threads, {}\n", n, 5, sim.barriers().size(),
              a.threads, integ);
   fmt::print("  steps: {} untimed + {} timed, dt = {:g} s, skin = {:g} m\n", a.relax, a.steps, a.dt, a.skin);
   fmt::print("  wall time of timed steps   {:.3f} s\n", seconds);

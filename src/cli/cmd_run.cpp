@@ -17,7 +17,7 @@ int run_command(const RunArgs& args) {
   opt.progress = !args.quiet;
   // A resumed run continues in its own (non-empty) output folder.
   if (args.resume.empty()) prepare_output_folder(output_dir_for(scene, opt), args.overwrite);
-  Simulation sim(scene, opt);
+  Simulation sim(std::move(scene), opt);
   if (!args.resume.empty()) sim.resume_from(args.resume);
   const RunSummary s = sim.run();
   if (!args.quiet)

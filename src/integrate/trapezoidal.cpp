@@ -55,17 +55,31 @@ void TrapezoidalIntegrator::accept_midpoint(Particles& p) {
 
 StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& f, double t, double dt,
                                        int max_iter) {
+  EvalRequest req{t + dt, dt, policy(params_).phi, false};
+  StepReport rep;
+  predict(p, dt);
+  if (req.phi > 0.0) {  // phi = 0 is explicit: the predictor is the end state
+    rep.converged = false;
+    for (int k = 1; k <= max_iter && !rep.converged; ++k) {
+      req.iteration = k;
+      const Sums s = iterate(p, b, f, req);
+      ++rep.evaluations;
+      test_convergence(p, s, k, rep);
+    }
+    if (!rep.converged) {
+      reject(p, rep);
+      return rep;
+    }
+  }
+  commit(p, b, f, req, rep);
+  ++rep.evaluations;
+  return rep;
+}
+
+TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double dt, bool predictor) {
   const double phi = params_.time.phi;
   const bool rotation = params_.analysis.rotation;
   const bool thermal = params_.analysis.thermal;
-  const std::size_t n = p.size();
-  save_start(p);
-  xp_.resize(n); vp_.resize(n); wp_.resize(n); alphap_.resize(n); Tp_.resize(n);
-  StepReport rep;
-
-  // Per field: sums of |y_K - y_(K-1)|^2, |y_K - y(t)|^2, |y_K - y_(K-2)|^2 and |y_K|^2.
-  constexpr int kSums = 4 * kFieldCount;
-  using Sums = std::array<double, kSums>;
   auto add = [](Sums& s, int field, double d1, double change, double d2, double value) {
     s[4 * field] += d1;
     s[4 * field + 1] += change;
@@ -74,127 +88,132 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
   };
   // End state from the end-of-step rates (134)-(138), taken from the accumulators, or from the
   // start rates for the predictor. The state it replaces becomes the previous iterate.
-  auto update = [&](bool predictor) {
-    return deterministic_sums<kSums>(n, [&](std::size_t i, Sums& s) {
-      const Vec3 a1 = predictor ? a0_[i] : p.force[i] / p.mass[i];
-      const Vec3 v = v0_[i] + dt * ((1.0 - phi) * a0_[i] + phi * a1);
-      const Vec3 x = x0_[i] + dt * ((1.0 - phi) * v0_[i] + phi * v);
-      add(s, kPosition, norm2(x - p.x[i]), norm2(x - x0_[i]), norm2(x - xp_[i]), norm2(x));
-      add(s, kVelocity, norm2(v - p.v[i]), norm2(v - v0_[i]), norm2(v - vp_[i]), norm2(v));
-      xp_[i] = p.x[i];
-      vp_[i] = p.v[i];
-      p.x[i] = x;
-      p.v[i] = v;
-      if (rotation) {
-        const Vec3 b1 = predictor ? b0_[i] : p.torque[i] / p.inertia[i];
-        const Vec3 w = w0_[i] + dt * ((1.0 - phi) * b0_[i] + phi * b1);
-        const Vec3 alpha = dt * ((1.0 - phi) * w0_[i] + phi * w);
-        add(s, kRotation, norm2(alpha - alpha_[i]), norm2(alpha), norm2(alpha - alphap_[i]), norm2(alpha));
-        add(s, kAngularVelocity, norm2(w - p.w[i]), norm2(w - w0_[i]), norm2(w - wp_[i]), norm2(w));
-        wp_[i] = p.w[i];
-        alphap_[i] = alpha_[i];
-        p.w[i] = w;
-        alpha_[i] = alpha;  // q follows once, after convergence: no force law reads it
-      }
-      const double h1 = predictor ? h0_[i] : p.heat[i] / (p.mass[i] * p.heat_capacity[i]);
-      const double T = thermal ? T0_[i] + dt * ((1.0 - phi) * h0_[i] + phi * h1) : T0_[i];
-      add(s, kTemperature, (T - p.T[i]) * (T - p.T[i]), (T - T0_[i]) * (T - T0_[i]), (T - Tp_[i]) * (T - Tp_[i]), T * T);
-      Tp_[i] = p.T[i];
-      p.T[i] = T;
-    });
-  };
+  return deterministic_sums<4 * kFieldCount>(p.size(), [&](std::size_t i, Sums& s) {
+    const Vec3 a1 = predictor ? a0_[i] : p.force[i] / p.mass[i];
+    const Vec3 v = v0_[i] + dt * ((1.0 - phi) * a0_[i] + phi * a1);
+    const Vec3 x = x0_[i] + dt * ((1.0 - phi) * v0_[i] + phi * v);
+    add(s, kPosition, norm2(x - p.x[i]), norm2(x - x0_[i]), norm2(x - xp_[i]), norm2(x));
+    add(s, kVelocity, norm2(v - p.v[i]), norm2(v - v0_[i]), norm2(v - vp_[i]), norm2(v));
+    xp_[i] = p.x[i];
+    vp_[i] = p.v[i];
+    p.x[i] = x;
+    p.v[i] = v;
+    if (rotation) {
+      const Vec3 b1 = predictor ? b0_[i] : p.torque[i] / p.inertia[i];
+      const Vec3 w = w0_[i] + dt * ((1.0 - phi) * b0_[i] + phi * b1);
+      const Vec3 alpha = dt * ((1.0 - phi) * w0_[i] + phi * w);
+      add(s, kRotation, norm2(alpha - alpha_[i]), norm2(alpha), norm2(alpha - alphap_[i]), norm2(alpha));
+      add(s, kAngularVelocity, norm2(w - p.w[i]), norm2(w - w0_[i]), norm2(w - wp_[i]), norm2(w));
+      wp_[i] = p.w[i];
+      alphap_[i] = alpha_[i];
+      p.w[i] = w;
+      alpha_[i] = alpha;  // q follows once, after convergence: no force law reads it
+    }
+    const double h1 = predictor ? h0_[i] : p.heat[i] / (p.mass[i] * p.heat_capacity[i]);
+    const double T = thermal ? T0_[i] + dt * ((1.0 - phi) * h0_[i] + phi * h1) : T0_[i];
+    add(s, kTemperature, (T - p.T[i]) * (T - p.T[i]), (T - T0_[i]) * (T - T0_[i]), (T - Tp_[i]) * (T - Tp_[i]), T * T);
+    Tp_[i] = p.T[i];
+    p.T[i] = T;
+  });
+}
 
-  // Predictor: the end-of-step rates are guessed equal to the start rates.
+void TrapezoidalIntegrator::predict(Particles& p, double dt) {
+  const std::size_t n = p.size();
+  save_start(p);
+  xp_.resize(n); vp_.resize(n); wp_.resize(n); alphap_.resize(n); Tp_.resize(n);
+  // The end-of-step rates are guessed equal to the start rates.
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
     alpha_[i] = Vec3{};
     xp_[i] = x0_[i]; vp_[i] = v0_[i]; wp_[i] = w0_[i]; alphap_[i] = Vec3{}; Tp_[i] = T0_[i];
   }
-  update(true);
-  EvalRequest req{t + dt, dt, phi, false};
+  update(p, dt, true);
+}
 
-  if (phi > 0.0) {
-    const ToleranceParams& tol = params_.tolerance;
-    const std::array<double, kFieldCount> tols{tol.position, tol.velocity, tol.rotation, tol.angular_velocity,
-                                               tol.temperature};
-    const std::array<double, kFieldCount> floors{tol.position_floor, tol.velocity_floor, tol.rotation_floor,
-                                                 tol.angular_velocity_floor, tol.temperature_floor};
-    const std::array<bool, kFieldCount> active{true, true, rotation, rotation, thermal};
-    const double inv_n = n > 0 ? 1.0 / static_cast<double>(n) : 0.0;
-    rep.converged = false;
-    for (int k = 1; k <= max_iter; ++k) {
-      req.iteration = k;
-      f.evaluate(p, b, req);
-      ++rep.evaluations;
-      const Sums s = update(false);
-      rep.iterations = k;
-      bool all = true, cycle = k >= 3;
-      double worst = -1.0;
-      for (int fld = 0; fld < kFieldCount; ++fld) {
-        if (!active[fld]) continue;
-        // eps = rms|y_K - y_K-1| / (rms|y_K - y(t)| + floor / TOL): converged when eps <= TOL.
-        const double diff = std::sqrt(s[4 * fld] * inv_n);
-        const double scale = std::sqrt(s[4 * fld + 1] * inv_n) + floors[fld] / tols[fld];
-        const double eps = diff / scale;
-        if (k == 1) rep.first_error[fld] = eps;
-        rep.last_error[fld] = eps;
-        if (!(eps <= tols[fld])) all = false;
-        // A two-cycle: y_K = y_(K-2) to tolerance, alternating by less than kTwoCycleAmplitude
-        // of the field's RMS magnitude (a larger alternation is divergence: reduce dt).
-        if (!(std::sqrt(s[4 * fld + 2] * inv_n) / scale <= tols[fld]) ||
-            !(diff <= kTwoCycleAmplitude * std::sqrt(s[4 * fld + 3] * inv_n) + floors[fld]))
-          cycle = false;
-        if (eps / tols[fld] > worst) {
-          worst = eps / tols[fld];
-          rep.worst_field = fld;
-        }
-      }
-      if (all) {
-        rep.converged = true;
-        break;
-      }
-      // y_K = y_(K-2) but y_K != y_(K-1) by a tiny amount: the iteration alternates across a
-      // force discontinuity (contact onset under the nonlinear damping, whose coefficient grows
-      // like overlap^(1/4); stick-slip switching) and has no fixed point; the midpoint is within
-      // half the alternation of either side. Large alternations are divergence, not this.
-      if (cycle) {
-        accept_midpoint(p);
-        rep.converged = rep.two_cycle = true;
-        break;
-      }
-    }
-    if (!rep.converged) {
-      // Name the particle whose worst field still changed most in the last iteration.
-      double biggest = -1.0;
-      for (std::size_t i = 0; i < n; ++i) {
-        double c = 0.0;
-        switch (rep.worst_field) {
-          case kPosition: c = norm2(p.x[i] - xp_[i]); break;
-          case kVelocity: c = norm2(p.v[i] - vp_[i]); break;
-          case kRotation: c = norm2(alpha_[i] - alphap_[i]); break;
-          case kAngularVelocity: c = norm2(p.w[i] - wp_[i]); break;
-          default: c = (p.T[i] - Tp_[i]) * (p.T[i] - Tp_[i]); break;
-        }
-        if (!std::isfinite(c)) c = INFINITY;
-        if (c > biggest) {
-          biggest = c;
-          rep.worst_particle = p.id[i];
-        }
-      }
-      restore_start(p);
-      return rep;
+TrapezoidalIntegrator::Sums TrapezoidalIntegrator::iterate(Particles& p, Barriers& b, Interactions& f,
+                                                           const EvalRequest& req) {
+  f.evaluate(p, b, req);
+  return update(p, req.dt, false);
+}
+
+void TrapezoidalIntegrator::test_convergence(Particles& p, const Sums& s, int k, StepReport& rep) {
+  const ToleranceParams& tol = params_.tolerance;
+  const bool rotation = params_.analysis.rotation;
+  const std::array<double, kFieldCount> tols{tol.position, tol.velocity, tol.rotation, tol.angular_velocity,
+                                             tol.temperature};
+  const std::array<double, kFieldCount> floors{tol.position_floor, tol.velocity_floor, tol.rotation_floor,
+                                               tol.angular_velocity_floor, tol.temperature_floor};
+  const std::array<bool, kFieldCount> active{true, true, rotation, rotation, params_.analysis.thermal};
+  const double inv_n = p.size() > 0 ? 1.0 / static_cast<double>(p.size()) : 0.0;
+  rep.iterations = k;
+  bool all = true, cycle = k >= 3;
+  double worst = -1.0;
+  for (int fld = 0; fld < kFieldCount; ++fld) {
+    if (!active[fld]) continue;
+    // eps = rms|y_K - y_K-1| / (rms|y_K - y(t)| + floor / TOL): converged when eps <= TOL.
+    const double diff = std::sqrt(s[4 * fld] * inv_n);
+    const double scale = std::sqrt(s[4 * fld + 1] * inv_n) + floors[fld] / tols[fld];
+    const double eps = diff / scale;
+    if (k == 1) rep.first_error[fld] = eps;
+    rep.last_error[fld] = eps;
+    if (!(eps <= tols[fld])) all = false;
+    // A two-cycle: y_K = y_(K-2) to tolerance, alternating by less than kTwoCycleAmplitude
+    // of the field's RMS magnitude (a larger alternation is divergence: reduce dt).
+    if (!(std::sqrt(s[4 * fld + 2] * inv_n) / scale <= tols[fld]) ||
+        !(diff <= kTwoCycleAmplitude * std::sqrt(s[4 * fld + 3] * inv_n) + floors[fld]))
+      cycle = false;
+    if (eps / tols[fld] > worst) {
+      worst = eps / tols[fld];
+      rep.worst_field = fld;
     }
   }
+  if (all) {
+    rep.converged = true;
+    return;
+  }
+  // y_K = y_(K-2) but y_K != y_(K-1) by a tiny amount: the iteration alternates across a
+  // force discontinuity (contact onset under the nonlinear damping, whose coefficient grows
+  // like overlap^(1/4); stick-slip switching) and has no fixed point; the midpoint is within
+  // half the alternation of either side. Large alternations are divergence, not this.
+  if (cycle) {
+    accept_midpoint(p);
+    rep.converged = rep.two_cycle = true;
+  }
+}
+
+void TrapezoidalIntegrator::reject(Particles& p, StepReport& rep) const {
+  // Name the particle whose worst field still changed most in the last iteration.
+  double biggest = -1.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    double c = 0.0;
+    switch (rep.worst_field) {
+      case kPosition: c = norm2(p.x[i] - xp_[i]); break;
+      case kVelocity: c = norm2(p.v[i] - vp_[i]); break;
+      case kRotation: c = norm2(alpha_[i] - alphap_[i]); break;
+      case kAngularVelocity: c = norm2(p.w[i] - wp_[i]); break;
+      default: c = (p.T[i] - Tp_[i]) * (p.T[i] - Tp_[i]); break;
+    }
+    if (!std::isfinite(c)) c = INFINITY;
+    if (c > biggest) {
+      biggest = c;
+      rep.worst_particle = p.id[i];
+    }
+  }
+  restore_start(p);
+}
+
+void TrapezoidalIntegrator::commit(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req,
+                                   const StepReport& rep) {
+  const std::size_t n = p.size();
   // Orientation of the accepted end state (accept_midpoint has set it for a two-cycle).
-  if (rotation && !rep.two_cycle) {
+  if (params_.analysis.rotation && !rep.two_cycle) {
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
     for (std::size_t i = 0; i < n; ++i) p.q[i] = rotate_by_increment(q0_[i], alpha_[i]);
   }
-  req.commit = true;
-  req.iteration = 0;
-  f.evaluate(p, b, req);
-  ++rep.evaluations;
-  return rep;
+  EvalRequest end = req;
+  end.commit = true;
+  end.iteration = 0;
+  f.evaluate(p, b, end);
 }
 
 }  // namespace mpdem

@@ -4,8 +4,10 @@
 //   y(t+dt) = y(t) + dt [(1-phi) r(t) + phi r(t+dt)]  for v, w, T
 //   x(t+dt) = x(t) + dt [(1-phi) v(t) + phi v(t+dt)],   alpha_D = dt [(1-phi) w(t) + phi w(t+dt)]
 // phi = 0 is explicit (one evaluation per step); phi > 0 iterates on the end-of-step rates.
+#include <array>
 #include <vector>
 
+#include "integrate/step_policy.hpp"
 #include "integrate/step_report.hpp"
 #include "model/params.hpp"
 #include "sim/interactions.hpp"
@@ -15,6 +17,9 @@ namespace mpdem {
 class TrapezoidalIntegrator {
  public:
   explicit TrapezoidalIntegrator(const Params& params) : params_(params) {}
+  // The spring increment (64) and the booked heat flows weigh the step's end by phi, like the
+  // state update; the increment needs each contact's step-start history.
+  static StepPolicy policy(const Params& params) { return {params.time.phi, true, params.time.phi}; }
 
   // Advances the particles from t to t + dt. On entry force/torque/heat hold the rates at the
   // current state. On success the arrays hold the accepted end state and its rates (the commit
@@ -23,6 +28,18 @@ class TrapezoidalIntegrator {
   StepReport step(Particles& p, Barriers& b, Interactions& f, double t, double dt, int max_iter);
 
  private:
+  // Per field: sums of |y_K - y_(K-1)|^2, |y_K - y(t)|^2, |y_K - y_(K-2)|^2 and |y_K|^2.
+  using Sums = std::array<double, 4 * kFieldCount>;
+
+  // The four stages of a step:
+  void predict(Particles& p, double dt);       // end state from the start rates
+  Sums iterate(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req);  // evaluate, update
+  void test_convergence(Particles& p, const Sums& s, int k, StepReport& rep);  // sets rep.converged
+  void commit(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req, const StepReport& rep);
+  // After the last iteration failed: names the culprit and restores the start state.
+  void reject(Particles& p, StepReport& rep) const;
+
+  Sums update(Particles& p, double dt, bool predictor);  // the end state (134)-(138)
   void save_start(const Particles& p);
   void restore_start(Particles& p) const;
   void accept_midpoint(Particles& p);          // y <- (y_K + y_(K-1)) / 2

@@ -78,7 +78,7 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
     for (std::size_t i = 0; i < n; ++i) p.T[i] += dt * p.heat[i] / (p.mass[i] * p.heat_capacity[i]);
   }
-  f.evaluate(p, b, EvalRequest{t + dt, dt, 1.0, true});
+  f.evaluate(p, b, EvalRequest{t + dt, dt, policy().phi, true});
   // Second kick, with the health scan of the end state in the same pass (sim/state_scan.hpp).
   const FieldParams& fields = params_.fields;
   const DomainParams& domain = params_.domain;

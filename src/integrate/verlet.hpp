@@ -5,6 +5,7 @@
 // Temperature is advanced with explicit Euler.
 #include <vector>
 
+#include "integrate/step_policy.hpp"
 #include "integrate/step_report.hpp"
 #include "model/params.hpp"
 #include "sim/interactions.hpp"
@@ -14,6 +15,9 @@ namespace mpdem {
 class VerletIntegrator {
  public:
   explicit VerletIntegrator(const Params& params) : params_(params) {}
+  // One commit evaluation per step: the spring increment takes the evaluated velocity (phi = 1),
+  // no step-start history; temperatures advance with the start flows only (explicit Euler).
+  static StepPolicy policy() { return {1.0, false, 0.0}; }
   // On entry force/torque/heat hold the rates at the current state; on exit those of the new one.
   StepReport step(Particles& p, Barriers& b, Interactions& f, double t, double dt);
 

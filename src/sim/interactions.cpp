@@ -1,9 +1,10 @@
 #include "sim/interactions.hpp"
 
 #include <algorithm>
-#include <chrono>
+#include <cmath>
 
 #include "core/parallel.hpp"
+#include "core/scoped_timer.hpp"
 #include "physics/field_forces.hpp"
 #include "contact/barrier_contacts.hpp"
 #include "thermal/heat_transfer.hpp"
@@ -13,6 +14,22 @@
 
 namespace mpdem {
 
+namespace {
+// True when some particle i in [lo, hi) has |x_i - x_build_i| + t |v_i| > limit (> 0). Only a
+// particle with one of the two terms above limit/2 can, and only those pay for the square roots
+// (measured: a vectorised loop over all of them was slower).
+bool some_reach(const Vec3* __restrict x, const Vec3* __restrict x_build, const Vec3* __restrict v, std::size_t lo,
+                std::size_t hi, double t, double limit) {
+  const double quarter2 = 0.25 * limit * limit;
+  bool out = false;
+  for (std::size_t i = lo; i < hi; ++i) {
+    const double d2 = norm2(x[i] - x_build[i]), r2 = t * t * norm2(v[i]);
+    out = out || ((d2 > quarter2 || r2 > quarter2) && std::sqrt(d2) + std::sqrt(r2) > limit);
+  }
+  return out;
+}
+}  // namespace
+
 double default_skin(const Model& model, const Particles& p) {
   if (model.params.neighbor.skin > 0.0) return model.params.neighbor.skin;
   double rmin = 0.0;
@@ -20,13 +37,14 @@ double default_skin(const Model& model, const Particles& p) {
   return rmin > 0.0 ? 0.2 * rmin : 1e-3;
 }
 
-Interactions::Interactions(const Model& model, const Particles& p, const Barriers& b)
+Interactions::Interactions(const Model& model, const Particles& p, const Barriers& b, const StepPolicy& policy)
     : model_(model),
+      policy_(policy),
       // The list reaches beyond contact by the near-field cutoff (0 when the near field is off).
       search_(std::make_unique<NeighborSearch>(default_skin(model, p),
                                                near_field_extra_range(model.params.near_field, p))),
       pp_(std::make_unique<ParticleContacts>(model,
-                                             model.params.time.integrator != Integrator::Verlet)),
+                                             policy.step_start)),
       pb_(std::make_unique<BarrierContacts>(model, b)) {
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
   if (model.params.analysis.thermal) heat_ = std::make_unique<HeatTransfer>(model, b);
@@ -53,8 +71,36 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
   stats_.rebuilds = search_->rebuilds();
 }
 
-void Interactions::prepare_step(Particles& p, const Barriers& b) {
-  if (search_->needs_rebuild(p, b)) rebuild(p, b, true);
+void Interactions::prepare_step(Particles& p, const Barriers& b, double dt) {
+  ScopedTimer timer(times_.search);
+  if (rebuild_due(p, b, dt)) rebuild(p, b, true);
+}
+
+bool Interactions::rebuild_due(const Particles& p, const Barriers& b, double dt) const {
+  const VerletList& list = search_->pairs();
+  const std::size_t n = p.size();
+  // Never built, or particles or elements added or removed: NeighborSearch's own check says so.
+  if (n == 0 || list.size() != n || search_->barrier_candidates().num_elements() != b.size())
+    return search_->needs_rebuild(p, b);
+  // The lists hold while a particle's displacement + the barriers' displacement since the build
+  // stays within skin/2. The coming step adds about dt x the current speeds; twice that, since
+  // the speeds change within the step, keeps evaluate()'s own rebuilds practically absent.
+  constexpr double kReachFactor = 2.0;
+  double limit = 0.5 * search_->skin();  // m, left for the particles
+  if (b.size() > 0) {
+    double speed2 = 0.0;
+    for (const Vec3& u : b.velocity) speed2 = std::max(speed2, norm2(u));
+    limit -= search_->barrier_candidates().max_barrier_displacement(b) + kReachFactor * dt * std::sqrt(speed2);
+  }
+  if (!(limit > 0.0)) return true;
+  constexpr std::size_t kChunk = 1024;  // particles per call
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  bool due = false;
+#pragma omp parallel for schedule(static) reduction(|| : due) if (n > kParallelThreshold)
+  for (std::size_t c = 0; c < chunks; ++c)
+    due = due || some_reach(p.x.data(), list.build_positions().data(), p.v.data(), c * kChunk,
+                            std::min(n, (c + 1) * kChunk), kReachFactor * dt, limit);
+  return due;
 }
 
 void Interactions::force_rebuild(Particles& p, const Barriers& b, bool reorder) { rebuild(p, b, reorder); }
@@ -76,32 +122,37 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   std::fill(b.force.begin(), b.force.end(), Vec3{});
   std::fill(b.moment.begin(), b.moment.end(), Vec3{});
   std::fill(b.pressure.begin(), b.pressure.end(), 0.0);
-  // Reordering is safe only at a commit evaluation outside the fixed-point iteration: it is the
-  // last thing an integrator does with the state of a step (the trapezoidal rule holds its start
-  // state by index during the iteration). Velocity Verlet evaluates only such states.
-  using Clock = std::chrono::steady_clock;
-  const auto t0 = Clock::now();
-  if (search_->needs_rebuild(p, b)) rebuild(p, b, req.commit && req.iteration == 0);
-  const auto t1 = Clock::now();
-  start_accumulators(p);
-  const auto t2 = Clock::now();
-  if (near_) stats_.near_field_energy = near_->evaluate(p, *search_);
-  const auto t3 = Clock::now();
-  const PairStats pp = pp_->evaluate(p, *search_, req);
-  const auto t4 = Clock::now();
-  const PairStats pb = pb_->evaluate(p, b, *search_, req);
-  const auto t5 = Clock::now();
+  {
+    // The safety net behind prepare_step. No reordering within a step: the integrators hold
+    // their step-start state by particle index.
+    ScopedTimer timer(times_.search);
+    if (search_->needs_rebuild(p, b)) {
+      rebuild(p, b, false);
+      ++mid_step_rebuilds_;
+    }
+  }
+  {
+    ScopedTimer timer(times_.fields);
+    start_accumulators(p);
+  }
+  if (near_) {
+    ScopedTimer timer(times_.other);
+    stats_.near_field_energy = near_->evaluate(p, *search_);
+  }
+  PairStats pp, pb;
+  {
+    ScopedTimer timer(times_.pairs);
+    pp = pp_->evaluate(p, *search_, req);
+  }
+  {
+    ScopedTimer timer(times_.barriers);
+    pb = pb_->evaluate(p, b, *search_, req);
+  }
   if (heat_) {
+    ScopedTimer timer(times_.other);
     const HeatFlows h = heat_->evaluate(p, b, *search_);
     if (req.commit) commit_heat(h, req);
   }
-  const auto t6 = Clock::now();
-  auto secs = [](Clock::time_point a, Clock::time_point z) { return std::chrono::duration<double>(z - a).count(); };
-  times_.search += secs(t0, t1);
-  times_.fields += secs(t1, t2);
-  times_.pairs += secs(t3, t4);
-  times_.barriers += secs(t4, t5);
-  times_.other += secs(t2, t3) + secs(t5, t6);
 
   stats_.contacts_pp = pp.contacts;
   stats_.contacts_pb = pb.contacts;
@@ -114,9 +165,9 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
 
 void Interactions::commit_heat(const HeatFlows& h, const EvalRequest& req) {
   // The temperature update weights the start and end flows like the integrator does
-  // (trapezoidal: 1 - phi and phi; Verlet: explicit Euler, the start flow only), so the
-  // cumulative sums balance the stored thermal energy exactly.
-  const double phi = model_.params.time.integrator == Integrator::Verlet ? 0.0 : req.phi;
+  // (its policy: trapezoidal 1 - phi and phi, Verlet's explicit Euler the start flow only), so
+  // the cumulative sums balance the stored thermal energy exactly.
+  const double phi = policy_.heat_weight;
   const double ob = -h.barriers, oc = -h.convection, orad = -h.radiation;  // outward, W
   stats_.heat_to_barriers += req.dt * ((1.0 - phi) * out_barriers_ + phi * ob);
   stats_.heat_convected += req.dt * ((1.0 - phi) * out_convected_ + phi * oc);

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "integrate/step_policy.hpp"
 #include "io/binary_stream.hpp"
 #include "model/scene.hpp"
 
@@ -44,7 +45,7 @@ struct InteractionStats {
 // Wall time spent per part of the evaluations (s, cumulative; not checkpointed), for the
 // benchmark's breakdown of where a step goes.
 struct PhaseTimes {
-  double search = 0.0;      // rebuild checks and rebuilds (with reordering)
+  double search = 0.0;      // rebuild checks and rebuilds (prepare_step's, with reordering, too)
   double fields = 0.0;      // accumulators reset, field forces
   double pairs = 0.0;       // particle-particle contacts
   double barriers = 0.0;    // particle-barrier contacts and element loads
@@ -61,17 +62,19 @@ struct HeatFlows;
 
 class Interactions {
  public:
-  // Builds the neighbour search for the scene's particles and barriers.
-  Interactions(const Model& model, const Particles& p, const Barriers& b);
+  // Builds the neighbour search for the scene's particles and barriers; `policy` is what the
+  // integrator that will call evaluate() needs (its policy() function).
+  Interactions(const Model& model, const Particles& p, const Barriers& b, const StepPolicy& policy);
   ~Interactions();
 
-  // Between steps: rebuilds the lists if needed, reordering the particles spatially (ids are
-  // kept; contact history follows the particles). Force accumulators are permuted too.
-  // evaluate() does the same at commit evaluations, so a run needs no separate call.
-  void prepare_step(Particles& p, const Barriers& b);
+  // The stage before every step (of length dt, s): rebuilds the lists when they might not last
+  // through the step, and then reorders the particles spatially (ids are kept; contact history
+  // and the force accumulators follow the particles). The only place that reorders. dt = 0:
+  // rebuilds only when the lists are already stale.
+  void prepare_step(Particles& p, const Barriers& b, double dt = 0.0);
   // Fills force, torque, heat of every particle (and the barriers' loads) for the current state.
-  // Rebuilds the lists first when needed; at a commit evaluation with iteration 0 (the accepted
-  // end of a step) it may then reorder the particles.
+  // Never reorders. Should the particles have moved beyond what prepare_step foresaw, it rebuilds
+  // the lists in place first (counted by mid_step_rebuilds()).
   void evaluate(Particles& p, Barriers& b, const EvalRequest& req);
   // Removes the particles whose keep[i] is 0, keeping everyone else's contact history.
   void remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep);
@@ -80,6 +83,9 @@ class Interactions {
 
   const InteractionStats& stats() const { return stats_; }
   const PhaseTimes& times() const { return times_; }
+  // Rebuilds evaluate() had to do (prepare_step's criterion should make them rare; not
+  // checkpointed, so a resumed run counts from 0).
+  std::uint64_t mid_step_rebuilds() const { return mid_step_rebuilds_; }
   // Checkpoints: statistics, neighbour lists and contact history.
   void save(BinaryWriter& w, const Particles& p) const;
   void restore(BinaryReader& r, const Particles& p, const Barriers& b);
@@ -96,10 +102,13 @@ class Interactions {
   void start_accumulators(Particles& p) const;  // force = field forces, torque = heat = 0
   void commit_heat(const HeatFlows& h, const EvalRequest& req);
   void rebuild(Particles& p, const Barriers& b, bool reorder);
+  bool rebuild_due(const Particles& p, const Barriers& b, double dt) const;
 
   const Model& model_;
+  StepPolicy policy_;
   InteractionStats stats_;
   PhaseTimes times_;
+  std::uint64_t mid_step_rebuilds_ = 0;
   std::unique_ptr<NeighborSearch> search_;
   std::unique_ptr<ParticleContacts> pp_;
   std::unique_ptr<BarrierContacts> pb_;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "integrate/adaptive_step.hpp"
+#include "integrate/integrator_policy.hpp"
 #include "model/material_variants.hpp"
 #include "sim/energy.hpp"
 #include "io/output_manager.hpp"
@@ -31,10 +32,11 @@ Scene& with_materials_by_index(Scene& scene) {
 }
 }  // namespace
 
-Simulation::Simulation(Scene& scene, RunOptions options)
-    : scene_(with_materials_by_index(scene)), options_(std::move(options)),
-      interactions_(std::make_unique<Interactions>(scene.model, scene.particles, scene.barriers)),
-      trapezoidal_(scene.model.params), verlet_(scene.model.params), dt_(scene.model.params.time.dt) {}
+Simulation::Simulation(Scene&& scene, RunOptions options)
+    : scene_(std::move(with_materials_by_index(scene))), options_(std::move(options)),
+      interactions_(std::make_unique<Interactions>(scene_.model, scene_.particles, scene_.barriers,
+                                                   integrator_policy(scene_.model.params))),
+      trapezoidal_(scene_.model.params), verlet_(scene_.model.params), dt_(scene_.model.params.time.dt) {}
 
 Simulation::~Simulation() = default;
 
@@ -51,6 +53,7 @@ void Simulation::initialize() {
 
 StepReport Simulation::advance(double dt) {
   initialize();
+  interactions_->prepare_step(scene_.particles, scene_.barriers, dt);
   const Params& prm = scene_.model.params;
   StepReport rep;
   if (prm.time.integrator == Integrator::Verlet) {
@@ -76,6 +79,8 @@ StepReport Simulation::advance(double dt) {
 
 StepReport Simulation::advance_adaptive(double limit) {
   initialize();
+  // Once for all tries: a redone step is shorter and starts from the same state.
+  interactions_->prepare_step(scene_.particles, scene_.barriers, std::min(dt_, limit));
   const Params& prm = scene_.model.params;
   for (;;) {
     const double h = std::min(dt_, limit);

@@ -1,7 +1,7 @@
 #pragma once
 // Simulation: the top-down driver of a run. One step reads
-//   neighbour search -> interactions -> integrator -> checks -> output
-// (neighbour search and interactions live in Interactions; the integrator calls them).
+//   prepare_step (neighbour rebuild, reordering) -> integrator (its evaluations of the
+//   interactions) -> checks -> output
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -36,9 +36,12 @@ std::filesystem::path output_dir_for(const Scene& scene, const RunOptions& optio
 
 class Simulation {
  public:
-  // Takes the scene's model and initial state; the scene must outlive the simulation.
-  Simulation(Scene& scene, RunOptions options);
+  // Owns the scene from here on: its model and state are read and changed through model(),
+  // particles(), barriers(). An rvalue, so that no caller keeps reading a stale copy.
+  Simulation(Scene&& scene, RunOptions options);
   ~Simulation();
+  Simulation(const Simulation&) = delete;  // the parts hold references into scene_
+  Simulation& operator=(const Simulation&) = delete;
 
   RunSummary run();                  // runs to [time] duration
 
@@ -72,7 +75,7 @@ class Simulation {
   // J, mechanical energy + cumulative dissipation, from the scan of the particles.
   double energy_balance(const StateScan& s) const;
 
-  Scene& scene_;
+  Scene scene_;
   RunOptions options_;
   std::unique_ptr<Interactions> interactions_;
   TrapezoidalIntegrator trapezoidal_;

@@ -40,7 +40,7 @@ CaseResult charged_case(const CaseContext& ctx, const std::string& name, const s
     }
   };
   sample(x0, v0, 0.0, true);
-  Simulation sim(scene, quiet_run());
+  Simulation sim(Scene(scene), quiet_run());
   const auto steps = static_cast<std::size_t>(std::llround(end / dt));
   const std::size_t stride = stride_for(steps, 300);
   std::size_t k = 0;

@@ -41,7 +41,7 @@ LineSamples run_on_line(Scene& scene, const Vec3& axis, std::optional<LineWall> 
   s.v_ref.assign(n, {});
   s.ov_sim.assign(n - 1, {});
   s.ov_ref.assign(n - 1, {});
-  Simulation sim(scene, quiet_run());
+  Simulation sim(Scene(scene), quiet_run());
   Particles& p = sim.particles();
   auto sample = [&] {
     s.t.push_back(sim.time());

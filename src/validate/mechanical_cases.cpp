@@ -91,7 +91,7 @@ CaseResult hole(const CaseContext& ctx) {
   const double plate_z = scene.barriers.p0[0].z;  // m, the plate is horizontal
   const std::int64_t id = scene.particles.id[0];
   const Vec3 x0 = scene.particles.x[0], v0 = scene.particles.v[0];
-  Simulation sim(scene, quiet_run());
+  Simulation sim(std::move(scene), quiet_run());
   PlotCsv plot("hole: height vs time of a sphere falling through a square hole", "time t [s]", "height z [m]");
   plot.add_series("particle centre", true, "free fall");
   plot.add_hline(plate_z, "plate (barrier surface)");

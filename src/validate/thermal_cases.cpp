@@ -34,7 +34,7 @@ CaseResult thermal_contact(const CaseContext& ctx) {
   const double T10 = p0.T[0], T20 = p0.T[1], Tm = (C1 * T10 + C2 * T20) / (C1 + C2);
   auto exact = [&](double T0, double t) { return Tm + (T0 - Tm) * std::exp(-lambda * t); };
 
-  Simulation sim(scene, quiet_run());
+  Simulation sim(Scene(scene), quiet_run());
   PlotCsv plot("thermal_contact: two touching particles with a temperature gradient", "time t [s]",
                "temperature T [K]");
   plot.add_series(fmt::format("particle {}", id1));
@@ -85,7 +85,7 @@ CaseResult wind_cooling(const CaseContext& ctx) {
   }
   const double Tair = th.air_temperature;
   auto exact = [&](std::size_t i, double t) { return Tair + (T0[i] - Tair) * std::exp(-t / tau[i]); };
-  Simulation sim(scene, quiet_run());
+  Simulation sim(Scene(scene), quiet_run());
   PlotCsv plot("wind_cooling: particles cooling in air at several wind speeds", "time t [s]", "temperature T [K]");
   for (std::size_t i = 0; i < n; ++i) plot.add_series(fmt::format("{:g} m/s", speed[i]));
   double worst = 0.0, scale = 0.0;

@@ -28,7 +28,7 @@ CaseResult step_convergence(const CaseContext& ctx) {
     Scene s = base;
     const double dt = prm.time.dt / std::pow(2.0, level);
     s.model.params.time.dt = s.model.params.time.dt_min = s.model.params.time.dt_max = dt;
-    Simulation sim(s, quiet_run());
+    Simulation sim(std::move(s), quiet_run());
     const auto steps = std::llround(end / dt);
     for (long long k = 0; k < steps; ++k) sim.advance(dt);
     dts.push_back(dt);
@@ -87,10 +87,10 @@ CaseResult adaptive_step(const CaseContext& ctx) {
   std::vector<double> steps;  // s, accepted adaptive steps
   {
     Scene s = base;
-    Simulation sim(s, quiet_run());
+    Simulation sim(std::move(s), quiet_run());
     ada.t.push_back(0.0);
-    ada.z.push_back(s.particles.x[0].z);
-    ada.vz.push_back(s.particles.v[0].z);
+    ada.z.push_back(sim.particles().x[0].z);
+    ada.vz.push_back(sim.particles().v[0].z);
     steps.push_back(std::nan(""));
     while (sim.time() < end - 1e-15) {
       const double t0 = sim.time();
@@ -109,10 +109,10 @@ CaseResult adaptive_step(const CaseContext& ctx) {
     Scene s = base;
     s.model.params.time.adaptive = false;
     s.model.params.time.dt = s.model.params.time.dt_min = s.model.params.time.dt_max = dt_ref;
-    Simulation sim(s, quiet_run());
+    Simulation sim(std::move(s), quiet_run());
     ref.t.push_back(0.0);
-    ref.z.push_back(s.particles.x[0].z);
-    ref.vz.push_back(s.particles.v[0].z);
+    ref.z.push_back(sim.particles().x[0].z);
+    ref.vz.push_back(sim.particles().v[0].z);
     const auto n = std::llround(end / dt_ref);
     for (long long k = 0; k < n; ++k) {
       sim.advance(std::min(dt_ref, end - sim.time()));

@@ -121,7 +121,7 @@ Collision collide(bool barrier, double v, double e, double dt) {
     test::add_particle(s, 1, kR, {-kR - 0.5 * gap, 0.0, 0.0}, {0.5 * v, 0.0, 0.0});
     test::add_particle(s, 2, kR, {kR + 0.5 * gap, 0.0, 0.0}, {-0.5 * v, 0.0, 0.0});
   }
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   Particles& p = sim.particles();
   const auto overlap = [&] {
     if (barrier) return kR - p.x[0].z;
@@ -168,7 +168,7 @@ TEST(LinearLaw, NewtonThirdLaw) {
   c.mu_static = 0.5, c.mu_dynamic = 0.4, c.tangential_damping = 0.2;
   test::add_particle(s, 1, kR, {0.0, 0.0, 0.0}, {0.3, 0.05, 0.0}, {10.0, -40.0, 25.0});
   test::add_particle(s, 2, 0.7 * kR, {1.69 * kR, 0.4 * kR, 0.2 * kR}, {-0.2, 0.0, 0.03}, {-5.0, 0.0, 60.0});
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   Particles& p = sim.particles();
   int touching = 0;
   for (int k = 0; k < 400; ++k) {

@@ -88,7 +88,7 @@ ImpactResult head_on(Integrator integ, double v, double e, double steps_per_tc, 
   const std::size_t second = test::add_particle(s, 2, kR, {kR + 0.5 * gap, 0.0, 0.0}, {-0.5 * v, 0.0, 0.0});
   s.particles.young[second] = E2;
   s.particles.poisson[second] = nu2;
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   Particles& p = sim.particles();
   const Vec3 P0 = test::momentum(p);
   ImpactResult r;
@@ -205,7 +205,7 @@ TEST(NewtonThirdLaw, PairForcesAndTorques) {
     for (double mu_r : {0.0, 0.1}) {
       const double dt = 2e-6;
       Scene s = oblique_pair(integ, dt, mu_r);
-      Simulation sim(s, RunOptions{{}, false, false});
+      Simulation sim(std::move(s), RunOptions{{}, false, false});
       Particles& p = sim.particles();
       int touching = 0;
       for (int k = 0; k < 400; ++k) {
@@ -286,9 +286,9 @@ TEST(NewtonThirdLaw, ClusterForceAndAngularMomentumBalance) {
     std::vector<std::int64_t> ids(18);
     std::iota(ids.begin(), ids.end(), 1);
     Scene s = cluster(integ, dt, identity(18), ids);
-    Simulation sim(s, RunOptions{{}, false, false});
+    Simulation sim(std::move(s), RunOptions{{}, false, false});
     Particles& p = sim.particles();
-    const Vec3 g = s.model.params.fields.gravity;
+    const Vec3 g = sim.model().params.fields.gravity;
     double M = 0.0;
     Vec3 xc0{}, vc0{};
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -382,7 +382,7 @@ TEST(MixedMaterials, OneMaterialPathEqualsTheGeneralPath) {
     const std::size_t far = test::add_particle(sb, 99, kR, {1.0, 1.0, 1.0});
     sb.particles.young[far] = 3.0 * kE;
     sb.particles.poisson[far] = 0.25;
-    Simulation A(sa, RunOptions{{}, false, false}), B(sb, RunOptions{{}, false, false});
+    Simulation A(std::move(sa), RunOptions{{}, false, false}), B(std::move(sb), RunOptions{{}, false, false});
     for (int k = 0; k < 800; ++k) {
       A.advance(dt);
       B.advance(dt);
@@ -412,7 +412,7 @@ TEST(Relabelling, FinalStatesMatchById) {
     std::shuffle(order_b.begin(), order_b.end(), rng);
     Scene sa = cluster(integ, dt, identity(n), ids_a);
     Scene sb = cluster(integ, dt, order_b, ids_b);
-    Simulation A(sa, RunOptions{{}, false, false}), B(sb, RunOptions{{}, false, false});
+    Simulation A(std::move(sa), RunOptions{{}, false, false}), B(std::move(sb), RunOptions{{}, false, false});
     for (int k = 0; k < 800; ++k) {
       A.advance(dt);
       B.advance(dt);
@@ -446,7 +446,7 @@ ChainResult five_chain(Integrator integ, double E, double steps_per_tc) {
   const double gap = 2.5 * v * dt;
   test::add_particle(s, 1, kR, {-2.0 * kR - gap, 0, 0}, {v, 0, 0});
   for (int k = 0; k < 4; ++k) test::add_particle(s, 2 + k, kR, {2.0 * kR * k, 0, 0});
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   Particles& p = sim.particles();
   auto energy = [&] {
     double K = 0.0;

@@ -67,7 +67,7 @@ TEST(ContactTable, SlidingDecelerationFollowsEachFloorsFriction) {
   const double delta = test::hertz_rest_overlap(m * g, E / (2.0 * (1.0 - nu * nu)), kR);  // E* (51), r* = R
   add_sphere(s, 0, 1, {-0.03, 0.0, kR - delta}, {v0, 0.0, 0.0});
   add_sphere(s, 0, 2, {-0.03, 0.2, kR - delta}, {v0, 0.0, 0.0});
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   Particles& p = sim.particles();
   for (int k = 0; k < 500; ++k) sim.advance(dt);  // past the stick of the first steps
   const double t1 = sim.time();
@@ -102,7 +102,7 @@ TEST(ContactTable, RestitutionPerPairOfParticleMaterials) {
     add_sphere(s, mats[c][0], 10 * c + 1, {-kR - 1e-5, y, 0.0}, {v, 0.0, 0.0});
     add_sphere(s, mats[c][1], 10 * c + 2, {kR + 1e-5, y, 0.0}, {-v, 0.0, 0.0});
   }
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   Particles& p = sim.particles();
   for (int k = 0; k < 3000; ++k) sim.advance(1e-6);
   const double expected[3] = {0.8, 0.6, 0.4};
@@ -127,7 +127,7 @@ TEST(ContactTable, YoungsModulusEditedBetweenStepsTakesEffect) {
   const double delta = 1e-5;
   test::add_particle(s, 1, kR, {-kR + 0.5 * delta, 0.0, 0.0});
   test::add_particle(s, 2, kR, {kR - 0.5 * delta, 0.0, 0.0});
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   Particles& p = sim.particles();
   sim.advance(1e-7);
   const double f1 = norm(p.force[0]), x1 = norm(p.x[0] - p.x[1]);
@@ -161,7 +161,7 @@ TEST(ContactTable, LinearForOnePairHertzElsewhere) {
   add_sphere(s, steel, 2, {kR + 1e-6, 0.0, 0.0}, {-0.5 * v, 0.0, 0.0});
   add_sphere(s, 0, 3, {-kR - 1e-6, 0.05, 0.0}, {0.5 * v, 0.0, 0.0});
   add_sphere(s, 0, 4, {kR + 1e-6, 0.05, 0.0}, {-0.5 * v, 0.0, 0.0});
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   Particles& p = sim.particles();
   double start[2] = {-1.0, -1.0}, duration[2] = {-1.0, -1.0}, prev[2] = {-1.0, -1.0}, dmax = 0.0;
   for (int step = 0; step < 20000 && (duration[0] < 0.0 || duration[1] < 0.0); ++step) {

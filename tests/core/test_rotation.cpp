@@ -87,13 +87,13 @@ TEST(Rotation, ConstantSpinTenTurns) {
     s.model.params.time.integrator = integ;
     s.model.params.fields.gravity = {};
     test::add_particle(s, 1, 0.01, {}, {}, omega * axis);
-    Simulation sim(s, RunOptions{{}, false, false});
+    Simulation sim(std::move(s), RunOptions{{}, false, false});
     for (int k = 0; k < steps; ++k) sim.advance(t_end / steps);
     const double a = omega * sim.time();
     const Vec3 body{0.3, -0.5, 0.8};
     const Vec3 expected = body * std::cos(a) + cross(axis, body) * std::sin(a) + axis * (dot(axis, body) * (1 - std::cos(a)));
-    const Vec3 got = mat_apply(quat_matrix(s.particles.q[0]), body);
+    const Vec3 got = mat_apply(quat_matrix(sim.particles().q[0]), body);
     EXPECT_LT(norm(got - expected), 1e-9) << (integ == Integrator::Verlet ? "verlet" : "trapezoidal");
-    EXPECT_DOUBLE_EQ(norm(s.particles.w[0] - omega * axis), 0.0);
+    EXPECT_DOUBLE_EQ(norm(sim.particles().w[0] - omega * axis), 0.0);
   }
 }

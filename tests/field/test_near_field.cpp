@@ -67,9 +67,9 @@ TEST(NearFieldForces, MatchesBruteForceWithCutoffAndMaterialPairs) {
         s.particles.material[n] = (i + j + k) % 2;
         s.particles.charge[n] = 1e-10 * ((i * 5 + j * 3 + k) % 7 - 3);
       }
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   sim.initialize();
-  const Particles& p = s.particles;
+  const Particles& p = sim.particles();
   // The table a pair uses, written out here.
   auto coeffs = [](int a, int b) {
     if (a == 1 && b == 1) return EmpiricalLaw{0.0, 1.0, 4e-9, 2.0};
@@ -138,9 +138,9 @@ Oscillation oscillate(Integrator integ, int steps_per_period, double periods) {
   const Vec3 axis = Vec3{1.0, 2.0, -0.5} / norm(Vec3{1.0, 2.0, -0.5});  // not along a grid axis
   test::add_particle(s, 1, R, {});
   test::add_particle(s, 2, R, dstart * axis);
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   sim.initialize();
-  const Particles& p = s.particles;
+  const Particles& p = sim.particles();
   const double E0 = U(dstart), Eosc = U(dstart) - U(d0);
   Oscillation r;
   double prev = dstart - d0, first = -1.0, last = -1.0;
@@ -191,9 +191,9 @@ TEST(Coulomb, LikeChargesReachTheSpeedOfTheirCoulombEnergy) {
   test::add_particle(s, 1, R, {});
   test::add_particle(s, 2, R, {0.0, d0, 0.0});
   s.particles.charge = {q, q};
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   sim.initialize();
-  const Particles& p = s.particles;
+  const Particles& p = sim.particles();
   const double m = p.mass[0];
   auto speed = [&](double d) { return std::sqrt(kCoulomb * q * q * (1 / d0 - 1 / std::min(d, rc)) / m); };
   double worst = 0.0;

@@ -61,15 +61,15 @@ struct Outcome {
 
 Outcome run(double dt, bool adaptive, double tol = 1e-6) {
   Scene s = collision_scene(dt, adaptive, tol);
-  Simulation sim(s, RunOptions{{}, false, false});
-  const double end = s.model.params.time.duration;
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
+  const double end = sim.model().params.time.duration;
   while (sim.time() < end - 1e-15) {
     if (adaptive)
       sim.advance_adaptive(end - sim.time());
     else
       sim.advance(std::min(dt, end - sim.time()));
   }
-  return {s.particles.x, s.particles.v, sim.evaluations(), sim.redone_steps()};
+  return {sim.particles().x, sim.particles().v, sim.evaluations(), sim.redone_steps()};
 }
 
 double velocity_error(const Outcome& a, const Outcome& ref) {
@@ -115,7 +115,7 @@ TEST(AdaptiveStepping, FailureAtMinimumStepNamesTheParticle) {
   s.model.params.time.dt_min = 1e-3;  // cannot shrink
   s.model.params.time.dt_max = 1e-3;
   s.model.params.time.desired_iterations = 2;
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   try {
     for (int k = 0; k < 200; ++k) sim.advance_adaptive(1.0);
     FAIL() << "expected a RunError";

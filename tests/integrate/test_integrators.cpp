@@ -22,12 +22,12 @@ Vec3 free_fall_error(Integrator integ, double phi, double dt, int steps) {
   s.model.params.fields.gravity = kG;
   const Vec3 x0{1.0, 2.0, 3.0}, v0{0.5, -1.0, 2.0};
   test::add_particle(s, 7, 0.001, x0, v0);
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   for (int k = 0; k < steps; ++k) sim.advance(dt);
   const double t = sim.time();
   const Vec3 exact = x0 + v0 * t + 0.5 * t * t * kG;
-  EXPECT_LT(norm(s.particles.v[0] - (v0 + t * kG)), 1e-12 * (1.0 + norm(v0 + t * kG)));
-  return s.particles.x[0] - exact;
+  EXPECT_LT(norm(sim.particles().v[0] - (v0 + t * kG)), 1e-12 * (1.0 + norm(v0 + t * kG)));
+  return sim.particles().x[0] - exact;
 }
 }  // namespace
 
@@ -69,13 +69,13 @@ TEST(ChargedParticle, UniformElectricFieldParabola) {
   const Vec3 E{300.0, 0.0, -100.0}, v0{0.0, 1.0, 0.5};
   const double dt = 1e-3;
   Scene s = charged_scene(dt, E, {}, v0);
-  Simulation sim(s, RunOptions{{}, false, false});
-  const Vec3 a = (s.particles.charge[0] / s.particles.mass[0]) * E;
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
+  const Vec3 a = (sim.particles().charge[0] / sim.particles().mass[0]) * E;
   for (int k = 0; k < 500; ++k) {
     sim.advance(dt);
     const double t = sim.time();
     const Vec3 exact = v0 * t + 0.5 * t * t * a;
-    ASSERT_LT(norm(s.particles.x[0] - exact), 1e-12 * (1.0 + norm(exact))) << "step " << k;
+    ASSERT_LT(norm(sim.particles().x[0] - exact), 1e-12 * (1.0 + norm(exact))) << "step " << k;
   }
 }
 
@@ -85,20 +85,20 @@ TEST(ChargedParticle, LarmorOrbitInUniformMagneticField) {
   const double q = s.particles.charge[0], m = s.particles.mass[0];
   const double omega = std::abs(q) * B / m, period = 2 * std::numbers::pi / omega, radius = m * v / (std::abs(q) * B);
   const double dt = period / 400.0;
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   // Positive charge, B along z: clockwise gyration about the centre (0, -radius).
   const Vec3 centre{0.0, -radius, 0.0};
   double rmin = 1e300, rmax = 0.0, vdev = 0.0;
   double last_cross = -1.0, first_cross = -1.0;
   int crossings = 0;
-  double prev_y = s.particles.x[0].y + radius;
+  double prev_y = sim.particles().x[0].y + radius;
   for (int k = 0; k < 4000; ++k) {  // 10 gyrations
     sim.advance(dt);
-    const Vec3& x = s.particles.x[0];
+    const Vec3& x = sim.particles().x[0];
     const double r = norm(x - centre);
     rmin = std::min(rmin, r);
     rmax = std::max(rmax, r);
-    vdev = std::max(vdev, std::abs(norm(s.particles.v[0]) - v) / v);
+    vdev = std::max(vdev, std::abs(norm(sim.particles().v[0]) - v) / v);
     // upward crossings of the line y = centre.y on the left (x < 0) side: one per period
     const double y = x.y + radius;
     if (prev_y < 0.0 && y >= 0.0 && x.x < 0.0) {
@@ -113,7 +113,7 @@ TEST(ChargedParticle, LarmorOrbitInUniformMagneticField) {
   EXPECT_NEAR(rmax / radius, 1.0, 1e-3);
   ASSERT_GE(crossings, 9);
   EXPECT_NEAR((last_cross - first_cross) / (crossings - 1) / period, 1.0, 1e-3);
-  EXPECT_LT(vdev, 10.0 * s.model.params.tolerance.velocity);  // |v| conserved over 10 gyrations
+  EXPECT_LT(vdev, 10.0 * sim.model().params.tolerance.velocity);  // |v| conserved over 10 gyrations
 }
 
 TEST(ChargedParticle, CrossedFieldsDrift) {
@@ -122,11 +122,11 @@ TEST(ChargedParticle, CrossedFieldsDrift) {
   const double omega = std::abs(s.particles.charge[0]) * norm(B) / s.particles.mass[0];
   const double period = 2 * std::numbers::pi / omega;
   const int per = 400;
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   for (int k = 0; k < 10 * per; ++k) sim.advance(period / per);
   // Started at rest: a cycloid whose mean velocity over whole periods is the drift E x B / B^2.
   const Vec3 drift = cross(E, B) / norm2(B);
-  const Vec3 mean_v = s.particles.x[0] / sim.time();
+  const Vec3 mean_v = sim.particles().x[0] / sim.time();
   EXPECT_LT(norm(mean_v - drift) / norm(drift), 1e-3);
 }
 
@@ -135,7 +135,7 @@ TEST(Trapezoidal, NonConvergenceIsAClearError) {
   Scene s = charged_scene(1.0, {}, {0, 0, 1e3}, {1.0, 0, 0});
   s.model.params.time.max_iterations = 20;
   const double omega = s.particles.charge[0] * 1e3 / s.particles.mass[0];
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   try {
     sim.advance(10.0 / omega);
     FAIL() << "expected a RunError";
@@ -146,8 +146,8 @@ TEST(Trapezoidal, NonConvergenceIsAClearError) {
     EXPECT_NE(msg.find("Reduce time.dt"), std::string::npos) << msg;
   }
   // The state is the start-of-step state, untouched.
-  EXPECT_EQ(s.particles.x[0], (Vec3{0, 0, 0}));
-  EXPECT_EQ(s.particles.v[0], (Vec3{1, 0, 0}));
+  EXPECT_EQ(sim.particles().x[0], (Vec3{0, 0, 0}));
+  EXPECT_EQ(sim.particles().v[0], (Vec3{1, 0, 0}));
 }
 
 TEST(Trapezoidal, ContactOnsetWithTinyStepsConverges) {
@@ -163,11 +163,11 @@ TEST(Trapezoidal, ContactOnsetWithTinyStepsConverges) {
   test::add_particle(s, 1, 0.005, {0.0, 0, 0});
   test::add_particle(s, 2, 0.005, {0.0205, 0, 0}, {-1.5, 0, 0});
   for (std::size_t i = 0; i < 2; ++i) s.particles.young[i] = 1e8;
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   int cycles = 0;
   for (int k = 0; k < 40000; ++k) cycles += sim.advance(dt).two_cycle ? 1 : 0;
   EXPECT_GT(cycles, 0);  // the situation this test is about did occur
-  const double e = (s.particles.v[1].x - s.particles.v[0].x) / 1.5;
+  const double e = (sim.particles().v[1].x - sim.particles().v[0].x) / 1.5;
   EXPECT_NEAR(e, 0.8, 0.005);
-  EXPECT_NEAR(s.particles.v[0].x + s.particles.v[1].x, -1.5, 1e-9);  // momentum
+  EXPECT_NEAR(sim.particles().v[0].x + sim.particles().v[1].x, -1.5, 1e-9);  // momentum
 }

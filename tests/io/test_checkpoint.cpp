@@ -72,7 +72,7 @@ void advance(Simulation& sim, bool adaptive, int steps) {
 // The bytes of a checkpoint written after 5 steps of granular_scene, kept as dir/ck.bin.
 std::string written_checkpoint(const fs::path& dir) {
   Scene s = granular_scene(false);
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   advance(sim, false, 5);
   sim.write_checkpoint(dir / "ck.bin");
   return test::slurp(dir / "ck.bin");
@@ -126,18 +126,18 @@ TEST(Checkpoint, ResumedRunIsBitwiseIdentical) {
   const fs::path dir = test::fresh_dir("checkpoint");
   for (bool adaptive : {false, true}) {
     Scene full_scene = granular_scene(adaptive);
-    Simulation full(full_scene, RunOptions{{}, false, false});
+    Simulation full(std::move(full_scene), RunOptions{{}, false, false});
     advance(full, adaptive, 5000);
 
     Scene first_scene = granular_scene(adaptive);
-    Simulation first(first_scene, RunOptions{{}, false, false});
+    Simulation first(std::move(first_scene), RunOptions{{}, false, false});
     advance(first, adaptive, 3000);
     const std::uint64_t rebuilds_at_checkpoint = first.interactions().stats().rebuilds;
     const double dt_at_checkpoint = first.current_dt();
     first.write_checkpoint(dir / "ck.bin");
 
     Scene resumed_scene = granular_scene(adaptive);  // as loaded again from the scene file
-    Simulation resumed(resumed_scene, RunOptions{{}, false, false});
+    Simulation resumed(std::move(resumed_scene), RunOptions{{}, false, false});
     resumed.resume_from(dir / "ck.bin");
     advance(resumed, adaptive, 2000);
     EXPECT_GT(resumed.interactions().stats().rebuilds, rebuilds_at_checkpoint);  // lists were rebuilt after it
@@ -156,7 +156,7 @@ TEST(Checkpoint, CorruptOrForeignFileIsAClearError) {
   test::write_text(dir / "text.bin", "hello");
   for (const char* f : {"truncated.bin", "text.bin", "missing.bin"}) {
     Scene s2 = granular_scene(false);
-    Simulation sim2(s2, RunOptions{{}, false, false});
+    Simulation sim2(std::move(s2), RunOptions{{}, false, false});
     try {
       sim2.resume_from(dir / f);
       FAIL() << f;
@@ -174,7 +174,7 @@ TEST(Checkpoint, OtherFormatVersionIsRefusedNamingTheFormat) {
   bytes[7] = '1';  // a file of the format before the per-index barrier history
   test::write_text(dir / "old.bin", bytes);
   Scene s2 = granular_scene(false);
-  Simulation sim2(s2, RunOptions{{}, false, false});
+  Simulation sim2(std::move(s2), RunOptions{{}, false, false});
   try {
     sim2.resume_from(dir / "old.bin");
     FAIL() << "an old-format checkpoint was accepted";

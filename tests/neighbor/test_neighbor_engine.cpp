@@ -27,6 +27,7 @@
 #include "core/parallel.hpp"
 #include "neighbor/pair_blocks.hpp"
 #include "contact/pair_batch.hpp"
+#include "integrate/integrator_policy.hpp"
 #include "integrate/verlet.hpp"
 #include "model/material_variants.hpp"
 #include "sim/interactions.hpp"
@@ -203,7 +204,7 @@ TEST(NeighborEngine, ListsAndContactsEqualBruteForceAcrossRebuilds) {
   s.model.params.neighbor.skin = skin;
   Particles& p = s.particles;
   resolve_material_variants(s.model, p, s.barriers, "");
-  Interactions in(s.model, p, s.barriers);
+  Interactions in(s.model, p, s.barriers, integrator_policy(s.model.params));
   ASSERT_DOUBLE_EQ(in.skin(), skin);
   in.force_rebuild(p, s.barriers, true);
   const std::set<IdPair> list0 = listed_pairs(in.search(), p);
@@ -261,7 +262,7 @@ Snapshot run_dense(double skin, Integrator integ, int steps, int nx, int ny, int
   Scene s = dense_scene(nx, ny, nz, r0, 0.05, 2.12 * r0, 0.15, seed, dt);
   s.model.params.time.integrator = integ;
   s.model.params.neighbor.skin = skin;
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   for (int k = 0; k < steps; ++k) sim.advance(dt);
   return snapshot_of(sim);
 }
@@ -318,7 +319,7 @@ TEST(NeighborEngine, SpringsSurviveRebuildAndReordering) {
   // would already reorder the particles, and the forced reordering below must move most.
   s.model.params.neighbor.skin = 1e-3;
   resolve_material_variants(s.model, p, s.barriers, "");
-  Interactions in(s.model, p, s.barriers);
+  Interactions in(s.model, p, s.barriers, integrator_policy(s.model.params));
   in.force_rebuild(p, s.barriers, false);
   in.evaluate(p, s.barriers, EvalRequest{0.0, 0.0, 1.0, true});
   VerletIntegrator verlet(s.model.params);
@@ -435,7 +436,7 @@ Snapshot run_threads(int threads, Integrator integ, int steps) {
   Scene s = dense_scene(20, 20, 14, r0, 0.05, 2.12 * r0, 0.15, 21, dt);  // 5600 particles
   s.model.params.time.integrator = integ;
   s.model.params.time.phi = 0.5;
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   for (int k = 0; k < steps; ++k) sim.advance(dt);
   return snapshot_of(sim);
 }
@@ -459,7 +460,7 @@ Snapshot run_selection(bool vector, Integrator integ, int steps) {
   Scene s = dense_scene(20, 20, 14, r0, 0.05, 2.12 * r0, 0.15, 21, dt);
   s.model.params.time.integrator = integ;
   s.model.params.time.phi = 0.5;
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   sim.interactions().particle_contacts().use_vector_select(vector);
   for (int k = 0; k < steps; ++k) sim.advance(dt);
   return snapshot_of(sim);

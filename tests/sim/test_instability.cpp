@@ -13,13 +13,15 @@ using namespace mpdem;
 
 namespace {
 std::string run_until_error(Scene& s, double dt, int steps) {
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
+  std::string msg;
   try {
     for (int k = 0; k < steps; ++k) sim.advance(dt);
   } catch (const RunError& e) {
-    return e.what();
+    msg = e.what();
   }
-  return "";
+  s.particles = sim.particles();  // the caller reads the end state
+  return msg;
 }
 }  // namespace
 

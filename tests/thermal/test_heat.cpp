@@ -87,11 +87,10 @@ void two_particle_relaxation(Integrator integ, double lambda_dt, double lambda_t
   Scene s = thermal_scene(1.0, integ);
   test::add_particle(s, 1, R1, {0.0, 0.0, 0.0});
   test::add_particle(s, 2, R2, {d, 0.0, 0.0});
-  Particles& p = s.particles;
   const double k1 = 2.0, k2 = 50.0, c1 = 800.0, c2 = 400.0;
-  p.conductivity = {k1, k2};
-  p.heat_capacity = {c1, c2};
-  p.T = {400.0, 300.0};
+  s.particles.conductivity = {k1, k2};
+  s.particles.heat_capacity = {c1, c2};
+  s.particles.T = {400.0, 300.0};
   inert(s, 0);
   inert(s, 1);
   // Closed form, computed here from the geometry (lens radius) and the masses.
@@ -104,7 +103,8 @@ void two_particle_relaxation(Integrator integ, double lambda_dt, double lambda_t
   const int steps = static_cast<int>(std::ceil(lambda_t_end / lambda_dt));
   s.model.params.time.dt = dt;
 
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
+  Particles& p = sim.particles();
   sim.initialize();
   const std::size_t i1 = p.id[0] == 1 ? 0 : 1, i2 = 1 - i1;  // initialize may reorder
   const double E0 = C1 * 400.0 + C2 * 300.0;
@@ -158,15 +158,15 @@ CoolingResult convective_cooling(double v_particle, double v_air, double h_expec
   test::add_particle(s, 1, R, {}, {v_particle, 0.0, 0.0});
   s.particles.heat_capacity[0] = c;
   s.particles.T[0] = T0;
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   sim.initialize();
-  const double E0 = s.particles.mass[0] * c * T0;
+  const double E0 = sim.particles().mass[0] * c * T0;
   CoolingResult r;
   for (int k = 0; k < 300; ++k) {  // 3 tau
     sim.advance(dt);
     const double exact = (T0 - Tair) * std::exp(-sim.time() / tau);
-    r.worst = std::max(r.worst, std::abs((s.particles.T[0] - Tair) / exact - 1.0));
-    const double E = thermal_energy(s.particles) + sim.interactions().stats().heat_convected;
+    r.worst = std::max(r.worst, std::abs((sim.particles().T[0] - Tair) / exact - 1.0));
+    const double E = thermal_energy(sim.particles()) + sim.interactions().stats().heat_convected;
     r.balance = std::max(r.balance, std::abs(E / E0 - 1.0));
   }
   return r;
@@ -219,13 +219,13 @@ TEST(Radiation, ClosedFormCooling) {
   s.particles.heat_capacity[0] = c;
   s.particles.emissivity[0] = eps;
   s.particles.T[0] = T0;
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   sim.initialize();
-  const double E0 = s.particles.mass[0] * c * T0;
+  const double E0 = sim.particles().mass[0] * c * T0;
   double worst = 0.0, worst_t = 0.0, balance = 0.0;
   for (int k = 0; k < 3000; ++k) {  // 30 s: from 1000 K down to ~ 510 K
     sim.advance(dt);
-    const double T = s.particles.T[0];
+    const double T = sim.particles().T[0];
     // Exact T at the simulated time, by bisection on the monotone t(T).
     double lo = Te * (1 + 1e-12), hi = T0;
     for (int it = 0; it < 200; ++it) {
@@ -235,14 +235,14 @@ TEST(Radiation, ClosedFormCooling) {
     const double exact = 0.5 * (lo + hi);
     worst = std::max(worst, std::abs((T - Te) / (exact - Te) - 1.0));  // relative to the excess over Te
     worst_t = std::max(worst_t, std::abs(radiation_time(T, T0, Te, scale) / sim.time() - 1.0));
-    balance = std::max(balance, std::abs((thermal_energy(s.particles) + sim.interactions().stats().heat_radiated) / E0 - 1.0));
+    balance = std::max(balance, std::abs((thermal_energy(sim.particles()) + sim.interactions().stats().heat_radiated) / E0 - 1.0));
   }
   EXPECT_LT(worst, 1e-3);
   EXPECT_LT(worst_t, 1e-3);
   EXPECT_LT(balance, 1e-12);
-  EXPECT_LT(s.particles.T[0], 550.0);  // it really cooled
+  EXPECT_LT(sim.particles().T[0], 550.0);  // it really cooled
   std::printf("radiation: T(30 s) = %.6f K, max rel. error of T - Te %.3g, of t(T) %.3g, balance %.3g\n",
-              s.particles.T[0], worst, worst_t, balance);
+              sim.particles().T[0], worst, worst_t, balance);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -269,16 +269,16 @@ TEST(Conduction, ParticleOnFixedTemperatureBarrier) {
   s.particles.heat_capacity[0] = c;
   s.particles.T[0] = T0;
   inert(s, 0);
-  Simulation sim(s, RunOptions{{}, false, false});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
   sim.initialize();
-  const double E0 = s.particles.mass[0] * c * T0;
+  const double E0 = sim.particles().mass[0] * c * T0;
   double worst = 0.0, balance = 0.0;
   for (int n = 0; n < 200; ++n) {  // lambda t = 4
     sim.advance(dt);
     const double exact = (T0 - Tb) * std::exp(-lambda * sim.time());
-    worst = std::max(worst, std::abs((s.particles.T[0] - Tb) / exact - 1.0));
+    worst = std::max(worst, std::abs((sim.particles().T[0] - Tb) / exact - 1.0));
     balance = std::max(balance,
-                       std::abs((thermal_energy(s.particles) + sim.interactions().stats().heat_to_barriers) / E0 - 1.0));
+                       std::abs((thermal_energy(sim.particles()) + sim.interactions().stats().heat_to_barriers) / E0 - 1.0));
   }
   EXPECT_EQ(sim.interactions().stats().contacts_pb, 1u);
   EXPECT_LT(worst, 1e-3);
@@ -328,7 +328,7 @@ Scene mechanical_scene(bool thermal, Integrator integ) {
 TEST(NoHeatFromNothing, UniformTemperatureStaysUniformAndMechanicsUnchanged) {
   for (Integrator integ : {Integrator::Trapezoidal, Integrator::Verlet}) {
     Scene on = mechanical_scene(true, integ), off = mechanical_scene(false, integ);
-    Simulation a(on, RunOptions{{}, false, false}), b(off, RunOptions{{}, false, false});
+    Simulation a(std::move(on), RunOptions{{}, false, false}), b(std::move(off), RunOptions{{}, false, false});
     std::size_t max_contacts = 0;
     for (int k = 0; k < 1200; ++k) {
       const StepReport ra = a.advance(5e-6), rb = b.advance(5e-6);
@@ -338,7 +338,7 @@ TEST(NoHeatFromNothing, UniformTemperatureStaysUniformAndMechanicsUnchanged) {
     EXPECT_GT(max_contacts, 9u);  // the scene really has contacts that conduct
     std::printf("uniform temperature (%s): up to %zu contacts, mechanics bitwise equal, T exactly uniform\n",
                 integ == Integrator::Verlet ? "verlet" : "trapezoidal", max_contacts);
-    const Particles &p = on.particles, &q = off.particles;
+    const Particles &p = a.particles(), &q = b.particles();
     ASSERT_EQ(p.size(), q.size());
     for (std::size_t i = 0; i < p.size(); ++i) {
       ASSERT_EQ(p.id[i], q.id[i]);

@@ -1,0 +1,18 @@
+#pragma once
+// StepPolicy: what an integrator needs from the interactions, declared by the integrator
+// (TrapezoidalIntegrator::policy, VerletIntegrator::policy) so that the interactions never ask
+// which integrator runs.
+namespace mpdem {
+
+struct StepPolicy {
+  // -, weight of the end-of-step tangential velocity in the spring increment (64).
+  double phi = 1.0;
+  // Keep each contact's step-start history (tangential velocity, relative rotation, the first
+  // iteration's stick/slip decisions): the trapezoidal rule's increment needs it.
+  bool step_start = false;
+  // -, weight of the end-of-step heat flows when the step's heat is booked (the start flows
+  // weigh 1 - heat_weight), matching how the integrator advances the temperatures.
+  double heat_weight = 0.0;
+};
+
+}  // namespace mpdem

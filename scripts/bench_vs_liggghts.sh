@@ -4,6 +4,8 @@
 # Usage: scripts/bench_vs_liggghts.sh [20k|100k] ...
 # Environment:
 #   MPDEM      mpdem executable with the `bench` subcommand (default: build/mpdem)
+#   MPDEM_OLD  a second (older) mpdem executable: run interleaved with MPDEM, same arguments, and
+#              reported beside it (new / old time per particle-step), for before/after measurements
 #   WORK       scratch folder for the decompressed beds and logs (default: build/bench-bed)
 #   RUNS       repetitions of every configuration, median reported (default 3, at least 3 advised)
 #   THREADS    thread / rank counts to run (default "1 2")
@@ -86,21 +88,27 @@ for bed in "${BEDS[@]}"; do
       echo "  liggghts np=$th run $r: ${secs} s timed, contacts/particle ${CONT[liggghts,$th]}"
 
       for integ in verlet trapezoidal; do
-        log="$WORK/mpdem_${bed}_${integ}_t${th}_r$r"
-        k=$steps; rx=$RELAX
-        [ "$integ" = trapezoidal ] && k=${TRAP_STEPS:-$steps} && rx=${TRAP_RELAX:-$RELAX}
-        OMP_PROC_BIND=close /usr/bin/time -v "$MPDEM" bench "$data" --integrator "$integ" --phi 0.5 --threads "$th" \
-          --steps "$k" --relax "$rx" > "$log.out" 2> "$log.time"
-        line=$(grep '^BENCH_RESULT' "$log.out")
-        SAMPLES[$integ,$th]+=" $(echo "$line" | field ns_per_pstep)"
-        MEMS[$integ,$th]+=" $(peak_kib "$log.time")"
-        CONT[$integ,$th]=$(echo "$line" | field coordination)
-        REB[$integ,$th]=$(echo "$line" | field rebuilds)
-        EVAL[$integ,$th]=$(echo "$line" | field evals_per_step)
-        echo "  mpdem $integ threads=$th run $r: $(echo "$line" | field ns_per_pstep) ns/particle-step, contacts/particle ${CONT[$integ,$th]}, rebuilds ${REB[$integ,$th]}"
+        for which in new old; do
+          exe=$MPDEM; code=$integ
+          if [ "$which" = old ]; then [ -n "${MPDEM_OLD:-}" ] || continue; exe=$MPDEM_OLD; code=old_$integ; fi
+          log="$WORK/mpdem_${bed}_${code}_t${th}_r$r"
+          k=$steps; rx=$RELAX
+          [ "$integ" = trapezoidal ] && k=${TRAP_STEPS:-$steps} && rx=${TRAP_RELAX:-$RELAX}
+          OMP_PROC_BIND=close /usr/bin/time -v "$exe" bench "$data" --integrator "$integ" --phi 0.5 --threads "$th" \
+            --steps "$k" --relax "$rx" > "$log.out" 2> "$log.time"
+          line=$(grep '^BENCH_RESULT' "$log.out")
+          SAMPLES[$code,$th]+=" $(echo "$line" | field ns_per_pstep)"
+          MEMS[$code,$th]+=" $(peak_kib "$log.time")"
+          CONT[$code,$th]=$(echo "$line" | field coordination)
+          REB[$code,$th]=$(echo "$line" | field rebuilds)
+          EVAL[$code,$th]=$(echo "$line" | field evals_per_step)
+          echo "  mpdem $code threads=$th run $r: $(echo "$line" | field ns_per_pstep) ns/particle-step, contacts/particle ${CONT[$code,$th]}, rebuilds ${REB[$code,$th]}"
+        done
       done
     done
-    for code in liggghts verlet trapezoidal; do
+    CODES="liggghts verlet trapezoidal"
+    [ -n "${MPDEM_OLD:-}" ] && CODES="liggghts verlet old_verlet trapezoidal old_trapezoidal"
+    for code in $CODES; do
       NS[$code,$th]=$(echo "${SAMPLES[$code,$th]}" | median)
       RSS[$code,$th]=$(echo "${MEMS[$code,$th]}" | median)
     done
@@ -112,12 +120,14 @@ for bed in "${BEDS[@]}"; do
     evals rebuilds contacts/p "RSS MiB" "mpdem/LIGGGHTS"
   printf '|%s|\n' "------------------------|---------|-----------|--------------|--------|----------|-----------|----------|----------------"
   for th in $THREADS; do
-    for code in liggghts verlet trapezoidal; do
+    for code in $CODES; do
       ns=${NS[$code,$th]}
       ratio=$(awk -v a="$ns" -v b="${NS[liggghts,$th]}" 'BEGIN {printf "%.2f", a / b}')
       [ "$code" = liggghts ] && ratio="1"
       label=$code; [ "$code" = liggghts ] && label="LIGGGHTS 3.8 (MPI)"; [ "$code" = verlet ] && label="mpdem verlet"
       [ "$code" = trapezoidal ] && label="mpdem trapezoidal 0.5"
+      [ "$code" = old_verlet ] && label="old mpdem verlet"
+      [ "$code" = old_trapezoidal ] && label="old mpdem trapezoidal"
       printf '| %-22s | %7s | %9.1f | %12.3g | %6.2f | %8s | %9.4f | %8.1f | %14s |\n' "$label" "$th" "$ns" \
         "$(awk -v x="$ns" 'BEGIN {print 1e9 / x}')" "${EVAL[$code,$th]}" "${REB[$code,$th]}" "${CONT[$code,$th]}" \
         "$(awk -v k="${RSS[$code,$th]}" 'BEGIN {print k / 1024}')" "$ratio"
@@ -141,6 +151,15 @@ for bed in "${BEDS[@]}"; do
     awk -v m="${RSS[verlet,$th]}" -v l="${RSS[liggghts,$th]}" -v th="$th" 'BEGIN {
       printf "target memory, %s thread(s): mpdem %.1f MiB vs LIGGGHTS %.1f MiB: %s\n", th, m / 1024, l / 1024, (m <= l ? "met" : "NOT met") }'
   done
+  # Before/after: the new binary's time per particle-step relative to the old one's (medians).
+  if [ -n "${MPDEM_OLD:-}" ]; then
+    for th in $THREADS; do
+      for integ in verlet trapezoidal; do
+        awk -v a="${NS[$integ,$th]}" -v b="${NS[old_$integ,$th]}" -v th="$th" -v i="$integ" 'BEGIN {
+          printf "new vs old, %s, %s thread(s): %.1f vs %.1f ns/particle-step, %+.1f%%\n", i, th, a, b, 100 * (a / b - 1) }'
+      done
+    done
+  fi
   set -- $THREADS
   if [ $# -ge 2 ]; then
     awk -v a="${NS[verlet,$1]}" -v b="${NS[verlet,$2]}" -v la="${NS[liggghts,$1]}" -v lb="${NS[liggghts,$2]}"       -v t1="$1" -v t2="$2" 'BEGIN {

@@ -69,12 +69,7 @@ void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
   for (const LammpsAtom& at : d.atoms) {
     p.add(at.id, 0, 0.5 * at.diameter, at.density, at.x, Vec3{});
     const std::size_t i = p.size() - 1;
-    p.young[i] = m.young;
-    p.poisson[i] = m.poisson;
     p.charge[i] = 0.0;
-    p.heat_capacity[i] = m.heat_capacity;
-    p.conductivity[i] = m.conductivity;
-    p.emissivity[i] = m.emissivity;
     p.T[i] = m.temperature;
   }
 

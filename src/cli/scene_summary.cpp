@@ -30,11 +30,12 @@ TimeStepAdvice time_step_advice(const Scene& scene) {
   for (std::size_t e = 0; e < b.size(); ++e)
     if (b.young[e] > stiffest_barrier) { stiffest_barrier = b.young[e]; stiffest_nu = b.poisson[e]; }
   for (std::size_t i = 0; i < p.size(); ++i) {
-    a.rayleigh = std::min(a.rayleigh, rayleigh_time(p.radius[i], p.density[i], p.young[i], p.poisson[i]));
-    const double Epp = effective_young(p.young[i], p.poisson[i], p.young[i], p.poisson[i]);
+    const Material& m = scene.model.materials[static_cast<std::size_t>(p.material[i])];
+    a.rayleigh = std::min(a.rayleigh, rayleigh_time(p.radius[i], m.density, m.young, m.poisson));
+    const double Epp = effective_young(m.young, m.poisson, m.young, m.poisson);
     a.hertz_pp = std::min(a.hertz_pp, hertz_contact_time(0.5 * p.mass[i], Epp, 0.5 * p.radius[i], a.reference_speed));
     if (stiffest_barrier > 0.0) {
-      const double Epb = effective_young(p.young[i], p.poisson[i], stiffest_barrier, stiffest_nu);
+      const double Epb = effective_young(m.young, m.poisson, stiffest_barrier, stiffest_nu);
       hertz_pb = std::min(hertz_pb, hertz_contact_time(p.mass[i], Epb, p.radius[i], a.reference_speed));
     }
   }

@@ -23,7 +23,6 @@ void add_generated_particles(const GenerateSpec& spec, const Model& model, int d
     out.force[i] = Vec3{};
     out.torque[i] = Vec3{};
     out.heat[i] = 0.0;
-    out.update_mass(i);
   }
 }
 

@@ -18,13 +18,14 @@ void TrapezoidalIntegrator::save_start(const Particles& p) {
   x0_.resize(n); v0_.resize(n); w0_.resize(n); a0_.resize(n); b0_.resize(n);
   q0_.resize(n); T0_.resize(n); h0_.resize(n); alpha_.resize(n);
   force0_.resize(n); torque0_.resize(n); heat0_.resize(n);
+  const bool thermal = params_.analysis.thermal;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
     x0_[i] = p.x[i]; v0_[i] = p.v[i]; w0_[i] = p.w[i]; q0_[i] = p.q[i]; T0_[i] = p.T[i];
     force0_[i] = p.force[i]; torque0_[i] = p.torque[i]; heat0_[i] = p.heat[i];
     a0_[i] = p.force[i] / p.mass[i];
     b0_[i] = p.torque[i] / p.inertia[i];
-    h0_[i] = p.heat[i] / (p.mass[i] * p.heat_capacity[i]);
+    h0_[i] = thermal ? heating_rate(p, i) : 0.0;
   }
 }
 
@@ -109,7 +110,7 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
       p.w[i] = w;
       alpha_[i] = alpha;  // q follows once, after convergence: no force law reads it
     }
-    const double h1 = predictor ? h0_[i] : p.heat[i] / (p.mass[i] * p.heat_capacity[i]);
+    const double h1 = predictor || !thermal ? h0_[i] : heating_rate(p, i);
     const double T = thermal ? T0_[i] + dt * ((1.0 - phi) * h0_[i] + phi * h1) : T0_[i];
     add(s, kTemperature, (T - p.T[i]) * (T - p.T[i]), (T - T0_[i]) * (T - T0_[i]), (T - Tp_[i]) * (T - Tp_[i]), T * T);
     Tp_[i] = p.T[i];

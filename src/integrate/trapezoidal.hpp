@@ -10,13 +10,15 @@
 #include "integrate/step_policy.hpp"
 #include "integrate/step_report.hpp"
 #include "model/params.hpp"
+#include "model/scene.hpp"
 #include "sim/interactions.hpp"
 
 namespace mpdem {
 
 class TrapezoidalIntegrator {
  public:
-  explicit TrapezoidalIntegrator(const Params& params) : params_(params) {}
+  // The model's parameters, and its materials' heat capacities (looked up every step).
+  explicit TrapezoidalIntegrator(const Model& model) : model_(model), params_(model.params) {}
   // The spring increment (64) and the booked heat flows weigh the step's end by phi, like the
   // state update; the increment needs each contact's step-start history.
   static StepPolicy policy(const Params& params) { return {params.time.phi, true, params.time.phi}; }
@@ -44,6 +46,11 @@ class TrapezoidalIntegrator {
   void restore_start(Particles& p) const;
   void accept_midpoint(Particles& p);          // y <- (y_K + y_(K-1)) / 2
 
+  // K/s, dT/dt = heat / (m c) of particle i, c of its material.
+  double heating_rate(const Particles& p, std::size_t i) const {
+    return p.heat[i] / (p.mass[i] * model_.materials[static_cast<std::size_t>(p.material[i])].heat_capacity);
+  }
+  const Model& model_;
   const Params& params_;
   // Start-of-step state and rates [N]
   std::vector<Vec3> x0_, v0_, w0_, a0_, b0_;   // m, m/s, rad/s, m/s^2, rad/s^2

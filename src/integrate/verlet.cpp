@@ -76,7 +76,8 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
     kick_drift<false>(p, dt);
   if (thermal) {
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-    for (std::size_t i = 0; i < n; ++i) p.T[i] += dt * p.heat[i] / (p.mass[i] * p.heat_capacity[i]);
+    for (std::size_t i = 0; i < n; ++i)
+      p.T[i] += dt * p.heat[i] / (p.mass[i] * model_.materials[static_cast<std::size_t>(p.material[i])].heat_capacity);
   }
   f.evaluate(p, b, EvalRequest{t + dt, dt, policy().phi, true});
   // Second kick, with the health scan of the end state in the same pass (sim/state_scan.hpp).

@@ -8,13 +8,15 @@
 #include "integrate/step_policy.hpp"
 #include "integrate/step_report.hpp"
 #include "model/params.hpp"
+#include "model/scene.hpp"
 #include "sim/interactions.hpp"
 
 namespace mpdem {
 
 class VerletIntegrator {
  public:
-  explicit VerletIntegrator(const Params& params) : params_(params) {}
+  // The model's parameters, and its materials' heat capacities (looked up every step).
+  explicit VerletIntegrator(const Model& model) : model_(model), params_(model.params) {}
   // One commit evaluation per step: the spring increment takes the evaluated velocity (phi = 1),
   // no step-start history; temperatures advance with the start flows only (explicit Euler).
   static StepPolicy policy() { return {1.0, false, 0.0}; }
@@ -22,6 +24,7 @@ class VerletIntegrator {
   StepReport step(Particles& p, Barriers& b, Interactions& f, double t, double dt);
 
  private:
+  const Model& model_;
   const Params& params_;
 };
 

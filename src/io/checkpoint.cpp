@@ -22,12 +22,6 @@ namespace {
 // (session 2). Older files are refused with a message that says so.
 constexpr char kMagic[8] = {'M', 'P', 'D', 'E', 'M', 'C', 'K', '2'};
 
-template <class F>
-void for_each_particle_array(Particles& p, F&& f) {
-  f(p.id); f(p.material); f(p.radius); f(p.density); f(p.mass); f(p.inertia); f(p.young); f(p.poisson);
-  f(p.charge); f(p.heat_capacity); f(p.conductivity); f(p.emissivity); f(p.x); f(p.v); f(p.w); f(p.q); f(p.T);
-  f(p.force); f(p.torque); f(p.heat);
-}
 }  // namespace
 
 void Simulation::write_checkpoint(const std::filesystem::path& file) {
@@ -44,7 +38,7 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
   w.value(last_balance_);
   w.value(last_active_);
   w.value(energy_checked_);
-  for_each_particle_array(scene_.particles, [&](auto& a) { w.vector(a); });
+  scene_.particles.for_each_array([&](const char*, auto& a) { w.vector(a); });
   interactions_->save(w, scene_.particles);
   w.value<bool>(output_ != nullptr);
   if (output_) output_->save(w);  // last: resume_from hands the rest to the OutputManager
@@ -79,10 +73,10 @@ void Simulation::resume_from(const std::filesystem::path& file) {
     last_active_ = r.value<double>();
     energy_checked_ = r.value<bool>();
     Particles& p = scene_.particles;
-    for_each_particle_array(p, [&](auto& a) { a = r.template vector<typename std::decay_t<decltype(a)>::value_type>(); });
+    p.for_each_array([&](const char*, auto& a) { a = r.template vector<typename std::decay_t<decltype(a)>::value_type>(); });
     const std::size_t n = p.id.size();
     bool sizes_ok = true;
-    for_each_particle_array(p, [&](auto& a) { sizes_ok = sizes_ok && a.size() == n; });
+    p.for_each_array([&](const char*, auto& a) { sizes_ok = sizes_ok && a.size() == n; });
     if (!sizes_ok) throw std::runtime_error("particle arrays of different lengths");
     scene_.barriers.move_to(time_);
     interactions_->restore(r, p, scene_.barriers);

@@ -164,7 +164,7 @@ void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const 
     row.push_back(s.heat_to_barriers);
     row.push_back(s.heat_convected);
     row.push_back(s.heat_radiated);
-    row.push_back(thermal_energy(p));
+    row.push_back(thermal_energy(model_, p));
   }
   log_->row(row);
 }

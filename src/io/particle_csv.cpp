@@ -10,6 +10,7 @@
 
 #include "io/csv_table.hpp"
 #include "io/input_error.hpp"
+#include "model/material_variants.hpp"
 
 namespace mpdem {
 
@@ -54,7 +55,7 @@ double value_or(const CsvTable& t, const CsvRow& row, int col, double fallback) 
 
 }  // namespace
 
-void read_particle_csv(const std::filesystem::path& file, const Model& model, int default_material,
+void read_particle_csv(const std::filesystem::path& file, Model& model, int default_material,
                        Particles& out) {
   const CsvTable t = CsvTable::read(file);
   t.check_known(kColumns);
@@ -63,6 +64,7 @@ void read_particle_csv(const std::filesystem::path& file, const Model& model, in
     throw InputError(t.file(), 0, "", "no [[material]] is defined, so particles have no default properties");
   if (default_material < 0 || default_material >= static_cast<int>(model.materials.size())) default_material = 0;
   const Cols c(t);
+  MaterialVariants variants(model, t.file());
 
   // Ids must be unique across all files; rows without one continue after the largest seen.
   std::unordered_map<std::int64_t, std::size_t> seen;  // id -> line in this file (0 = earlier file)
@@ -74,7 +76,7 @@ void read_particle_csv(const std::filesystem::path& file, const Model& model, in
 
   for (const CsvRow& row : t.rows()) {
     const int mat = row_material(t, row, c.material, model, default_material);
-    const Material& m = model.materials[mat];
+    const Material m = model.materials[mat];  // a copy: variants.find may add materials
     std::int64_t pid = next_id;
     if (!t.missing(row, c.id)) {
       pid = t.integer(row, c.id);
@@ -102,21 +104,19 @@ void read_particle_csv(const std::filesystem::path& file, const Model& model, in
 
     const Vec3 pos{t.number(row, c.x), t.number(row, c.y), t.number(row, c.z)};
     const Vec3 vel{value_or(t, row, c.vx, 0.0), value_or(t, row, c.vy, 0.0), value_or(t, row, c.vz, 0.0)};
-    out.add(pid, mat, r, rho, pos, vel);
+    // The row's own constants, where it gives any, make a variant of its material.
+    Material own = m;
+    own.density = rho, own.young = E, own.poisson = nu, own.heat_capacity = cap, own.conductivity = k;
+    own.emissivity = eps;
+    out.add(pid, variants.find(mat, own), r, rho, pos, vel);
     const std::size_t i = out.size() - 1;
     out.w[i] = {value_or(t, row, c.wx, 0.0), value_or(t, row, c.wy, 0.0), value_or(t, row, c.wz, 0.0)};
-    out.young[i] = E;
-    out.poisson[i] = nu;
     out.charge[i] = q;
-    out.heat_capacity[i] = cap;
-    out.conductivity[i] = k;
-    out.emissivity[i] = eps;
     out.T[i] = T;
     out.q[i] = Quat{};
     out.force[i] = Vec3{};
     out.torque[i] = Vec3{};
     out.heat[i] = 0.0;
-    out.update_mass(i);
   }
 }
 

@@ -5,6 +5,10 @@
 // named "<material>#<k>", Material::variant_of set), so that the contact tables, indexed by
 // material, see the row's own values. [[contact.pair]] entries naming a material apply to its
 // variants too.
+#include <map>
+#include <string>
+#include <tuple>
+
 #include "model/scene.hpp"
 
 namespace mpdem {
@@ -12,9 +16,27 @@ namespace mpdem {
 // At most this many materials after variants are made: the contact tables grow with its square.
 inline constexpr std::size_t kMaxMaterials = 256;
 
-// Points every particle and element at a material whose constants are its own, adding variants
-// (and, for particles or elements without any material, a material made from their values).
-// Throws InputError (naming `source`) when more than kMaxMaterials would be needed.
+// Finds or makes the materials with given constants among a material and its variants.
+class MaterialVariants {
+ public:
+  // `source` names the input in the message when more than kMaxMaterials would be needed.
+  MaterialVariants(Model& model, std::string source);
+  // The index of the material with `wanted`'s constants among `current` (an index of the model,
+  // or -1: none) and its variants; a new variant (or, for -1, a new material) when none has them.
+  // Throws InputError when the model would exceed kMaxMaterials.
+  int find(int current, const Material& wanted);
+
+ private:
+  using Key = std::tuple<int, double, double, double, double, double, double>;  // base, constants
+  static Key key_of(int base, const Material& m);
+  Model& model_;
+  std::string source_;
+  std::map<Key, int> known_;
+};
+
+// Points every barrier element at a material whose E and nu are its own (Barriers::young,
+// poisson: the barrier CSV's per-row values or the source's material), adding variants, and
+// checks that every particle has a material of the model (particles get theirs when read).
 void resolve_material_variants(Model& model, Particles& particles, Barriers& barriers, const std::string& source);
 
 }  // namespace mpdem

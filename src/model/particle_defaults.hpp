@@ -1,5 +1,5 @@
 #pragma once
-// The properties a particle takes from its material when its input does not give them.
+// The per-particle values a particle takes from its material when its input does not give them.
 #include <cstddef>
 
 #include "model/material.hpp"
@@ -7,14 +7,10 @@
 
 namespace mpdem {
 
-// Sets particle i's density-independent material properties and initial temperature from m.
+// Sets particle i's default charge and initial temperature from its material m (the material's
+// constants are looked up through the particle's material index, not copied).
 inline void take_material_properties(Particles& p, std::size_t i, const Material& m) {
-  p.young[i] = m.young;
-  p.poisson[i] = m.poisson;
   p.charge[i] = m.charge;
-  p.heat_capacity[i] = m.heat_capacity;
-  p.conductivity[i] = m.conductivity;
-  p.emissivity[i] = m.emissivity;
   p.T[i] = m.temperature;
 }
 

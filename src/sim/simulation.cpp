@@ -36,7 +36,7 @@ Simulation::Simulation(Scene&& scene, RunOptions options)
     : scene_(std::move(with_materials_by_index(scene))), options_(std::move(options)),
       interactions_(std::make_unique<Interactions>(scene_.model, scene_.particles, scene_.barriers,
                                                    integrator_policy(scene_.model.params))),
-      trapezoidal_(scene_.model.params), verlet_(scene_.model.params), dt_(scene_.model.params.time.dt) {}
+      trapezoidal_(scene_.model), verlet_(scene_.model), dt_(scene_.model.params.time.dt) {}
 
 Simulation::~Simulation() = default;
 

@@ -1,8 +1,10 @@
 #pragma once
 // Particles as structure-of-arrays: one contiguous array per quantity, index i is one sphere.
-// Constant properties (set at load, reordered with the particles) come first, then the mutable
+// Per-particle constants (set at load, reordered with the particles) come first, then the mutable
 // state the integrators advance, then the accumulators the interactions fill each evaluation.
-// Ids are stable user ids; the array index may change when particles are reordered or removed.
+// Material constants (density, E, nu, heat capacity, conductivity, emissivity) are not here: they
+// are looked up through `material` in Model::materials. Ids are stable user ids; the array index
+// may change when particles are reordered or removed.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -17,15 +19,9 @@ struct Particles {
   std::vector<std::int64_t> id;        // user id, unique
   std::vector<int> material;           // index into Model::materials
   std::vector<double> radius;          // m
-  std::vector<double> density;         // kg/m^3
-  std::vector<double> mass;            // kg, 4/3 pi R^3 rho
+  std::vector<double> mass;            // kg, 4/3 pi R^3 rho (rho of the material at load)
   std::vector<double> inertia;         // kg m^2, 2/5 m R^2   (32)
-  std::vector<double> young;           // Pa
-  std::vector<double> poisson;         // -
   std::vector<double> charge;          // C
-  std::vector<double> heat_capacity;   // J/(kg K)
-  std::vector<double> conductivity;    // W/(m K)
-  std::vector<double> emissivity;      // -
   // --- state [N] ---
   std::vector<Vec3> x;                 // m, centre
   std::vector<Vec3> v;                 // m/s, velocity
@@ -40,14 +36,24 @@ struct Particles {
   std::size_t size() const { return id.size(); }
   void resize(std::size_t n);
   void reserve(std::size_t n);  // capacity for n particles, so add() does not over-allocate
-  // Appends one particle; derived mass and inertia are computed from radius and density.
+  // Appends one particle; mass and inertia are computed from its radius and the density rho.
   void add(std::int64_t pid, int mat, double r, double rho, const Vec3& pos, const Vec3& vel);
-  // Recomputes mass and inertia of particle i from its radius and density.
-  void update_mass(std::size_t i);
+  // Sets mass and inertia of particle i from its radius and the density rho (kg/m^3).
+  void update_mass(std::size_t i, double rho);
   // Reorders every array: new index k holds old particle order[k].
   void permute(const std::vector<std::uint32_t>& order);
   // Keeps particles whose keep[i] is true, in order.
   void compact(const std::vector<char>& keep);
+
+  // f(name, array) for every per-particle array: the one list that resizing, reordering,
+  // removal, checkpoints (one section per array, by name) and later MPI packing use, so that an
+  // array added here cannot be forgotten by any of them.
+  template <class F>
+  void for_each_array(F&& f) {
+    f("id", id); f("material", material); f("radius", radius); f("mass", mass); f("inertia", inertia);
+    f("charge", charge); f("x", x); f("v", v); f("w", w); f("q", q); f("T", T);
+    f("force", force); f("torque", torque); f("heat", heat);
+  }
 };
 
 }  // namespace mpdem

@@ -12,15 +12,15 @@
 
 namespace mpdem {
 
-double thermal_energy(const Particles& p) {
+double thermal_energy(const Model& model, const Particles& p) {
   return deterministic_sums<1>(p.size(), [&](std::size_t i, std::array<double, 1>& acc) {
-    acc[0] += p.mass[i] * p.heat_capacity[i] * p.T[i];
+    acc[0] += p.mass[i] * model.materials[static_cast<std::size_t>(p.material[i])].heat_capacity * p.T[i];
   })[0];
 }
 
 double barrier_conduction_distance(double R, double overlap) { return std::max(R - overlap, 1e-3 * R); }
 
-HeatTransfer::HeatTransfer(const Model& model, const Barriers& b) : prm_(model.params.thermal) {
+HeatTransfer::HeatTransfer(const Model& model, const Barriers& b) : model_(model), prm_(model.params.thermal) {
   const bool fixed = std::any_of(b.temperature.begin(), b.temperature.end(), [](double t) { return std::isfinite(t); });
   barrier_heat_ = prm_.conduction && fixed;
   if (barrier_heat_) topo_ = BarrierTopology::build(b);
@@ -45,7 +45,7 @@ HeatFlows HeatTransfer::evaluate(Particles& p, const Barriers& b, const Neighbor
           continue;
         }
         const double A = contact_area_pair(d, p.radius[i], p.radius[j]);           // (89)
-        const double K = pair_conductivity(p.conductivity[i], p.conductivity[j]);
+        const double K = pair_conductivity(material(p, i).conductivity, material(p, j).conductivity);
         pair_heat_[k] = conduction_heat(K, A, d, p.T[i], p.T[j]);                  // (88)
       }
     }
@@ -69,7 +69,7 @@ HeatFlows HeatTransfer::evaluate(Particles& p, const Barriers& b, const Neighbor
         if (!std::isfinite(Tb)) continue;  // insulated element
         const double R = p.radius[i];
         const double A = contact_area_plane(R, c.overlap);
-        const double qb = conduction_heat(p.conductivity[i], A, barrier_conduction_distance(R, c.overlap), p.T[i], Tb);
+        const double qb = conduction_heat(material(p, i).conductivity, A, barrier_conduction_distance(R, c.overlap), p.T[i], Tb);
         q += qb;
         acc[0] += qb;
       }
@@ -82,7 +82,7 @@ HeatFlows HeatTransfer::evaluate(Particles& p, const Barriers& b, const Neighbor
       acc[1] += qc;
     }
     if (radiation) {
-      const double qr = radiation_heat(p.emissivity[i], p.radius[i], prm_.environment_temperature, p.T[i]);  // (95)
+      const double qr = radiation_heat(material(p, i).emissivity, p.radius[i], prm_.environment_temperature, p.T[i]);  // (95)
       q += qr;
       acc[2] += qr;
     }

@@ -38,6 +38,10 @@ class HeatTransfer {
   std::uint64_t clamped_evaluations() const { return clamped_; }
 
  private:
+  const Material& material(const Particles& p, std::size_t i) const {
+    return model_.materials[static_cast<std::size_t>(p.material[i])];
+  }
+  const Model& model_;             // conductivity and emissivity by material
   ThermalParams prm_;
   bool barrier_heat_ = false;      // conduction on and some barrier has a fixed temperature
   BarrierTopology topo_;
@@ -45,8 +49,9 @@ class HeatTransfer {
   std::uint64_t clamped_ = 0;
 };
 
-// Stored thermal energy sum m c T of the particles [J] (lumped, constant c), thread-count independent.
-double thermal_energy(const Particles& p);
+// Stored thermal energy sum m c T of the particles [J] (lumped, c of each particle's material),
+// thread-count independent.
+double thermal_energy(const Model& model, const Particles& p);
 
 // Barrier conduction path length d_b = R - overlap (centre to the cutting plane), kept above
 // 1e-3 R so a centre pushed onto the plane does not give an infinite flow.   [m]

@@ -26,7 +26,8 @@ LineSamples run_on_line(Scene& scene, const Vec3& axis, std::optional<LineWall> 
   std::vector<LineSphere> spheres;
   for (std::size_t i : order) {
     s.ids.push_back(p0.id[i]);
-    spheres.push_back({dot(p0.x[i], axis), dot(p0.v[i], axis), p0.mass[i], p0.radius[i], p0.young[i], p0.poisson[i]});
+    const Material& m = scene.model.materials[static_cast<std::size_t>(p0.material[i])];
+    spheres.push_back({dot(p0.x[i], axis), dot(p0.v[i], axis), p0.mass[i], p0.radius[i], m.young, m.poisson});
   }
   for (std::size_t a = 0; a < spheres.size(); ++a) {
     if (wall) s.impact_speed = std::max(s.impact_speed, std::abs(spheres[a].v));

@@ -141,10 +141,8 @@ CaseResult chain(const CaseContext& ctx) {
   for (std::size_t m = 0; m < base.model.materials.size(); ++m) {
     const Material& mat = base.model.materials[m];
     Scene s = base;
-    for (std::size_t i = 0; i < s.particles.size(); ++i) {
-      s.particles.young[i] = mat.young;
-      s.particles.poisson[i] = mat.poisson;
-    }
+    // Every sphere of material m (its E and nu; the masses stay those of the loaded scene).
+    for (int& mi : s.particles.material) mi = static_cast<int>(m);
     // Contact time ~ E^(-2/5): keep the same steps per contact for every modulus.
     const double scale = std::pow(mat.young / E1, -0.4);
     s.model.params.time.dt *= scale;

@@ -14,8 +14,12 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+// The material of particle i
+const Material& material_of(const Scene& s, std::size_t i) {
+  return s.model.materials[static_cast<std::size_t>(s.particles.material[i])];
+}
 // Heat capacity m c of particle i   [J/K]
-double capacity(const Particles& p, std::size_t i) { return p.mass[i] * p.heat_capacity[i]; }
+double capacity(const Scene& s, std::size_t i) { return s.particles.mass[i] * material_of(s, i).heat_capacity; }
 
 // Two touching spheres: T1 - T2 = (T1 - T2)(0) exp(-G (1/C1 + 1/C2) t), G = K A / d with the lens
 // area A (89), the harmonic-mean conductivity K and the centre distance d (90), towards the
@@ -28,8 +32,9 @@ CaseResult thermal_contact(const CaseContext& ctx) {
   const double R1 = p0.radius[0], R2 = p0.radius[1], d = norm(p0.x[0] - p0.x[1]);
   const double xc = (d * d + R1 * R1 - R2 * R2) / (2.0 * d);
   const double A = kPi * (R1 * R1 - xc * xc);                                           // m^2, (89)
-  const double K = 2.0 * p0.conductivity[0] * p0.conductivity[1] / (p0.conductivity[0] + p0.conductivity[1]);
-  const double C1 = capacity(p0, 0), C2 = capacity(p0, 1);
+  const double k1 = material_of(scene, 0).conductivity, k2 = material_of(scene, 1).conductivity;
+  const double K = 2.0 * k1 * k2 / (k1 + k2);
+  const double C1 = capacity(scene, 0), C2 = capacity(scene, 1);
   const double lambda = K * A / d * (1.0 / C1 + 1.0 / C2);                              // 1/s
   const double T10 = p0.T[0], T20 = p0.T[1], Tm = (C1 * T10 + C2 * T20) / (C1 + C2);
   auto exact = [&](double T0, double t) { return Tm + (T0 - Tm) * std::exp(-lambda * t); };
@@ -80,7 +85,7 @@ CaseResult wind_cooling(const CaseContext& ctx) {
   for (std::size_t i = 0; i < n; ++i) {
     ids[i] = p0.id[i];
     speed[i] = norm(p0.v[i] - th.air_velocity);
-    tau[i] = capacity(p0, i) / (h_fit(speed[i]) * 4.0 * kPi * p0.radius[i] * p0.radius[i]);
+    tau[i] = capacity(scene, i) / (h_fit(speed[i]) * 4.0 * kPi * p0.radius[i] * p0.radius[i]);
     T0[i] = p0.T[i];
   }
   const double Tair = th.air_temperature;

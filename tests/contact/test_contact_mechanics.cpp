@@ -86,8 +86,7 @@ ImpactResult head_on(Integrator integ, double v, double e, double steps_per_tc, 
   const double gap = 3.3 * v * dt;  // contact starts within a few steps
   test::add_particle(s, 1, kR, {-kR - 0.5 * gap, 0.0, 0.0}, {0.5 * v, 0.0, 0.0});
   const std::size_t second = test::add_particle(s, 2, kR, {kR + 0.5 * gap, 0.0, 0.0}, {-0.5 * v, 0.0, 0.0});
-  s.particles.young[second] = E2;
-  s.particles.poisson[second] = nu2;
+  if (E2 != kE || nu2 != kNu) test::give_own_material(s, second, E2, nu2);
   Simulation sim(std::move(s), RunOptions{{}, false, false});
   Particles& p = sim.particles();
   const Vec3 P0 = test::momentum(p);
@@ -380,8 +379,7 @@ TEST(MixedMaterials, OneMaterialPathEqualsTheGeneralPath) {
     Scene sa = cluster(integ, dt, identity(n), ids);
     Scene sb = cluster(integ, dt, identity(n), ids);
     const std::size_t far = test::add_particle(sb, 99, kR, {1.0, 1.0, 1.0});
-    sb.particles.young[far] = 3.0 * kE;
-    sb.particles.poisson[far] = 0.25;
+    test::give_own_material(sb, far, 3.0 * kE, 0.25);
     Simulation A(std::move(sa), RunOptions{{}, false, false}), B(std::move(sb), RunOptions{{}, false, false});
     for (int k = 0; k < 800; ++k) {
       A.advance(dt);

@@ -396,7 +396,7 @@ generate = { region = "cylinder", base = [1, 0, 0], axis = [0, 0, 0.1], cylinder
   ASSERT_GT(sc.particles.size(), 500u);
   for (std::size_t i = 0; i < 500; ++i) {
     EXPECT_EQ(sc.particles.material[i], 1);
-    EXPECT_EQ(sc.particles.young[i], 2e11);
+    EXPECT_EQ(sc.model.materials[sc.particles.material[i]].young, 2e11);
     EXPECT_EQ(sc.particles.v[i], (Vec3{0, 0, -1}));
     EXPECT_GE(sc.particles.radius[i], 0.001);
     EXPECT_LE(sc.particles.radius[i], 0.0015);

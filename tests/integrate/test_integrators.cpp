@@ -162,7 +162,7 @@ TEST(Trapezoidal, ContactOnsetWithTinyStepsConverges) {
   s.model.params.tolerance.velocity = s.model.params.tolerance.position = 1e-6;
   test::add_particle(s, 1, 0.005, {0.0, 0, 0});
   test::add_particle(s, 2, 0.005, {0.0205, 0, 0}, {-1.5, 0, 0});
-  for (std::size_t i = 0; i < 2; ++i) s.particles.young[i] = 1e8;
+  s.model.materials[0].young = 1e8;  // both spheres
   Simulation sim(std::move(s), RunOptions{{}, false, false});
   int cycles = 0;
   for (int k = 0; k < 40000; ++k) cycles += sim.advance(dt).two_cycle ? 1 : 0;

@@ -106,7 +106,7 @@ Model one_material() {
 // line and the `id` column; the largest accepted id is INT64_MAX - 1.
 TEST(FuzzRegressions, ParticleIdAtInt64MaxIsRejected) {
   TempDir d("mpdem_fuzzreg");
-  const Model model = one_material();
+  Model model = one_material();
   const fs::path f = d.write("p.csv", "id,x,y,z,radius\n9223372036854775807,0,0,0,0.01\n");
   Particles out;
   expect_input_error([&] { read_particle_csv(f, model, 0, out); }, f, "particle id INT64_MAX");
@@ -121,7 +121,7 @@ TEST(FuzzRegressions, ParticleIdAtInt64MaxIsRejected) {
 // A row without id after id INT64_MAX - 1 would be given INT64_MAX: rejected the same way.
 TEST(FuzzRegressions, ParticleNextFreeIdPastInt64MaxIsRejected) {
   TempDir d("mpdem_fuzzreg");
-  const Model model = one_material();
+  Model model = one_material();
   const fs::path f = d.write("p.csv", "id,x,y,z,radius\n9223372036854775806,0,0,0,0.01\n,1,0,0,0.01\n");
   Particles out;
   expect_input_error([&] { read_particle_csv(f, model, 0, out); }, f, "implicit id INT64_MAX");
@@ -132,7 +132,7 @@ TEST(FuzzRegressions, ParticleNextFreeIdPastInt64MaxIsRejected) {
 // Finding 2, barrier side: same overflow in read_barrier_csv.
 TEST(FuzzRegressions, BarrierIdAtInt64MaxIsRejected) {
   TempDir d("mpdem_fuzzreg");
-  const Model model = one_material();
+  Model model = one_material();
   BarrierSource src;
   const fs::path f = d.write("b.csv", "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n9223372036854775807,0,0,0,1,0,0,0,1,0\n");
   Barriers out;
@@ -148,7 +148,7 @@ TEST(FuzzRegressions, BarrierIdAtInt64MaxIsRejected) {
 // row (|edge| ~ 1e200 m: cross product ~ 1e400 > DBL_MAX ~ 1.8e308).
 TEST(FuzzRegressions, BarrierWithOverflowingAreaIsRejected) {
   TempDir d("mpdem_fuzzreg");
-  const Model model = one_material();
+  Model model = one_material();
   BarrierSource src;
   const fs::path f = d.write("b.csv", "x1,y1,z1,x2,y2,z2,x3,y3,z3\n0,0,0,1e200,0,0,0,1e200,0\n");
   Barriers out;

@@ -485,12 +485,12 @@ motion = { B = [0, 0, 0.01], w2 = 2.0 }
   const Scene s = load_scene(scene);
   ASSERT_EQ(s.particles.size(), 3u);
   EXPECT_EQ(s.particles.material[0], 1);  // the source's material
-  EXPECT_EQ(s.particles.density[1], 7800.0);
+  EXPECT_EQ(s.model.materials[s.particles.material[1]].density, 7800.0);
   EXPECT_EQ(s.particles.id[0], 0);
   EXPECT_EQ(s.particles.id[1], 1);
   EXPECT_EQ(s.particles.id[2], 7);
   EXPECT_EQ(s.particles.material[2], 0);
-  EXPECT_EQ(s.particles.young[2], 5e9);
+  EXPECT_EQ(s.model.materials[s.particles.material[2]].young, 5e9);
   const double r = 0.003;
   EXPECT_DOUBLE_EQ(s.particles.mass[1], 4.0 / 3.0 * std::numbers::pi * r * r * r * 7800.0);
 
@@ -535,7 +535,7 @@ TEST(SceneReader, DocumentedExampleLoads) {
   ASSERT_EQ(s.particles.size(), 4u);
   EXPECT_EQ(s.particles.id, (std::vector<std::int64_t>{1, 2, 3, 4}));
   EXPECT_EQ(s.particles.charge[1], -1e-10);
-  EXPECT_EQ(s.particles.young[0], 6.3e10);  // from material "glass"
+  EXPECT_EQ(s.model.materials[s.particles.material[0]].young, 6.3e10);  // material "glass"
   ASSERT_EQ(s.barriers.size(), 2u);
   EXPECT_NEAR(s.barriers.area[0], 0.005, 1e-15);  // half the 0.1 m square; 1e-15 m^2 allows rounding of 0.05
   EXPECT_EQ(s.barriers.normal[1], (Vec3{0.0, 0.0, 1.0}));

@@ -150,9 +150,9 @@ Scene random_cloud(std::size_t n, double r0, double L, unsigned seed) {
 // Brute-force force on every particle (by id) for a state at rest with no spring history: Hertz
 // 4/3 E* sqrt(r*) delta^(3/2) along the centre line (49), (51)-(52) for every touching pair and
 // against the two infinite planes z = 0.1 L and x = 0.5 L (r* = R, barrier of the same material).
-std::map<std::int64_t, Vec3> brute_forces(const Particles& p, double L) {
+std::map<std::int64_t, Vec3> brute_forces(const Model& model, const Particles& p, double L) {
   std::map<std::int64_t, Vec3> f;
-  const double E = p.young[0], nu = p.poisson[0];
+  const double E = model.materials[p.material[0]].young, nu = model.materials[p.material[0]].poisson;
   const double Estar = E / (2.0 * (1.0 - nu * nu));  // two equal materials
   for (std::size_t i = 0; i < p.size(); ++i) f[p.id[i]] = Vec3{};
   for (std::size_t i = 0; i < p.size(); ++i)
@@ -186,7 +186,7 @@ void expect_forces_match(Interactions& in, Scene& s, double L, const char* when)
   std::fill(p.v.begin(), p.v.end(), Vec3{});
   std::fill(p.w.begin(), p.w.end(), Vec3{});
   in.evaluate(p, s.barriers, EvalRequest{0.0, 0.0, 1.0, false});
-  const auto ref = brute_forces(p, L);
+  const auto ref = brute_forces(s.model, p, L);
   double fmax = 0.0;
   for (const auto& [id, f] : ref) fmax = std::max(fmax, std::sqrt(norm2(f)));
   ASSERT_GT(fmax, 0.0);
@@ -322,7 +322,7 @@ TEST(NeighborEngine, SpringsSurviveRebuildAndReordering) {
   Interactions in(s.model, p, s.barriers, integrator_policy(s.model.params));
   in.force_rebuild(p, s.barriers, false);
   in.evaluate(p, s.barriers, EvalRequest{0.0, 0.0, 1.0, true});
-  VerletIntegrator verlet(s.model.params);
+  VerletIntegrator verlet(s.model);
   const std::uint64_t builds = in.search().rebuilds();
   for (int k = 0; k < 200; ++k) verlet.step(p, s.barriers, in, k * dt, dt);
   ASSERT_EQ(in.search().rebuilds(), builds) << "the particles must still be in the shuffled order";

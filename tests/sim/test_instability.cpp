@@ -61,7 +61,7 @@ TEST(Instability, ResolvedCollisionDoesNotTrigger) {
   s.model.params.fields.gravity = {};
   test::add_particle(s, 5, 0.001, {0, 0, 0}, {1.0, 0, 0});
   test::add_particle(s, 6, 0.001, {0.00205, 0, 0}, {-1.0, 0, 0});
-  for (std::size_t i = 0; i < 2; ++i) s.particles.young[i] = 1e9;
+  s.model.materials[0].young = 1e9;  // both spheres
   EXPECT_EQ(run_until_error(s, 2e-7, 1500), "");
   EXPECT_LT(s.particles.v[0].x, 0.0);  // they did collide and rebound
 }
@@ -75,7 +75,7 @@ TEST(Instability, ExcessiveOverlapNamesTheContact) {
     s.model.params.fields.gravity = {};
     test::add_particle(s, 7, 0.001, {0, 0, 0}, {2.0, 0, 0});
     test::add_particle(s, 8, 0.001, {0.00205, 0, 0}, {-2.0, 0, 0});
-    for (std::size_t i = 0; i < 2; ++i) s.particles.young[i] = 1e5;
+    s.model.materials[0].young = 1e5;  // both spheres
     const std::string msg = run_until_error(s, 1e-6, 2000);
     EXPECT_NE(msg.find("between particles id 7 and id 8"), std::string::npos) << msg;
     EXPECT_NE(msg.find("checks.max_overlap = 5%"), std::string::npos) << msg;
@@ -85,7 +85,7 @@ TEST(Instability, ExcessiveOverlapNamesTheContact) {
     s.model.params.time.integrator = Integrator::Verlet;
     s.model.params.fields.gravity = {};
     test::add_particle(s, 9, 0.001, {0, 0, 0.00105}, {0, 0, -4.0});
-    s.particles.young[0] = 1e5;
+    s.model.materials[0].young = 1e5;
     const int g = s.barriers.group_index("floor");
     s.barriers.add(77, {-1, -1, 0}, {1, -1, 0}, {0, 1, 0}, g, 1e5, 0.3, {}, 0.0, NAN);
     const std::string msg = run_until_error(s, 1e-6, 2000);

@@ -30,4 +30,24 @@ inline std::size_t add_particle(Scene& s, std::int64_t id, double radius, const 
   return i;
 }
 
+// Gives particle i a material of its own, a copy of its present one, and returns it for editing
+// (use it at once: adding materials moves them).
+inline Material& own_material(Scene& s, std::size_t i) {
+  Material m = s.model.materials[static_cast<std::size_t>(s.particles.material[i])];
+  m.name = "own" + std::to_string(s.model.materials.size());
+  s.model.materials.push_back(m);
+  s.particles.material[i] = static_cast<int>(s.model.materials.size()) - 1;
+  return s.model.materials.back();
+}
+
+// Gives particle i a material of its own: a copy of the scene's first material with E and nu.
+inline void give_own_material(Scene& s, std::size_t i, double young, double poisson) {
+  Material m = s.model.materials.front();
+  m.name = "own" + std::to_string(s.model.materials.size());
+  m.young = young;
+  m.poisson = poisson;
+  s.model.materials.push_back(m);
+  s.particles.material[i] = static_cast<int>(s.model.materials.size()) - 1;
+}
+
 }  // namespace mpdem::test

@@ -37,7 +37,7 @@ Scene thermal_scene(double dt, Integrator integ) {
 }
 
 // Makes particle i mechanically inert (see the file comment).
-void inert(Scene& s, std::size_t i) { s.particles.young[i] = 1e-20; }
+void inert(Scene& s, std::size_t i) { test::own_material(s, i).young = 1e-20; }
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -88,8 +88,10 @@ void two_particle_relaxation(Integrator integ, double lambda_dt, double lambda_t
   test::add_particle(s, 1, R1, {0.0, 0.0, 0.0});
   test::add_particle(s, 2, R2, {d, 0.0, 0.0});
   const double k1 = 2.0, k2 = 50.0, c1 = 800.0, c2 = 400.0;
-  s.particles.conductivity = {k1, k2};
-  s.particles.heat_capacity = {c1, c2};
+  test::own_material(s, 0).conductivity = k1;
+  test::own_material(s, 1).conductivity = k2;
+  s.model.materials[static_cast<std::size_t>(s.particles.material[0])].heat_capacity = c1;
+  s.model.materials[static_cast<std::size_t>(s.particles.material[1])].heat_capacity = c2;
   s.particles.T = {400.0, 300.0};
   inert(s, 0);
   inert(s, 1);
@@ -114,7 +116,8 @@ void two_particle_relaxation(Integrator integ, double lambda_dt, double lambda_t
     sim.advance(dt);
     const double exact = 100.0 * std::exp(-lambda * sim.time());
     worst = std::max(worst, std::abs((p.T[i1] - p.T[i2]) / exact - 1.0));
-    const double E = p.mass[i1] * p.heat_capacity[i1] * p.T[i1] + p.mass[i2] * p.heat_capacity[i2] * p.T[i2];
+    const auto c = [&](std::size_t i) { return sim.model().materials[static_cast<std::size_t>(p.material[i])].heat_capacity; };
+    const double E = p.mass[i1] * c(i1) * p.T[i1] + p.mass[i2] * c(i2) * p.T[i2];
     worst_energy = std::max(worst_energy, std::abs(E / E0 - 1.0));
     ASSERT_GT(p.T[i1], Tmean);  // monotone approach from above ...
     ASSERT_LT(p.T[i2], Tmean);  // ... and below
@@ -156,7 +159,7 @@ CoolingResult convective_cooling(double v_particle, double v_air, double h_expec
   s.model.params.thermal.air_temperature = Tair;
   s.model.params.thermal.air_velocity = {v_air, 0.0, 0.0};
   test::add_particle(s, 1, R, {}, {v_particle, 0.0, 0.0});
-  s.particles.heat_capacity[0] = c;
+  test::own_material(s, 0).heat_capacity = c;
   s.particles.T[0] = T0;
   Simulation sim(std::move(s), RunOptions{{}, false, false});
   sim.initialize();
@@ -166,7 +169,7 @@ CoolingResult convective_cooling(double v_particle, double v_air, double h_expec
     sim.advance(dt);
     const double exact = (T0 - Tair) * std::exp(-sim.time() / tau);
     r.worst = std::max(r.worst, std::abs((sim.particles().T[0] - Tair) / exact - 1.0));
-    const double E = thermal_energy(sim.particles()) + sim.interactions().stats().heat_convected;
+    const double E = thermal_energy(sim.model(), sim.particles()) + sim.interactions().stats().heat_convected;
     r.balance = std::max(r.balance, std::abs(E / E0 - 1.0));
   }
   return r;
@@ -216,8 +219,11 @@ TEST(Radiation, ClosedFormCooling) {
   s.model.params.thermal.radiation = true;
   s.model.params.thermal.environment_temperature = Te;
   test::add_particle(s, 1, R, {});
-  s.particles.heat_capacity[0] = c;
-  s.particles.emissivity[0] = eps;
+  {
+    Material& m = test::own_material(s, 0);
+    m.heat_capacity = c;
+    m.emissivity = eps;
+  }
   s.particles.T[0] = T0;
   Simulation sim(std::move(s), RunOptions{{}, false, false});
   sim.initialize();
@@ -235,7 +241,7 @@ TEST(Radiation, ClosedFormCooling) {
     const double exact = 0.5 * (lo + hi);
     worst = std::max(worst, std::abs((T - Te) / (exact - Te) - 1.0));  // relative to the excess over Te
     worst_t = std::max(worst_t, std::abs(radiation_time(T, T0, Te, scale) / sim.time() - 1.0));
-    balance = std::max(balance, std::abs((thermal_energy(sim.particles()) + sim.interactions().stats().heat_radiated) / E0 - 1.0));
+    balance = std::max(balance, std::abs((thermal_energy(sim.model(), sim.particles()) + sim.interactions().stats().heat_radiated) / E0 - 1.0));
   }
   EXPECT_LT(worst, 1e-3);
   EXPECT_LT(worst_t, 1e-3);
@@ -265,8 +271,11 @@ TEST(Conduction, ParticleOnFixedTemperatureBarrier) {
   ASSERT_TRUE(b.add(1, {-0.01, -0.01, 0}, {0.01, -0.01, 0}, {0.01, 0.01, 0}, g, 1e-20, 0.3, MotionLaw{}, 0.0, Tb));
   ASSERT_TRUE(b.add(2, {-0.01, -0.01, 0}, {0.01, 0.01, 0}, {-0.01, 0.01, 0}, g, 1e-20, 0.3, MotionLaw{}, 0.0, Tb));
   test::add_particle(s, 1, R, {0.002, 0.001, R - delta});  // over the middle of element 1
-  s.particles.conductivity[0] = k;
-  s.particles.heat_capacity[0] = c;
+  {
+    Material& m = test::own_material(s, 0);
+    m.conductivity = k;
+    m.heat_capacity = c;
+  }
   s.particles.T[0] = T0;
   inert(s, 0);
   Simulation sim(std::move(s), RunOptions{{}, false, false});
@@ -278,7 +287,7 @@ TEST(Conduction, ParticleOnFixedTemperatureBarrier) {
     const double exact = (T0 - Tb) * std::exp(-lambda * sim.time());
     worst = std::max(worst, std::abs((sim.particles().T[0] - Tb) / exact - 1.0));
     balance = std::max(balance,
-                       std::abs((thermal_energy(sim.particles()) + sim.interactions().stats().heat_to_barriers) / E0 - 1.0));
+                       std::abs((thermal_energy(sim.model(), sim.particles()) + sim.interactions().stats().heat_to_barriers) / E0 - 1.0));
   }
   EXPECT_EQ(sim.interactions().stats().contacts_pb, 1u);
   EXPECT_LT(worst, 1e-3);
@@ -318,8 +327,9 @@ Scene mechanical_scene(bool thermal, Integrator integ) {
                                                  {0.0025 * i + jitter, 0.0025 * j, 0.0012 + 0.0023 * k},
                                                  {0.05 * (i - 1), -0.04 * (j - 1), -0.05 - 0.1 * k});
         s.particles.T[n] = T;
-        s.particles.conductivity[n] = 1.0 + 0.5 * i;  // varied properties must not matter
-        s.particles.emissivity[n] = 0.5 + 0.1 * j;
+        Material& m = test::own_material(s, n);  // varied properties must not matter
+        m.conductivity = 1.0 + 0.5 * i;
+        m.emissivity = 0.5 + 0.1 * j;
       }
   return s;
 }

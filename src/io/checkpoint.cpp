@@ -2,15 +2,17 @@
 // resumed run is bitwise identical to an uninterrupted one with the same thread count - the
 // particle arrays in their current order (with the rates of the accepted state), the
 // neighbour lists' build positions (rebuilds then happen at the same steps), contact history,
-// statistics, the adaptive step and the output series.
+// statistics, the adaptive step and the output series. The file is a sequence of named,
+// checksummed sections (io/checkpoint_format.hpp).
 #include <fmt/core.h>
 
-#include <cstring>
 #include <string>
+#include <type_traits>
 #include <fstream>
 #include <sstream>
 
 #include "io/atomic_file.hpp"
+#include "io/checkpoint_format.hpp"
 #include "io/input_error.hpp"
 #include "io/output_manager.hpp"
 #include "sim/simulation.hpp"
@@ -18,30 +20,30 @@
 namespace mpdem {
 
 namespace {
-// The last byte is the format version: 2 since the barrier history is kept per particle index
-// (session 2). Older files are refused with a message that says so.
-constexpr char kMagic[8] = {'M', 'P', 'D', 'E', 'M', 'C', 'K', '2'};
-
+// The run's own counters, field by field (one list for writing and reading).
+template <class F>
+void for_each_counter(std::uint64_t& barriers, std::uint64_t& materials, double& time, std::uint64_t& steps,
+                      std::uint64_t& evaluations, std::size_t& removed, std::uint64_t& redone, double& dt,
+                      double& last_balance, double& last_active, bool& energy_checked, F&& f) {
+  f(barriers); f(materials); f(time); f(steps); f(evaluations); f(removed); f(redone); f(dt); f(last_balance);
+  f(last_active); f(energy_checked);
+}
 }  // namespace
 
 void Simulation::write_checkpoint(const std::filesystem::path& file) {
-  BinaryWriter w;
-  w.value(kMagic);
-  w.value<std::uint64_t>(scene_.barriers.size());
-  w.value<std::uint64_t>(scene_.model.materials.size());
-  w.value(time_);
-  w.value(steps_);
-  w.value(evaluations_);
-  w.value(removed_);
-  w.value(redone_);
-  w.value(dt_);
-  w.value(last_balance_);
-  w.value(last_active_);
-  w.value(energy_checked_);
-  scene_.particles.for_each_array([&](const char*, auto& a) { w.vector(a); });
+  CheckpointWriter w;
+  std::uint64_t barriers = scene_.barriers.size(), materials = scene_.model.materials.size();
+  w.section("run", [&](BinaryWriter& o) {
+    for_each_counter(barriers, materials, time_, steps_, evaluations_, removed_, redone_, dt_, last_balance_,
+                     last_active_, energy_checked_, [&](auto& v) { o.value(v); });
+  });
+  // One section per particle array, by name: an array added to Particles adds a section, and a
+  // checkpoint without it is refused naming it.
+  scene_.particles.for_each_array([&](const char* name, auto& a) {
+    w.section(std::string("particles/") + name, [&](BinaryWriter& o) { o.vector(a); });
+  });
   interactions_->save(w, scene_.particles);
-  w.value<bool>(output_ != nullptr);
-  if (output_) output_->save(w);  // last: resume_from hands the rest to the OutputManager
+  if (output_) w.section("output", [&](BinaryWriter& o) { output_->save(o); });
   write_file_atomically(file, [&](std::ostream& os) {
     os.write(w.bytes().data(), static_cast<std::streamsize>(w.bytes().size()));
   });
@@ -55,25 +57,24 @@ void Simulation::resume_from(const std::filesystem::path& file) {
   ss << in.rdbuf();
   const std::string bytes = ss.str();
   try {
-    BinaryReader r(bytes.data(), bytes.size());
-    const auto magic = r.value<std::array<char, 8>>();
-    if (std::memcmp(magic.data(), kMagic, 7) == 0 && magic[7] != kMagic[7])
-      throw std::runtime_error(std::string("it has checkpoint format ") + magic[7] + ", this mpdem reads format " +
-                               kMagic[7] + " only (written by another mpdem version); start the run again from its scene");
-    if (std::memcmp(magic.data(), kMagic, 8) != 0) throw std::runtime_error("not an mpdem checkpoint");
-    if (r.value<std::uint64_t>() != scene_.barriers.size() || r.value<std::uint64_t>() != scene_.model.materials.size())
-      throw std::runtime_error("it was written for a scene with other barriers or materials");
-    time_ = r.value<double>();
-    steps_ = r.value<std::uint64_t>();
-    evaluations_ = r.value<std::uint64_t>();
-    removed_ = r.value<std::size_t>();
-    redone_ = r.value<std::uint64_t>();
-    dt_ = r.value<double>();
-    last_balance_ = r.value<double>();
-    last_active_ = r.value<double>();
-    energy_checked_ = r.value<bool>();
+    CheckpointReader r(bytes.data(), bytes.size());
+    const auto read = [&](const std::string& section, auto&& f) {
+      BinaryReader s = r.open(section);
+      f(s);
+      r.done(section, s);
+    };
+    read("run", [&](BinaryReader& s) {
+      std::uint64_t barriers = 0, materials = 0;
+      for_each_counter(barriers, materials, time_, steps_, evaluations_, removed_, redone_, dt_, last_balance_,
+                       last_active_, energy_checked_, [&](auto& v) { v = s.value<std::decay_t<decltype(v)>>(); });
+      if (barriers != scene_.barriers.size() || materials != scene_.model.materials.size())
+        throw std::runtime_error("it was written for a scene with other barriers or materials");
+    });
     Particles& p = scene_.particles;
-    p.for_each_array([&](const char*, auto& a) { a = r.template vector<typename std::decay_t<decltype(a)>::value_type>(); });
+    p.for_each_array([&](const char* array, auto& a) {
+      read(std::string("particles/") + array,
+           [&](BinaryReader& s) { a = s.template vector<typename std::decay_t<decltype(a)>::value_type>(); });
+    });
     const std::size_t n = p.id.size();
     bool sizes_ok = true;
     p.for_each_array([&](const char*, auto& a) { sizes_ok = sizes_ok && a.size() == n; });
@@ -81,7 +82,8 @@ void Simulation::resume_from(const std::filesystem::path& file) {
     scene_.barriers.move_to(time_);
     interactions_->restore(r, p, scene_.barriers);
     // The output series are restored once run() has opened the outputs.
-    if (r.value<bool>()) resume_output_state_ = r.rest();
+    if (r.has("output")) read("output", [&](BinaryReader& s) { resume_output_state_ = s.rest(); });
+    r.finish();
   } catch (const std::runtime_error& e) {
     throw InputError(name, 0, "", std::string("cannot resume from this checkpoint: ") + e.what());
   }

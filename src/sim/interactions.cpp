@@ -179,24 +179,46 @@ void Interactions::commit_heat(const HeatFlows& h, const EvalRequest& req) {
 
 std::uint64_t Interactions::convection_clamps() const { return heat_ ? heat_->clamped_evaluations() : 0; }
 
-void Interactions::save(BinaryWriter& w, const Particles& p) const {
-  w.value(stats_);
-  w.value(out_barriers_);
-  w.value(out_convected_);
-  w.value(out_radiated_);
-  search_->save(w);
-  pp_->save(w, p, *search_);
-  pb_->save(w);
+namespace {
+// The checkpointed statistics, field by field (one list for writing and reading).
+template <class S, class F>
+void for_each_stat(S& s, F&& f) {
+  f(s.contacts_pp); f(s.contacts_pb); f(s.elastic_energy); f(s.damping_dissipated); f(s.friction_dissipated);
+  f(s.rebuilds); f(s.near_field_energy); f(s.heat_to_barriers); f(s.heat_convected); f(s.heat_radiated);
+}
+// A field added to InteractionStats must be added to for_each_stat (and is then a format change).
+static_assert(sizeof(InteractionStats) == 10 * 8, "InteractionStats changed: update for_each_stat");
+// Reads one section with `read(BinaryReader&)`, which must consume it whole.
+template <class F>
+void read_section(CheckpointReader& r, const std::string& name, F&& read) {
+  BinaryReader in = r.open(name);
+  read(in);
+  r.done(name, in);
+}
+}  // namespace
+
+void Interactions::save(CheckpointWriter& w, const Particles& p) const {
+  w.section("interactions", [&](BinaryWriter& o) {
+    for_each_stat(stats_, [&](const auto& v) { o.value(v); });
+    o.value(out_barriers_);
+    o.value(out_convected_);
+    o.value(out_radiated_);
+  });
+  w.section("neighbor", [&](BinaryWriter& o) { search_->save(o); });
+  w.section("particle_contacts", [&](BinaryWriter& o) { pp_->save(o, p, *search_); });
+  w.section("barrier_contacts", [&](BinaryWriter& o) { pb_->save(o); });
 }
 
-void Interactions::restore(BinaryReader& r, const Particles& p, const Barriers& b) {
-  stats_ = r.value<InteractionStats>();
-  out_barriers_ = r.value<double>();
-  out_convected_ = r.value<double>();
-  out_radiated_ = r.value<double>();
-  search_->restore(r, p, b);
-  pp_->restore(r, p, *search_);
-  pb_->restore(r, p.size());
+void Interactions::restore(CheckpointReader& r, const Particles& p, const Barriers& b) {
+  read_section(r, "interactions", [&](BinaryReader& in) {
+    for_each_stat(stats_, [&](auto& v) { v = in.value<std::decay_t<decltype(v)>>(); });
+    out_barriers_ = in.value<double>();
+    out_convected_ = in.value<double>();
+    out_radiated_ = in.value<double>();
+  });
+  read_section(r, "neighbor", [&](BinaryReader& in) { search_->restore(in, p, b); });
+  read_section(r, "particle_contacts", [&](BinaryReader& in) { pp_->restore(in, p, *search_); });
+  read_section(r, "barrier_contacts", [&](BinaryReader& in) { pb_->restore(in, p.size()); });
 }
 
 OverlapReport Interactions::max_overlap(const Particles& p, const Barriers& b) const {

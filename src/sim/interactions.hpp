@@ -12,6 +12,7 @@
 
 #include "integrate/step_policy.hpp"
 #include "io/binary_stream.hpp"
+#include "io/checkpoint_format.hpp"
 #include "model/scene.hpp"
 
 namespace mpdem {
@@ -87,8 +88,9 @@ class Interactions {
   // checkpointed, so a resumed run counts from 0).
   std::uint64_t mid_step_rebuilds() const { return mid_step_rebuilds_; }
   // Checkpoints: statistics, neighbour lists and contact history.
-  void save(BinaryWriter& w, const Particles& p) const;
-  void restore(BinaryReader& r, const Particles& p, const Barriers& b);
+  // Checkpoint sections "interactions", "neighbor", "particle_contacts", "barrier_contacts".
+  void save(CheckpointWriter& w, const Particles& p) const;
+  void restore(CheckpointReader& r, const Particles& p, const Barriers& b);
   double skin() const;
   const NeighborSearch& search() const { return *search_; }
   const ParticleContacts& particle_contacts() const { return *pp_; }

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Independent reader for mpdem's ParaView output, used by tests/test_output_writers.cpp.
+"""Independent reader for mpdem's ParaView output, used by tests/io/test_vtu_writer.cpp.
 
     read_vtu.py FILE.vtu   reads with meshio and prints, for the points, every cell block and
                            every point/cell/field data array, a header line

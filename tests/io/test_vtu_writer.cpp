@@ -1,27 +1,22 @@
-// Output writers read back by an independent reader: VTU/PVD through meshio and xml.etree
-// (tests/read_vtu.py run with /usr/bin/python3), CSV through std::stod. The ASCII formats use
-// 17 significant digits, so every double must come back bit for bit (tolerance: exact).
+// VTU particle and barrier snapshots and the PVD index, read back by an independent reader (meshio and
+// xml.etree: tests/read_vtu.py run with /usr/bin/python3); 17 significant digits: every double exact.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "io/atomic_file.hpp"
-#include "io/csv_log.hpp"
 #include "io/pvd_index.hpp"
 #include "io/vtu_writer.hpp"
 #include "state/barriers.hpp"
 #include "state/particles.hpp"
+#include "support/output_folder.hpp"
+#include "support/sample_particles.hpp"
 
 #ifndef MPDEM_SOURCE_DIR
 #error "MPDEM_SOURCE_DIR must name the repository root (tests/read_vtu.py lives there)"
@@ -29,45 +24,10 @@
 
 namespace fs = std::filesystem;
 using namespace mpdem;
+using namespace mpdem::test::output;  // OutputTest, slurp, split, lines_of, files_in
+using mpdem::test::make_particles;
 
 namespace {
-
-// A fresh folder per test, removed afterwards.
-class OutputTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir = fs::temp_directory_path() /
-          ("mpdem_output_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-  }
-  void TearDown() override { fs::remove_all(dir); }
-  fs::path dir;
-};
-
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::string item;
-  std::istringstream in(s);
-  while (std::getline(in, item, sep)) out.push_back(item);
-  return out;
-}
-
-std::vector<std::string> lines_of(const std::string& text) { return split(text, '\n'); }
-
-std::vector<fs::path> files_in(const fs::path& dir) {
-  std::vector<fs::path> out;
-  for (const auto& e : fs::directory_iterator(dir)) out.push_back(e.path().filename());
-  return out;
-}
 
 // Runs the independent reader; fails the test if it exits non-zero.
 std::string run_reader(const fs::path& file, const std::string& option = "") {
@@ -126,22 +86,6 @@ std::vector<Listed> read_pvd(const fs::path& file) {
   return out;
 }
 
-// Particles whose every output quantity is a distinct, non-round double.
-Particles make_particles(std::size_t n) {
-  Particles p;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double s = static_cast<double>(k) + 1.0;
-    p.add(1'000'000'000'000LL + 7 * static_cast<std::int64_t>(k), static_cast<int>(k % 3), 1e-3 * s / 3.0,
-          2500.0 + s / 7.0, {0.1 * s + 1.0 / 3.0, -std::numbers::pi * s, 1e-7 / s}, {s / 9.0, -2.0 / s, 1e3 / 7.0});
-    p.w[k] = {std::sqrt(s), -1.0 / (3.0 * s), 1e-300 * s};
-    p.q[k] = quat_normalized({std::cos(s), std::sin(s) / 3.0, -0.2 * s, 0.1});
-    p.force[k] = {6.02e23 * s / 7.0, -std::exp(-s), 1.0 / 11.0};
-    p.T[k] = 293.15 + s / 3.0;
-    p.charge[k] = -1.602176634e-19 * s / 3.0;
-  }
-  return p;
-}
-
 void expect_vec(const Array& a, std::size_t t, const Vec3& v) {
   ASSERT_EQ(a.components, 3u);
   EXPECT_EQ(a.d(t, 0), v.x);
@@ -150,64 +94,6 @@ void expect_vec(const Array& a, std::size_t t, const Vec3& v) {
 }
 
 }  // namespace
-
-// ---------------------------------------------------------------------------------------------
-// Atomic writes
-
-TEST_F(OutputTest, AtomicWriteUsesTemporaryBesideTargetAndLeavesNoneBehind) {
-  const fs::path file = dir / "a.txt";
-  const fs::path expected_tmp = dir / ("a.txt.tmp-" + std::to_string(::getpid()));
-  EXPECT_EQ(temporary_path_for(file), expected_tmp);
-  write_file_atomically(file, [&](std::ostream& os) {
-    // While the body runs the final name does not exist yet; the data goes to the temporary.
-    EXPECT_FALSE(fs::exists(file));
-    EXPECT_TRUE(fs::exists(expected_tmp));
-    os << "new content\n";
-  });
-  EXPECT_EQ(slurp(file), "new content\n");
-  EXPECT_EQ(files_in(dir), std::vector<fs::path>{"a.txt"});
-}
-
-TEST_F(OutputTest, ThrowingBodyLeavesPreviousFileIntact) {
-  const fs::path file = dir / "a.txt";
-  write_file_atomically(file, [](std::ostream& os) { os << "old complete file\n"; });
-  struct BodyError {};
-  EXPECT_THROW(write_file_atomically(file,
-                                     [](std::ostream& os) {
-                                       os << std::string(100000, 'x');  // more than one buffer
-                                       throw BodyError{};
-                                     }),
-               BodyError);
-  EXPECT_EQ(slurp(file), "old complete file\n");
-  EXPECT_EQ(files_in(dir), std::vector<fs::path>{"a.txt"});
-}
-
-TEST_F(OutputTest, FailedStreamThrowsNamingPathAndKeepsPreviousFile) {
-  const fs::path file = dir / "a.txt";
-  write_file_atomically(file, [](std::ostream& os) { os << "old\n"; });
-  try {
-    write_file_atomically(file, [](std::ostream& os) {
-      os << "half";
-      os.setstate(std::ios::badbit);  // what a full disk does to the stream
-    });
-    FAIL() << "expected std::runtime_error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
-  }
-  EXPECT_EQ(slurp(file), "old\n");
-  EXPECT_EQ(files_in(dir), std::vector<fs::path>{"a.txt"});
-
-  const fs::path unreachable = dir / "no_such_folder" / "b.txt";
-  try {
-    write_file_atomically(unreachable, [](std::ostream& os) { os << "x"; });
-    FAIL() << "expected std::runtime_error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find(unreachable.string()), std::string::npos) << e.what();
-  }
-}
-
-// ---------------------------------------------------------------------------------------------
-// VTU / PVD
 
 TEST_F(OutputTest, ParticleVtuRoundTripsThroughMeshio) {
   const Particles p = make_particles(5);
@@ -380,80 +266,4 @@ TEST_F(OutputTest, PvdListsEverySnapshotWithItsTime) {
   EXPECT_EQ(listed[2].time, 0.25);
   EXPECT_EQ(listed[2].file, "a & <b>.vtu");
   for (const auto& f : files_in(dir)) EXPECT_EQ(f.string().find(".tmp-"), std::string::npos) << f;
-}
-
-// ---------------------------------------------------------------------------------------------
-// CSV
-
-TEST_F(OutputTest, CsvLogHeaderAndRowsRoundTrip) {
-  const fs::path file = dir / "log.csv";
-  const std::vector<std::vector<double>> rows = {
-      {0.1, 3.0, 1.0 / 3.0},
-      {1e-300, 9007199254740991.0, 9007199254740992.0},  // 2^53 - 1 and 2^53
-      {-2.5, 1e20, -0.0}};
-  {
-    CsvLog log(file, {"time", "step", "energy"});
-    EXPECT_EQ(slurp(file), "time,step,energy\n");  // header at once
-    log.row(rows[0]);
-    EXPECT_EQ(slurp(file), "time,step,energy\n");  // rows are buffered
-    log.flush();
-    EXPECT_EQ(lines_of(slurp(file)).size(), 2u);
-    log.row(rows[1]);
-    EXPECT_THROW(log.row(std::vector<double>{1.0, 2.0}), std::logic_error);
-    EXPECT_THROW(log.row(std::vector<double>{1.0, 2.0, 3.0, 4.0}), std::logic_error);
-    log.row(rows[2]);
-  }  // destructor flushes
-  const auto lines = lines_of(slurp(file));
-  ASSERT_EQ(lines.size(), 4u);
-  EXPECT_EQ(lines[0], "time,step,energy");
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    const auto f = split(lines[r + 1], ',');
-    ASSERT_EQ(f.size(), 3u) << lines[r + 1];
-    for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(std::stod(f[c]), rows[r][c]) << lines[r + 1];
-  }
-  // Integral values below 2^53 are plain integers; others keep the 17-digit form.
-  EXPECT_EQ(split(lines[1], ',')[1], "3");
-  EXPECT_EQ(split(lines[2], ',')[1], "9007199254740991");
-  EXPECT_EQ(split(lines[3], ',')[1].find_first_of("eE") != std::string::npos, true);  // 1e20
-}
-
-TEST_F(OutputTest, CsvLogAppendContinuesAndDropsCutLine) {
-  const fs::path file = dir / "log.csv";
-  {
-    CsvLog log(file, {"t", "x"});
-    log.row(std::vector<double>{1.0, 0.5});
-  }
-  append_complete_lines(file, "2,0.7");  // a line cut by a kill: no newline
-  {
-    CsvLog log(file, {"t", "x"}, CsvLog::Open::append);
-    log.row(std::vector<double>{2.0, 0.75});
-  }
-  EXPECT_EQ(slurp(file), "t,x\n1,0.5\n2,0.75\n");
-  EXPECT_THROW(CsvLog(file, {"t", "y"}, CsvLog::Open::append), std::runtime_error);
-  EXPECT_EQ(slurp(file), "t,x\n1,0.5\n2,0.75\n");
-  EXPECT_THROW(CsvLog(dir / "bad.csv", {"a,b"}), std::invalid_argument);
-}
-
-TEST_F(OutputTest, ParticleCsvSnapshotRoundTrips) {
-  const Particles p = make_particles(4);
-  const double time = 1.0 / 7.0;
-  const fs::path file = dir / "particles_000001.csv";
-  write_particles_csv(file, p, time);
-  EXPECT_EQ(files_in(dir), std::vector<fs::path>{"particles_000001.csv"});
-  const auto lines = lines_of(slurp(file));
-  ASSERT_EQ(lines.size(), p.size() + 1);
-  EXPECT_EQ(lines[0], "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz");
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const auto f = split(lines[i + 1], ',');
-    ASSERT_EQ(f.size(), 18u) << lines[i + 1];
-    const double expected[18] = {time,         0.0,          p.x[i].x,   p.x[i].y,     p.x[i].z,
-                                 p.v[i].x,     p.v[i].y,     p.v[i].z,   p.w[i].x,     p.w[i].y,
-                                 p.w[i].z,     p.radius[i],  0.0,        p.T[i],       p.charge[i],
-                                 p.force[i].x, p.force[i].y, p.force[i].z};
-    for (std::size_t c = 0; c < 18; ++c) {
-      if (c == 1) EXPECT_EQ(std::stoll(f[c]), p.id[i]);
-      else if (c == 12) EXPECT_EQ(std::stoll(f[c]), p.material[i]);
-      else EXPECT_EQ(std::stod(f[c]), expected[c]) << "column " << c << " of " << lines[i + 1];
-    }
-  }
 }

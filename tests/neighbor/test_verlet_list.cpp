@@ -1,0 +1,188 @@
+// The Verlet half list (physics.md section 11) against an O(N^2) brute force applying the documented
+// criterion literally (exact set comparison: the same strict inequality on both sides).
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdint>
+#include <set>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "neighbor/cell_grid.hpp"
+#include "neighbor/verlet_list.hpp"
+#include "support/particle_clouds.hpp"
+
+namespace mpdem {
+namespace {
+
+using namespace test;  // Cloud, clustered, spread, jiggle, kR0
+
+using PairSet = std::set<std::pair<std::uint32_t, std::uint32_t>>;
+
+// The documented criterion, applied to all pairs.
+PairSet brute_pairs(const Cloud& c, double skin, double extra) {
+  PairSet s;
+  for (std::uint32_t i = 0; i < c.x.size(); ++i)
+    for (std::uint32_t j = i + 1; j < c.x.size(); ++j) {
+      const double cut = c.r[i] + c.r[j] + extra + skin;
+      if (norm2(c.x[j] - c.x[i]) < cut * cut) s.insert({i, j});
+    }
+  return s;
+}
+
+// Pairs of a list; also checks the CSR shape: j > i, strictly ascending per i.
+PairSet list_pairs(const VerletList& l) {
+  PairSet s;
+  EXPECT_EQ(l.offsets().size(), l.size() + 1);
+  EXPECT_EQ(l.offsets().back(), l.indices().size());
+  for (std::uint32_t i = 0; i < l.size(); ++i) {
+    const auto nb = l.neighbors(i);
+    for (std::size_t k = 0; k < nb.size(); ++k) {
+      EXPECT_GT(nb[k], i);
+      if (k > 0) {
+        EXPECT_LT(nb[k - 1], nb[k]);
+      }
+      s.insert({i, nb[k]});
+    }
+  }
+  return s;
+}
+
+// Dense clusters; a uniform box with an outlier 1e4 m away (fewer than 2^21 cells per axis:
+// Morton-key sort); a denser box with an outlier 1e5 m away (more than 2^21 cells per axis:
+// bitwise Z-order comparison sort). Both sort paths are thus compared with brute force.
+std::vector<Cloud> test_clouds() {
+  return {clustered(2000, 1), spread(2000, 0.15, 2, 1e4), spread(2000, 0.08, 3, 1e5)};
+}
+
+TEST(VerletList, MatchesBruteForceForSeveralSkinsAndExtraRange) {
+  int fast_paths = 0, dense_index = 0, builds = 0;
+  for (const Cloud& c : test_clouds()) {
+    for (double skin : {0.0, 0.1 * kR0, 0.5 * kR0, 2.0 * kR0}) {
+      for (double extra : {0.0, 1.5 * kR0}) {
+        VerletList l;
+        l.build(c.x, c.r, skin, extra);
+        fast_paths += l.grid_stats().morton_key;
+        dense_index += l.grid_stats().dense_index;
+        ++builds;
+        const PairSet expect = brute_pairs(c, skin, extra);
+        EXPECT_GT(expect.size(), 100u) << "test set must have pairs to be meaningful";
+        EXPECT_EQ(list_pairs(l), expect) << "skin " << skin << " extra " << extra;
+        EXPECT_EQ(l.num_pairs(), expect.size());
+      }
+    }
+  }
+  // Both sort paths and both cell indexes (dense box array, hash table) were exercised.
+  EXPECT_GT(fast_paths, 0);
+  EXPECT_LT(fast_paths, builds);
+  EXPECT_GT(dense_index, 0);
+  EXPECT_LT(dense_index, builds);
+}
+
+TEST(VerletList, KeepsEveryTruePairWhileMotionBelowHalfSkin) {
+  const double skin = 1.0 * kR0;
+  for (const Cloud& c : test_clouds()) {
+    for (double extra : {0.0, 1.5 * kR0}) {
+      VerletList l;
+      l.build(c.x, c.r, skin, extra);
+      const PairSet listed = list_pairs(l);
+      Cloud moved{jiggle(c.x, 0.499 * skin, 5), c.r};
+      ASSERT_FALSE(l.needs_rebuild(moved.x));
+      const PairSet now = brute_pairs(moved, 0.0, extra);  // pairs truly within range now
+      const PairSet before = brute_pairs(c, 0.0, extra);
+      std::size_t fresh = 0;  // pairs that came into range during the motion
+      for (const auto& p : now) {
+        EXPECT_TRUE(listed.count(p)) << p.first << "-" << p.second;
+        fresh += before.count(p) == 0;
+      }
+      EXPECT_GT(fresh, 0u) << "motion should bring new pairs into range for the test to bite";
+    }
+  }
+}
+
+TEST(VerletList, NeedsRebuildFlipsExactlyAtHalfSkin) {
+  const Cloud c = clustered(2000, 9);
+  const double skin = 0.8 * kR0;
+  VerletList l;
+  l.build(c.x, c.r, skin);
+  EXPECT_FALSE(l.needs_rebuild(c.x));
+  EXPECT_EQ(l.max_displacement(c.x), 0.0);
+  for (double f : {0.5 * (1 - 1e-9), 0.5 * (1 + 1e-9)}) {
+    std::vector<Vec3> y = c.x;
+    y[1234].y += f * skin;
+    EXPECT_EQ(l.needs_rebuild(y), f > 0.5) << f;
+    // Displacement reported to rounding of the 0.1 m coordinates (1e-12 relative is ample).
+    EXPECT_NEAR(l.max_displacement(y), f * skin, 1e-12 * skin);
+  }
+  std::vector<Vec3> fewer(c.x.begin(), c.x.end() - 1);
+  EXPECT_TRUE(l.needs_rebuild(fewer));
+  VerletList never_built;
+  EXPECT_TRUE(never_built.needs_rebuild(c.x));
+}
+
+TEST(VerletList, IdenticalForOneTwoAndFourThreads) {
+  const int saved = omp_get_max_threads();
+  for (const Cloud& c : test_clouds()) {
+    std::vector<std::vector<std::size_t>> offs;
+    std::vector<std::vector<std::uint32_t>> idx;
+    for (int nt : {1, 2, 4}) {
+      omp_set_num_threads(nt);
+      VerletList l;
+      l.build(c.x, c.r, 0.5 * kR0, 1.0 * kR0);
+      offs.push_back(l.offsets());
+      idx.push_back(l.indices());
+    }
+    EXPECT_EQ(offs[0], offs[1]);
+    EXPECT_EQ(idx[0], idx[1]);
+    EXPECT_EQ(offs[0], offs[2]);
+    EXPECT_EQ(idx[0], idx[2]);
+  }
+  omp_set_num_threads(saved);
+}
+
+TEST(VerletList, RebuildingReusesStateCorrectly) {
+  // A list rebuilt on a different set must describe only the new set.
+  VerletList l;
+  const Cloud a = clustered(2000, 21), b = spread(500, 0.05, 22);
+  l.build(a.x, a.r, kR0);
+  l.build(b.x, b.r, kR0);
+  EXPECT_EQ(list_pairs(l), brute_pairs(b, kR0, 0.0));
+}
+
+TEST(VerletList, RejectsInvalidInput) {
+  Cloud c = clustered(50, 3);
+  VerletList l;
+  EXPECT_THROW(l.build(c.x, c.r, -1.0), std::invalid_argument);
+  EXPECT_THROW(l.build(c.x, std::vector<double>(49, kR0), 0.0), std::invalid_argument);
+  c.x[7].x = std::nan("");
+  EXPECT_THROW(l.build(c.x, c.r, 0.0), std::invalid_argument);
+  VerletList empty;
+  empty.build({}, {}, kR0);
+  EXPECT_EQ(empty.num_pairs(), 0u);
+  EXPECT_EQ(empty.offsets().size(), 1u);
+}
+
+TEST(VerletList, MemoryIsLinearInParticlesForAHugeBox) {
+  // 1000 particles over a 1e6 m box: a dense grid of 2-10 mm cells would need ~1e26 cells.
+  const std::size_t n = 1000;
+  const Cloud c = spread(n, 1e6, 13);
+  VerletList l;
+  l.build(c.x, c.r, kR0);
+  EXPECT_EQ(l.num_pairs(), 0u);  // no two particles are near each other in such a box
+  const VerletList::GridStats& g = l.grid_stats();
+  EXPECT_LE(g.cells, n);
+  EXPECT_LE(g.hash_slots, 4 * n);
+  EXPECT_LE(static_cast<double>(g.dense_slots), CellGrid::kDenseFactor * static_cast<double>(n));
+  // Bound from the container layout (~200 bytes per particle, see cell_grid.hpp), doubled for
+  // growth slack: 512 bytes per particle for the grid while building; between builds the list
+  // keeps its centres at build time, offsets and pairs only (here no pairs: 32 bytes).
+  EXPECT_LE(g.bytes, 512 * n);
+  EXPECT_GT(g.bytes, 0u);
+  EXPECT_LE(l.memory_bytes(), 64 * n);
+  EXPECT_EQ(brute_pairs(c, kR0, 0.0).size(), 0u);
+}
+
+}  // namespace
+}  // namespace mpdem

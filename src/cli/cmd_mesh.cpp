@@ -60,8 +60,8 @@ int write(const MeshArgs& a, const std::string& shape, const std::function<Trian
 }
 
 // Options every shape takes, and the callback that queues the build.
-CLI::App* shape(CLI::App& mesh, const std::string& name, const std::string& help, std::shared_ptr<MeshArgs> a,
-                ToolAction& action, std::function<TriangleMesh()> build) {
+CLI::App* shape(CLI::App& mesh, const std::string& name, const std::string& help, const std::shared_ptr<MeshArgs>& a,
+                ToolAction& action, const std::function<TriangleMesh()>& build) {
   auto* c = mesh.add_subcommand(name, help);
   c->add_option("-o,--output", a->output, "file to write (.csv barrier CSV, .stl STL)")->required();
   c->add_option("--format", a->format, "csv, stl (binary) or stl-ascii (default: from the extension)");

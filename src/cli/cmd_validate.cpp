@@ -37,7 +37,7 @@ fs::path executable_dir() {
 
 // examples/validation in the working directory, the executable's folder or one of their parents.
 fs::path find_cases_dir() {
-  for (fs::path start : {fs::current_path(), executable_dir()}) {
+  for (const fs::path& start : {fs::current_path(), executable_dir()}) {
     for (fs::path d = start; !d.empty(); d = d.parent_path()) {
       if (fs::is_directory(d / "examples" / "validation")) return d / "examples" / "validation";
       if (d == d.parent_path()) break;

@@ -3,13 +3,17 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <cstdio>
+
 #include "cli/bench_command.hpp"
 #include "cli/commands.hpp"
 #include "cli/tool_commands.hpp"
 #include "io/input_error.hpp"
 #include "sim/run_error.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+int dispatch(int argc, char** argv) {
   CLI::App app{"mpdem - multiphysics soft-sphere Discrete Element Method engine"};
   app.set_version_flag("--version", std::string("mpdem ") + MPDEM_VERSION);
   app.require_subcommand(1);
@@ -73,4 +77,17 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+// Nothing escapes: setting up the command line or reporting an error may itself throw (out of
+// memory, a closed stderr); the exit status then still says "failed".
+int main(int argc, char** argv) {
+  try {
+    return dispatch(argc, argv);
+  } catch (...) {
+    std::fputs("error: unexpected failure\n", stderr);
+    return 1;
+  }
 }

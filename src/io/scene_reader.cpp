@@ -147,7 +147,7 @@ void read_near_field(const TomlSection& root, const Model& model, NearFieldParam
 std::filesystem::path existing_file(const TomlSection& s, std::string_view k, const std::filesystem::path& dir) {
   const std::string name = s.require(s.string(k), k);
   if (name.empty()) s.fail(k, "expected a file name, got an empty string");
-  const std::filesystem::path p = (dir / std::filesystem::path(name)).lexically_normal();
+  std::filesystem::path p = (dir / std::filesystem::path(name)).lexically_normal();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(p, ec)) s.fail(k, "file '" + p.string() + "' does not exist");
   return p;

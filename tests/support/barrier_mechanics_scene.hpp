@@ -1,5 +1,5 @@
 #pragma once
-// Common setup of the particle-barrier mechanics tests: the particles' material and size, gravity, the
+// Common setup of the contact mechanics tests (particle-particle and particle-barrier): the particles' material and size, gravity, the
 // sphere mass and E* against a barrier, and a base scene (integrator, time step, gravity, tolerances).
 #include <cmath>
 

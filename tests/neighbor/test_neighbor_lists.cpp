@@ -1,21 +1,16 @@
-// Neighbour search through the engine (physics.md section 11): the lists NeighborSearch keeps
-// against an O(N^2) brute force, contacts found by Interactions against brute-force touching
-// pairs, independence of the results from the skin (i.e. from when the lists are rebuilt),
-// contact history across a rebuild with reordering, the domain-exit policy of the `mpdem`
-// executable, and bitwise identical results for 1 and 2 OpenMP threads.
+// Neighbour lists through the engine (physics.md section 11): the lists NeighborSearch keeps and the contacts
+// Interactions finds against brute force across rebuilds, springs across a reordering, the domain-exit policy.
 #include <gtest/gtest.h>
-#include <omp.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <map>
 #include <random>
 #include <set>
@@ -24,80 +19,24 @@
 #include <utility>
 #include <vector>
 
-#include "core/parallel.hpp"
-#include "neighbor/pair_blocks.hpp"
-#include "contact/pair_batch.hpp"
 #include "integrate/integrator_policy.hpp"
 #include "integrate/verlet.hpp"
 #include "model/material_variants.hpp"
 #include "sim/interactions.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "contact/particle_contacts.hpp"
-#include "sim/simulation.hpp"
+#include "support/dense_granular_scene.hpp"
 #include "support/scene_builder.hpp"
 
 namespace mpdem {
 namespace {
 
 using test::add_particle;
+using test::add_rect;
+using test::dense_scene;
 using test::make_scene;
+using test::set_contact_law;
 using IdPair = std::pair<std::int64_t, std::int64_t>;
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Rectangle a-b-c-d as two triangles of one group (barriers work from both sides).
-void add_rect(Scene& s, std::int64_t& next, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const Material& m = s.model.materials.front();
-  const int g = s.barriers.group_index("box");
-  s.barriers.add(next++, a, b, c, g, m.young, m.poisson, MotionLaw{}, 0.0, kNaN);
-  s.barriers.add(next++, a, c, d, g, m.young, m.poisson, MotionLaw{}, 0.0, kNaN);
-}
-
-// Open box [0, L]^2 x [0, H]: floor and four walls.
-void add_box(Scene& s, double L, double H) {
-  std::int64_t next = 1;
-  add_rect(s, next, {0, 0, 0}, {L, 0, 0}, {L, L, 0}, {0, L, 0});
-  add_rect(s, next, {0, 0, 0}, {0, L, 0}, {0, L, H}, {0, 0, H});
-  add_rect(s, next, {L, 0, 0}, {L, 0, H}, {L, L, H}, {L, L, 0});
-  add_rect(s, next, {0, 0, 0}, {0, 0, H}, {L, 0, H}, {L, 0, 0});
-  add_rect(s, next, {0, L, 0}, {L, L, 0}, {L, L, H}, {0, L, H});
-}
-
-void set_contact_law(Scene& s, double mu) {
-  for (ContactLawParams* c : {&s.model.params.contact.particle_particle, &s.model.params.contact.particle_barrier}) {
-    c->restitution = 0.5;
-    c->mu_static = mu;
-    c->mu_dynamic = mu;
-    c->mu_rolling = 0.0;
-  }
-}
-
-// A dense granular scene: particles on a jittered cubic lattice of spacing `a` (radii in
-// [r0, r0 (1 + spread)]), random velocities up to v0 and spins, in an open box with gravity.
-// Spacing near 2 r0 (overlaps below the engine's 5 % check) makes contacts and springs form at once.
-Scene dense_scene(int nx, int ny, int nz, double r0, double spread, double a, double v0, unsigned seed,
-                  double dt) {
-  Scene s = make_scene(dt, 1.0);
-  s.model.params.time.integrator = Integrator::Verlet;
-  s.model.params.fields.gravity = {0.0, 0.0, -9.81};
-  set_contact_law(s, 0.5);
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::uniform_real_distribution<double> ur(0.0, 1.0);
-  std::int64_t id = 100;
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) {
-        const double r = r0 * (1.0 + spread * ur(rng));
-        const Vec3 x{a * (i + 0.5) + 0.01 * a * u(rng), a * (j + 0.5) + 0.01 * a * u(rng), a * (k + 0.5)};
-        const Vec3 v{v0 * u(rng), v0 * u(rng), v0 * u(rng)};
-        const Vec3 w{v0 / r0 * u(rng), v0 / r0 * u(rng), v0 / r0 * u(rng)};
-        add_particle(s, id, r, x, v, w);
-        id += 3;  // ids are not indices
-      }
-  add_box(s, a * std::max(nx, ny), a * (nz + 2));
-  return s;
-}
 
 std::map<std::int64_t, std::size_t> index_of(const Particles& p) {
   std::map<std::int64_t, std::size_t> m;
@@ -238,73 +177,7 @@ TEST(NeighborEngine, ListsAndContactsEqualBruteForceAcrossRebuilds) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// 2. Trajectories do not depend on the skin (i.e. on when the lists are rebuilt).
-
-struct Snapshot {
-  std::map<std::int64_t, std::array<Vec3, 3>> xvw;  // id -> x [m], v [m/s], w [rad/s]
-  std::uint64_t rebuilds = 0;
-  std::size_t contacts_pp = 0, contacts_pb = 0;
-};
-
-// States by id plus the counters, at the end of a run.
-Snapshot snapshot_of(Simulation& sim) {
-  Snapshot out;
-  const Particles& p = sim.particles();
-  for (std::size_t i = 0; i < p.size(); ++i) out.xvw[p.id[i]] = {p.x[i], p.v[i], p.w[i]};
-  out.rebuilds = sim.interactions().stats().rebuilds;
-  out.contacts_pp = sim.interactions().stats().contacts_pp;
-  out.contacts_pb = sim.interactions().stats().contacts_pb;
-  return out;
-}
-
-Snapshot run_dense(double skin, Integrator integ, int steps, int nx, int ny, int nz, unsigned seed) {
-  const double r0 = 1e-3, dt = 4e-6;
-  Scene s = dense_scene(nx, ny, nz, r0, 0.05, 2.12 * r0, 0.15, seed, dt);
-  s.model.params.time.integrator = integ;
-  s.model.params.neighbor.skin = skin;
-  Simulation sim(std::move(s), RunOptions{{}, false, false});
-  for (int k = 0; k < steps; ++k) sim.advance(dt);
-  return snapshot_of(sim);
-}
-
-// max over particles |a - b| / max over particles |a|, per field.
-std::array<double, 3> relative_difference(const Snapshot& a, const Snapshot& b) {
-  std::array<double, 3> diff{}, scale{};
-  for (const auto& [id, f] : a.xvw) {
-    const auto& g = b.xvw.at(id);
-    for (int k = 0; k < 3; ++k) {
-      diff[k] = std::max(diff[k], std::sqrt(norm2(f[k] - g[k])));
-      scale[k] = std::max(scale[k], std::sqrt(norm2(f[k])));
-    }
-  }
-  for (int k = 0; k < 3; ++k) diff[k] /= scale[k];
-  return diff;
-}
-
-TEST(NeighborEngine, TrajectoriesIndependentOfSkin) {
-  const double d = 2e-3;  // m, nominal diameter
-  const int steps = 3000;
-  const Snapshot thin = run_dense(0.05 * d, Integrator::Verlet, steps, 6, 6, 5, 3);
-  const Snapshot thick = run_dense(0.5 * d, Integrator::Verlet, steps, 6, 6, 5, 3);
-  // The scene must really exercise the lists: contacts with particles and walls, and rebuilds
-  // at different times.
-  EXPECT_GT(thin.contacts_pp, 60u);  // of 180 particles, after settling
-  EXPECT_GT(thin.contacts_pb, 10u);
-  EXPECT_GT(thin.rebuilds, thick.rebuilds);
-  EXPECT_GT(thick.rebuilds, 1u);
-  ASSERT_EQ(thin.xvw.size(), thick.xvw.size());
-  const auto rel = relative_difference(thin, thick);
-  EXPECT_LE(rel[0], 1e-9) << "positions";
-  EXPECT_LE(rel[1], 1e-9) << "velocities";
-  EXPECT_LE(rel[2], 1e-9) << "angular velocities";
-  RecordProperty("rel_x", std::to_string(rel[0]));
-  std::printf("skin 0.05 d vs 0.5 d after %d steps: rebuilds %llu vs %llu, relative difference x %.3g v %.3g w %.3g\n",
-              steps, static_cast<unsigned long long>(thin.rebuilds), static_cast<unsigned long long>(thick.rebuilds),
-              rel[0], rel[1], rel[2]);
-}
-
-// ---------------------------------------------------------------------------------------------
-// 3. A tangential spring survives a forced rebuild with reordering.
+// 2. A tangential spring survives a forced rebuild with reordering.
 
 TEST(NeighborEngine, SpringsSurviveRebuildAndReordering) {
   const double r0 = 1e-3, dt = 4e-6;
@@ -356,7 +229,7 @@ TEST(NeighborEngine, SpringsSurviveRebuildAndReordering) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// 4. Domain exit policy, through the mpdem executable.
+// 3. Domain exit policy, through the mpdem executable.
 
 struct ProcessResult {
   int status = -1;
@@ -425,71 +298,6 @@ TEST(NeighborEngine, DomainExitStopFailsNamingTheParticle) {
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_NE(r.err.find("particle id 7"), std::string::npos) << r.err;
   std::filesystem::remove_all(dir);
-}
-
-// ---------------------------------------------------------------------------------------------
-// 5. Bitwise identical results for 1 and 2 threads (> kParallelThreshold particles).
-
-Snapshot run_threads(int threads, Integrator integ, int steps) {
-  omp_set_num_threads(threads);
-  const double r0 = 1e-3, dt = 4e-6;
-  Scene s = dense_scene(20, 20, 14, r0, 0.05, 2.12 * r0, 0.15, 21, dt);  // 5600 particles
-  s.model.params.time.integrator = integ;
-  s.model.params.time.phi = 0.5;
-  Simulation sim(std::move(s), RunOptions{{}, false, false});
-  for (int k = 0; k < steps; ++k) sim.advance(dt);
-  return snapshot_of(sim);
-}
-
-void expect_bitwise_equal(const Snapshot& a, const Snapshot& b) {
-  ASSERT_EQ(a.xvw.size(), b.xvw.size());
-  std::size_t differ = 0;
-  for (const auto& [id, f] : a.xvw) {
-    const auto& g = b.xvw.at(id);
-    for (int k = 0; k < 3; ++k) differ += f[k].x != g[k].x || f[k].y != g[k].y || f[k].z != g[k].z;
-  }
-  EXPECT_EQ(differ, 0u);
-  EXPECT_EQ(a.contacts_pp, b.contacts_pp);
-  EXPECT_EQ(a.contacts_pb, b.contacts_pb);
-  EXPECT_EQ(a.rebuilds, b.rebuilds);
-}
-
-// The AVX-512 candidate selection (when built in) selects bit for bit what the scalar one does.
-Snapshot run_selection(bool vector, Integrator integ, int steps) {
-  const double r0 = 1e-3, dt = 4e-6;
-  Scene s = dense_scene(20, 20, 14, r0, 0.05, 2.12 * r0, 0.15, 21, dt);
-  s.model.params.time.integrator = integ;
-  s.model.params.time.phi = 0.5;
-  Simulation sim(std::move(s), RunOptions{{}, false, false});
-  sim.interactions().particle_contacts().use_vector_select(vector);
-  for (int k = 0; k < steps; ++k) sim.advance(dt);
-  return snapshot_of(sim);
-}
-
-TEST(NeighborEngine, VectorAndScalarCandidateSelectionAgreeBitwise) {
-  if (!kVectorSelect) GTEST_SKIP() << "built without AVX-512: only the scalar selection exists";
-  for (Integrator integ : {Integrator::Verlet, Integrator::Trapezoidal}) {
-    const int steps = integ == Integrator::Verlet ? 100 : 25;
-    const Snapshot vec = run_selection(true, integ, steps);
-    const Snapshot sca = run_selection(false, integ, steps);
-    EXPECT_GT(vec.contacts_pp, 50u);
-    expect_bitwise_equal(vec, sca);
-  }
-}
-
-TEST(NeighborEngine, BitwiseIdenticalForOneAndTwoThreads) {
-  static_assert(20 * 20 * 14 > 2 * kParallelThreshold, "the scene must take the parallel paths");
-  static_assert(20 * 20 * 14 > PairBlocks::kBlock, "the scene must have pairs across blocks, one block per thread");
-  for (Integrator integ : {Integrator::Verlet, Integrator::Trapezoidal}) {
-    const int steps = integ == Integrator::Verlet ? 100 : 25;
-    const Snapshot one = run_threads(1, integ, steps);
-    const Snapshot two = run_threads(2, integ, steps);
-    // Contacts exist (few yet after 25 trapezoidal steps: the lattice starts nearly touching).
-    EXPECT_GT(one.contacts_pp, 50u);
-    EXPECT_GT(one.contacts_pb, 20u);
-    expect_bitwise_equal(one, two);
-  }
-  omp_set_num_threads(omp_get_num_procs());
 }
 
 }  // namespace

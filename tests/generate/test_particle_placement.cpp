@@ -1,8 +1,7 @@
-// Particle generator (`mpdem generate`, scene `generate = {...}`): no overlaps, every sphere inside
-// its region, reproducible from the seed, radius statistics matching the requested distribution,
-// solid fraction targets met, clear errors for impossible requests.
+// Particle generator (`mpdem generate`, scene `generate = {...}`): no overlaps, every sphere inside its region,
+// reproducible from the seed, solid fraction targets met, velocities, clear errors for impossible requests.
 #include <gtest/gtest.h>
-#include <unistd.h>
+#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,35 +20,23 @@
 #include "generate/generator.hpp"
 #include "tools/mesh_builder.hpp"
 #include "geometry/mesh_solid.hpp"
+#include "support/generate_box_spec.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;
+using mpdem::test::box_spec;
 using mpdem::test::TempDir;
-using mpdem::test::error_of;
-using mpdem::test::expect_contains;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-GenerateSpec box_spec(double side, std::size_t count, double radius) {
-  GenerateSpec s;
-  s.region.shape = RegionShape::Box;
-  s.region.min = {0, 0, 0};
-  s.region.max = {side, side, side};
-  s.count = count;
-  s.radius.law = RadiusLaw::Constant;
-  s.radius.value = radius;
-  return s;
 }
 
 // Smallest surface-to-surface distance over all pairs, by brute force (no grid: independent of
@@ -66,40 +53,11 @@ double min_surface_gap(const std::vector<GeneratedParticle>& ps) {
   return best;
 }
 
-struct Moments {
-  double mean = 0, sd = 0;
-};
-Moments moments(const std::vector<GeneratedParticle>& ps) {
-  Moments m;
-  if (ps.size() < 2) return m;
-  for (const auto& p : ps) m.mean += p.radius;
-  m.mean /= static_cast<double>(ps.size());
-  for (const auto& p : ps) m.sd += (p.radius - m.mean) * (p.radius - m.mean);
-  m.sd = std::sqrt(m.sd / static_cast<double>(ps.size() - 1));
-  return m;
-}
-
 double volume_fraction(const std::vector<GeneratedParticle>& ps, double region_volume) {
   double v = 0.0;
   for (const auto& p : ps) v += 4.0 / 3.0 * kPi * p.radius * p.radius * p.radius;
   return v / region_volume;
 }
-
-// 10^4 particles in a box 4x larger than needed for the packing: fast, and every radius fits.
-std::vector<GeneratedParticle> sample_radii(const RadiusDistribution& d, double r_typ) {
-  GenerateSpec s = box_spec(60 * r_typ * 4, 10000, 0.0);
-  s.radius = d;
-  s.seed = 7;
-  return generate_particles(s).particles;
-}
-
-// Prints the measured/expected ratios (for the record; the checks follow).
-void report(const char* what, const Moments& m, double mean, double sd) {
-  std::printf("  %-22s mean/expected %.5f  sd/expected %.5f\n", what, m.mean / mean, m.sd / sd);
-}
-
-double normal_pdf(double z) { return std::exp(-0.5 * z * z) / std::sqrt(2 * kPi); }
-double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 
 }  // namespace
 
@@ -230,90 +188,6 @@ TEST(Generator, SameSeedSameFileOtherSeedDifferent) {
     EXPECT_EQ(p.x[i], g[i].x);
     EXPECT_EQ(p.radius[i], g[i].radius);
     EXPECT_EQ(p.v[i], g[i].v);
-  }
-}
-
-TEST(Generator, RadiusMomentsMatchDistributions) {
-  // Sample mean and standard deviation of 10^4 generated radii within 2 % of the analytic values.
-  const double tol = 0.02;
-  {
-    RadiusDistribution d;
-    d.law = RadiusLaw::Uniform;
-    d.min = 0.001;
-    d.max = 0.003;
-    const Moments m = moments(sample_radii(d, 0.002));
-    report("uniform", m, 0.002, (0.002 / std::sqrt(12.0)));
-    EXPECT_NEAR(m.mean / 0.002, 1.0, tol);
-    EXPECT_NEAR(m.sd / (0.002 / std::sqrt(12.0)), 1.0, tol);
-  }
-  {
-    // Normal(2 mm, 0.5 mm) truncated to [1.5, 2.8] mm: alpha = -1, beta = 1.6.
-    RadiusDistribution d;
-    d.law = RadiusLaw::Normal;
-    d.mean = 0.002;
-    d.std = 0.0005;
-    d.min = 0.0015;
-    d.max = 0.0028;
-    const double a = -1.0, b = 1.6, Z = normal_cdf(b) - normal_cdf(a);
-    const double mean = 0.002 + 0.0005 * (normal_pdf(a) - normal_pdf(b)) / Z;
-    const double var = 0.0005 * 0.0005 *
-                       (1 + (a * normal_pdf(a) - b * normal_pdf(b)) / Z - std::pow((normal_pdf(a) - normal_pdf(b)) / Z, 2));
-    const Moments m = moments(sample_radii(d, 0.002));
-    report("truncated normal", m, mean, std::sqrt(var));
-    EXPECT_NEAR(m.mean / mean, 1.0, tol);
-    EXPECT_NEAR(m.sd / std::sqrt(var), 1.0, tol);
-  }
-  {
-    // Far-tail window (the uniform-proposal branch): Normal(1 mm, 0.2 mm) on [1.4, 1.6] mm.
-    RadiusDistribution d;
-    d.law = RadiusLaw::Normal;
-    d.mean = 0.001;
-    d.std = 0.0002;
-    d.min = 0.0014;
-    d.max = 0.0016;
-    const double a = 2.0, b = 3.0, Z = normal_cdf(b) - normal_cdf(a);
-    const double mean = 0.001 + 0.0002 * (normal_pdf(a) - normal_pdf(b)) / Z;
-    const double var = 0.0002 * 0.0002 *
-                       (1 + (a * normal_pdf(a) - b * normal_pdf(b)) / Z - std::pow((normal_pdf(a) - normal_pdf(b)) / Z, 2));
-    const Moments m = moments(sample_radii(d, 0.0015));
-    report("normal far tail", m, mean, std::sqrt(var));
-    EXPECT_NEAR(m.mean / mean, 1.0, tol);
-    EXPECT_NEAR(m.sd / std::sqrt(var), 1.0, tol);
-  }
-  {
-    RadiusDistribution d;  // log-normal given by the mean and std of r itself
-    d.law = RadiusLaw::LogNormal;
-    d.mean = 0.002;
-    d.std = 0.0004;
-    const Moments m = moments(sample_radii(d, 0.003));
-    report("lognormal", m, 0.002, 0.0004);
-    EXPECT_NEAR(m.mean / 0.002, 1.0, tol);
-    EXPECT_NEAR(m.sd / 0.0004, 1.0, tol);
-  }
-  {
-    // Number fractions 0.3 / 0.7 of 1 mm / 2 mm: mean 1.7 mm, variance 0.21 mm^2.
-    RadiusDistribution d;
-    d.law = RadiusLaw::Discrete;
-    d.radii = {0.001, 0.002};
-    d.fractions = {0.3, 0.7};
-    const Moments m = moments(sample_radii(d, 0.002));
-    report("discrete by number", m, 0.0017, (std::sqrt(0.21) * 0.001));
-    EXPECT_NEAR(m.mean / 0.0017, 1.0, tol);
-    EXPECT_NEAR(m.sd / (std::sqrt(0.21) * 0.001), 1.0, tol);
-  }
-  {
-    // Equal mass fractions of 1 mm and 2 mm: numbers in ratio 8 : 1, mean 10/9 mm,
-    // E[r^2] = (8 + 4)/9 mm^2.
-    RadiusDistribution d;
-    d.law = RadiusLaw::Discrete;
-    d.radii = {0.001, 0.002};
-    d.fractions = {0.5, 0.5};
-    d.mass_fractions = true;
-    const Moments m = moments(sample_radii(d, 0.002));
-    const double mean = 10.0 / 9.0, sd = std::sqrt(12.0 / 9.0 - mean * mean);
-    report("discrete by mass", m, (mean * 0.001), (sd * 0.001));
-    EXPECT_NEAR(m.mean / (mean * 0.001), 1.0, tol);
-    EXPECT_NEAR(m.sd / (sd * 0.001), 1.0, tol);
   }
 }
 
@@ -453,44 +327,4 @@ TEST(Generator, CommandLine) {
                 "--max-attempts 500"), 2);
   EXPECT_NE(slurp(dir.path / "err.txt").find("could not place particle"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir.path / "c.csv"));
-}
-
-TEST(Generator, SamplerMomentsLargeSample) {
-  // The samplers alone, 10^6 draws: statistical error of the sd below 0.1 %, tolerance 0.5 %.
-  // (The 10^4-particle test above has ~0.8 % statistical error on the log-normal sd, so a bias
-  // of the sampler smaller than its 2 % tolerance would only show here.)
-  const auto check = [](const RadiusDistribution& d, double mean, double sd) {
-    Rng rng(12345);
-    const int n = 1000000;
-    double s = 0, s2 = 0;
-    for (int i = 0; i < n; ++i) {
-      const double r = d.sample(rng);
-      s += r;
-      s2 += r * r;
-    }
-    const double m = s / n, v = (s2 - n * m * m) / (n - 1);
-    EXPECT_NEAR(m / mean, 1.0, 0.005) << d.describe();
-    EXPECT_NEAR(std::sqrt(v) / sd, 1.0, 0.005) << d.describe();
-  };
-  RadiusDistribution ln;
-  ln.law = RadiusLaw::LogNormal;
-  ln.mean = 0.002;
-  ln.std = 0.0004;
-  check(ln, 0.002, 0.0004);
-  RadiusDistribution nt;  // Normal(2, 0.5) mm on [1.5, 2.8] mm, as above
-  nt.law = RadiusLaw::Normal;
-  nt.mean = 0.002;
-  nt.std = 0.0005;
-  nt.min = 0.0015;
-  nt.max = 0.0028;
-  const double a = -1.0, b = 1.6, Z = normal_cdf(b) - normal_cdf(a);
-  const double mean = 0.002 + 0.0005 * (normal_pdf(a) - normal_pdf(b)) / Z;
-  const double var = 0.0005 * 0.0005 *
-                     (1 + (a * normal_pdf(a) - b * normal_pdf(b)) / Z - std::pow((normal_pdf(a) - normal_pdf(b)) / Z, 2));
-  check(nt, mean, std::sqrt(var));
-  RadiusDistribution un;
-  un.law = RadiusLaw::Uniform;
-  un.min = 0.001;
-  un.max = 0.003;
-  check(un, 0.002, 0.002 / std::sqrt(12.0));
 }

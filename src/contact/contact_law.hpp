@@ -107,8 +107,10 @@ inline ContactResult evaluate_contact(const PairLaw& c, const ContactState& s) {
   out.fn_limit = out.fn > 0.0 ? out.fn : 0.0;
   const TangentialResult t = tangential_force(project_spring(s.spring, s.normal), s.increment, s.vt, k.k_t, d_t,
                                               c.mu_s, c.mu_d, out.fn_limit, s.decide);
-  out.ft = t.force;
-  out.spring = t.spring;
+  // Component by component: a whole-Vec3 copy between the two result records keeps GCC from
+  // splitting them into scalars, and the kernels' loops would not vectorise.
+  out.ft.x = t.force.x, out.ft.y = t.force.y, out.ft.z = t.force.z;
+  out.spring.x = t.spring.x, out.spring.y = t.spring.y, out.spring.z = t.spring.z;
   out.slipped = t.slipped;
   out.energy = k.energy + 0.5 * k.k_t * norm2(t.spring);
   out.damping = normal_power + (t.slipped ? 0.0 : t.dissipated_power);

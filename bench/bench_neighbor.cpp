@@ -19,8 +19,8 @@ namespace {
 
 using mpdem::Vec3;
 
-constexpr double kR = 1e-3;        // m, smallest radius
-constexpr double kSkin = 0.2e-3;   // m
+constexpr double kR = 1e-3;       // m, smallest radius
+constexpr double kSkin = 0.2e-3;  // m
 
 struct Packing {
   std::vector<Vec3> x;    // m

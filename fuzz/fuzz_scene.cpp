@@ -18,9 +18,8 @@ namespace {
 void write_sources() {
   mpdem_fuzz::write_file("p.csv", "id,x,y,z,radius\n0,0,0,0,0.01\n1,0.1,0,0,0.01\n");
   mpdem_fuzz::write_file("b.csv", "x1,y1,z1,x2,y2,z2,x3,y3,z3\n0,0,0,1,0,0,0,1,0\n");
-  mpdem_fuzz::write_file("m.stl",
-                         "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
-                         "endloop\nendfacet\nendsolid t\n");
+  mpdem_fuzz::write_file("m.stl", "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                                  "endloop\nendfacet\nendsolid t\n");
 }
 
 }  // namespace

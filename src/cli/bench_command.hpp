@@ -8,14 +8,14 @@
 namespace mpdem::cli {
 
 struct BenchArgs {
-  std::filesystem::path data;           // LAMMPS data file (plain text)
-  std::string integrator = "verlet";    // "verlet" or "trapezoidal"
-  double phi = 0.5;                     // -, trapezoidal weight
-  int threads = 1;                      // OpenMP threads (>= 1)
-  long steps = 0;                       // timed steps; 0 = 5000 for N <= 50,000 particles, else 2000
-  long relax = 1000;                    // untimed steps before the timed window
-  double dt = 4e-6;                     // s
-  double skin = 2e-4;                   // m, Verlet skin
+  std::filesystem::path data;         // LAMMPS data file (plain text)
+  std::string integrator = "verlet";  // "verlet" or "trapezoidal"
+  double phi = 0.5;                   // -, trapezoidal weight
+  int threads = 1;                    // OpenMP threads (>= 1)
+  long steps = 0;                     // timed steps; 0 = 5000 for N <= 50,000 particles, else 2000
+  long relax = 1000;                  // untimed steps before the timed window
+  double dt = 4e-6;                   // s
+  double skin = 2e-4;                 // m, Verlet skin
 };
 
 // Runs the benchmark and prints the results on stdout (a human-readable block and one

@@ -78,10 +78,10 @@ void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
   const Vec3 lo = d.lo, hi = d.hi;
   const double h = hi.z;
   std::int64_t next = 1;
-  add_wall(b, next, g, {lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, h}, {lo.x, lo.y, h});  // x = lo
-  add_wall(b, next, g, {hi.x, lo.y, lo.z}, {hi.x, lo.y, h}, {hi.x, hi.y, h}, {hi.x, hi.y, lo.z});  // x = hi
-  add_wall(b, next, g, {lo.x, lo.y, lo.z}, {lo.x, lo.y, h}, {hi.x, lo.y, h}, {hi.x, lo.y, lo.z});  // y = lo
-  add_wall(b, next, g, {lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, h}, {lo.x, hi.y, h});  // y = hi
+  add_wall(b, next, g, {lo.x, lo.y, lo.z}, {lo.x, hi.y, lo.z}, {lo.x, hi.y, h}, {lo.x, lo.y, h});        // x = lo
+  add_wall(b, next, g, {hi.x, lo.y, lo.z}, {hi.x, lo.y, h}, {hi.x, hi.y, h}, {hi.x, hi.y, lo.z});        // x = hi
+  add_wall(b, next, g, {lo.x, lo.y, lo.z}, {lo.x, lo.y, h}, {hi.x, lo.y, h}, {hi.x, lo.y, lo.z});        // y = lo
+  add_wall(b, next, g, {lo.x, hi.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, h}, {lo.x, hi.y, h});        // y = hi
   add_wall(b, next, g, {lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z});  // floor
 }
 

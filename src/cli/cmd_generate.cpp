@@ -53,7 +53,8 @@ GenerateSpec to_spec(const GenerateArgs& a) {
     s.region.max = vec(a.max, "--max");
   } else if (a.region == "cylinder") {
     s.region.shape = RegionShape::Cylinder;
-    if (a.base.empty() || !(a.cylinder_radius > 0)) bad("--base", "a cylinder region needs --base, --axis and --cylinder-radius > 0");
+    if (a.base.empty() || !(a.cylinder_radius > 0))
+      bad("--base", "a cylinder region needs --base, --axis and --cylinder-radius > 0");
     s.region.base = vec(a.base, "--base");
     s.region.axis = vec(a.axis, "--axis");
     s.region.radius = a.cylinder_radius;
@@ -140,7 +141,8 @@ void add_generate_command(CLI::App& app, ToolAction& action) {
       ->check(CLI::NonNegativeNumber);
   c->add_option("--material", a->material, "value of the CSV material column");
   auto* vel = c->add_option("--velocity", a->velocity, "initial velocity vx vy vz (m/s)")->expected(3);
-  auto* spd = c->add_option("--speed", a->speed, "random directions with this speed (m/s)")->check(CLI::NonNegativeNumber);
+  auto* spd =
+      c->add_option("--speed", a->speed, "random directions with this speed (m/s)")->check(CLI::NonNegativeNumber);
   vel->excludes(spd);
   c->add_option("--max-attempts", a->max_attempts, "random positions tried per particle (default 100000)")
       ->check(CLI::PositiveNumber);

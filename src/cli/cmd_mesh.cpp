@@ -17,7 +17,7 @@ namespace {
 
 struct MeshArgs {
   std::filesystem::path output;
-  std::string format;                         // csv, stl, stl-ascii ("" = by extension)
+  std::string format;  // csv, stl, stl-ascii ("" = by extension)
   std::string group;
   std::int64_t first_id = 0;  // id of the first triangle (CSV)
   bool flip = false;
@@ -66,7 +66,8 @@ CLI::App* shape(CLI::App& mesh, const std::string& name, const std::string& help
   c->add_option("-o,--output", a->output, "file to write (.csv barrier CSV, .stl STL)")->required();
   c->add_option("--format", a->format, "csv, stl (binary) or stl-ascii (default: from the extension)");
   c->add_option("--group", a->group, "group column of the CSV / solid name of the STL");
-  c->add_option("--first-id", a->first_id, "id of the first triangle in a CSV (default 0), to combine meshes in one scene");
+  c->add_option("--first-id", a->first_id,
+                "id of the first triangle in a CSV (default 0), to combine meshes in one scene");
   c->add_flag("--flip", a->flip, "reverse all normals");
   c->add_option("--rotate-deg", a->rotate_deg, "rotation about x, then y, then z (deg)")->expected(3);
   c->add_option("--translate", a->translate, "translation after the rotation (m)")->expected(3);
@@ -99,8 +100,9 @@ void add_mesh_command(CLI::App& app, ToolAction& action) {
   cyl->add_option("--segments", r.segments, "facets around (default 32)");
   cyl->add_flag("--closed", r.closed, "add end caps (watertight)");
 
-  auto* fun = shape(*mesh, "funnel", "hopper: cone from the outlet (z = 0) to the top, optional wall above", a, action,
-                    [a] { return make_funnel(a->top_radius, a->outlet_radius, a->height, a->wall_height, a->segments); });
+  auto* fun = shape(
+      *mesh, "funnel", "hopper: cone from the outlet (z = 0) to the top, optional wall above", a, action,
+      [a] { return make_funnel(a->top_radius, a->outlet_radius, a->height, a->wall_height, a->segments); });
   fun->add_option("--top-radius", r.top_radius, "radius at the top of the cone (m)")->required();
   fun->add_option("--outlet-radius", r.outlet_radius, "outlet radius (m)")->required();
   fun->add_option("--height", r.height, "cone height (m)")->required();
@@ -119,8 +121,10 @@ void add_mesh_command(CLI::App& app, ToolAction& action) {
 
   auto* pl = shape(*mesh, "plate", "plate in z = 0 with a centred rectangular or circular hole, normal +z", a, action,
                    [a]() -> TriangleMesh {
-                     if (!a->hole_size.empty()) return make_plate_with_rect_hole(a->size[0], a->size[1], a->hole_size[0], a->hole_size[1]);
-                     if (a->hole_radius > 0) return make_plate_with_round_hole(a->size[0], a->size[1], a->hole_radius, a->segments);
+                     if (!a->hole_size.empty())
+                       return make_plate_with_rect_hole(a->size[0], a->size[1], a->hole_size[0], a->hole_size[1]);
+                     if (a->hole_radius > 0)
+                       return make_plate_with_round_hole(a->size[0], a->size[1], a->hole_radius, a->segments);
                      throw std::invalid_argument("give --hole-size HX HY or --hole-radius R");
                    });
   pl->add_option("--size", r.size, "lx ly (m)")->expected(2)->required();

@@ -25,7 +25,7 @@ struct ValidateArgs {
   bool quick = false;
   bool list = false;
   fs::path output = "validation";
-  fs::path cases_dir;     // "" = found from the working directory or the executable
+  fs::path cases_dir;  // "" = found from the working directory or the executable
   std::string python = "/usr/bin/python3";
 };
 
@@ -48,8 +48,7 @@ fs::path find_cases_dir() {
 
 int validate(const ValidateArgs& a) {
   if (a.list) {
-    for (const validate::CaseSpec& c : validate::all_cases())
-      fmt::print("{}{}\n", c.name, c.quick ? "  (quick)" : "");
+    for (const validate::CaseSpec& c : validate::all_cases()) fmt::print("{}{}\n", c.name, c.quick ? "  (quick)" : "");
     return 0;
   }
   validate::SuiteOptions o;
@@ -63,8 +62,8 @@ int validate(const ValidateArgs& a) {
                      "the executable; give it with --cases-dir)");
   o.plot_script = o.cases_dir.parent_path().parent_path() / "scripts" / "plot_validation.py";
   if (!fs::exists(o.plot_script))
-    throw InputError("mpdem validate", 0, "--cases-dir", "scripts/plot_validation.py beside examples/ (not found at " +
-                                                             o.plot_script.string() + ")");
+    throw InputError("mpdem validate", 0, "--cases-dir",
+                     "scripts/plot_validation.py beside examples/ (not found at " + o.plot_script.string() + ")");
   o.python = a.python;
   try {
     validate::select_cases(o.cases, o.quick);

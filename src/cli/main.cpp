@@ -33,7 +33,9 @@ int dispatch(int argc, char** argv) {
 
   mpdem::cli::BenchArgs bench;
   auto* bench_cmd = app.add_subcommand("bench", "settled-bed benchmark (docs/benchmark.md)");
-  bench_cmd->add_option("data", bench.data, "LAMMPS/LIGGGHTS data file (plain text)")->required()->check(CLI::ExistingFile);
+  bench_cmd->add_option("data", bench.data, "LAMMPS/LIGGGHTS data file (plain text)")
+      ->required()
+      ->check(CLI::ExistingFile);
   bench_cmd->add_option("--integrator", bench.integrator, "verlet or trapezoidal")
       ->check(CLI::IsMember({"verlet", "trapezoidal"}));
   bench_cmd->add_option("--phi", bench.phi, "trapezoidal weight")->check(CLI::Range(0.0, 1.0));

@@ -12,8 +12,8 @@ namespace fs = std::filesystem;
 namespace {
 // Everything a run writes into its output folder (docs/output.md).
 constexpr std::array<std::string_view, 11> kOutputs{
-    "particles",   "particles.pvd", "barriers",         "barriers.pvd", "particles_csv", "log.csv",
-    "barrier_groups.csv", "removed.csv", "checkpoint.bin", "thermal_log.csv", "warnings.txt"};
+    "particles",          "particles.pvd", "barriers",       "barriers.pvd",    "particles_csv", "log.csv",
+    "barrier_groups.csv", "removed.csv",   "checkpoint.bin", "thermal_log.csv", "warnings.txt"};
 }  // namespace
 
 void prepare_output_folder(const fs::path& dir, bool overwrite) {

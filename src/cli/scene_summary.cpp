@@ -28,7 +28,10 @@ TimeStepAdvice time_step_advice(const Scene& scene) {
   double hertz_pb = inf;
   double stiffest_barrier = 0.0, stiffest_nu = 0.0;
   for (std::size_t e = 0; e < b.size(); ++e)
-    if (b.young[e] > stiffest_barrier) { stiffest_barrier = b.young[e]; stiffest_nu = b.poisson[e]; }
+    if (b.young[e] > stiffest_barrier) {
+      stiffest_barrier = b.young[e];
+      stiffest_nu = b.poisson[e];
+    }
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Material& m = scene.model.materials[static_cast<std::size_t>(p.material[i])];
     a.rayleigh = std::min(a.rayleigh, rayleigh_time(p.radius[i], m.density, m.young, m.poisson));
@@ -70,15 +73,18 @@ void print_summary(const Scene& scene) {
     std::size_t n = 0;
     double area = 0.0;
     for (std::size_t e = 0; e < b.size(); ++e)
-      if (b.group[e] == static_cast<int>(g)) { ++n; area += b.area[e]; }
+      if (b.group[e] == static_cast<int>(g)) {
+        ++n;
+        area += b.area[e];
+      }
     fmt::print("  {:<16} {} triangles, area {:.6g} m^2\n", b.group_names[g], n, area);
   }
   fmt::print("integrator: {}  phi {}  dt {:.4g} s  duration {:.6g} s  ({:.0f} steps)\n",
              prm.time.integrator == Integrator::Verlet ? "verlet" : "trapezoidal", prm.time.phi, prm.time.dt,
              prm.time.duration, std::ceil(prm.time.duration / prm.time.dt));
   const TimeStepAdvice a = time_step_advice(scene);
-  fmt::print("time step: Rayleigh time {:.4g} s; Hertz contact time at {:.3g} m/s: particle-particle {:.4g} s", a.rayleigh,
-             a.reference_speed, a.hertz_pp);
+  fmt::print("time step: Rayleigh time {:.4g} s; Hertz contact time at {:.3g} m/s: particle-particle {:.4g} s",
+             a.rayleigh, a.reference_speed, a.hertz_pp);
   if (a.hertz_pb > 0.0) fmt::print(", particle-barrier {:.4g} s", a.hertz_pb);
   fmt::print("\nrecommended dt <= {:.4g} s (min of 0.2 x Rayleigh time and contact time / 50)\n", a.recommended);
 }
@@ -89,7 +95,8 @@ void warn_about_time_step(const Scene& scene) {
     fmt::print(stderr,
                "warning: time.dt = {:.4g} s exceeds the recommended {:.4g} s (0.2 x Rayleigh time {:.4g} s, Hertz "
                "contact time {:.4g} s / 50); contacts may be under-resolved\n",
-               scene.model.params.time.dt, a.recommended, a.rayleigh, std::min(a.hertz_pp, a.hertz_pb > 0 ? a.hertz_pb : a.hertz_pp));
+               scene.model.params.time.dt, a.recommended, a.rayleigh,
+               std::min(a.hertz_pp, a.hertz_pb > 0 ? a.hertz_pb : a.hertz_pp));
 }
 
 }  // namespace mpdem::cli

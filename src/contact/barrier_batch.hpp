@@ -17,22 +17,22 @@ namespace mpdem {
 // one contact before starting the next waits on latency; the law's loop over a batch has
 // independent iterations the processor overlaps (and vectorises). Structure of arrays for that.
 struct BarrierBatch {
-  static constexpr std::size_t kLanes = 8;     // doubles per vector (AVX-512)
-  static constexpr std::size_t kContacts = 64; // contacts per batch, a multiple of kLanes
+  static constexpr std::size_t kLanes = 8;      // doubles per vector (AVX-512)
+  static constexpr std::size_t kContacts = 64;  // contacts per batch, a multiple of kLanes
   static constexpr std::size_t kSlots = BarrierContactStore::kSlots;
   static_assert(kContacts % kLanes == 0 && kContacts >= kSlots, "batches hold whole vectors and a particle");
 
   // --- the particles, in active order
   std::size_t particles = 0;
-  std::uint32_t k[kContacts];        // active position
-  std::uint32_t end[kContacts];      // one past its last contact (the first is the previous end)
+  std::uint32_t k[kContacts];    // active position
+  std::uint32_t end[kContacts];  // one past its last contact (the first is the previous end)
   // --- their contacts, from detection and history (collect)
   std::size_t count = 0;
-  std::int32_t element[kContacts];   // barrier element
-  const BarrierSlot* hist[kContacts];  // history record, or null
-  SlipDecision decide[kContacts];    // imposed stick/slip (later iterations)
-  Vec3 point[kContacts];             // m, contact point
-  double overlap[kContacts];         // m
+  std::int32_t element[kContacts];                           // barrier element
+  const BarrierSlot* hist[kContacts];                        // history record, or null
+  SlipDecision decide[kContacts];                            // imposed stick/slip (later iterations)
+  Vec3 point[kContacts];                                     // m, contact point
+  double overlap[kContacts];                                 // m
   double nx[kContacts], ny[kContacts], nz[kContacts];        // -, unit normal towards the particle
   double vx[kContacts], vy[kContacts], vz[kContacts];        // m/s, particle velocity
   double wx[kContacts], wy[kContacts], wz[kContacts];        // rad/s, particle rotation
@@ -41,19 +41,19 @@ struct BarrierBatch {
   double vt0x[kContacts], vt0y[kContacts], vt0z[kContacts];  // m/s, stored tangential velocity
   // the pair's law (contact_table.hpp's PairLaw, by field)
   ContactLawKind law[kContacts];
-  double cn[kContacts], ct[kContacts], sr[kContacts];          // PairLaw::cn, ct, shear_root
+  double cn[kContacts], ct[kContacts], sr[kContacts];                                     // PairLaw::cn, ct, shear_root
   double xin[kContacts], xit[kContacts], mus[kContacts], mud[kContacts], mur[kContacts];  // -
-  double r[kContacts], m[kContacts];                          // m, kg: r* = R, m* = m
+  double r[kContacts], m[kContacts];                                                      // m, kg: r* = R, m* = m
   // --- the law's results (contact_law)
-  double fx[kContacts], fy[kContacts], fz[kContacts];        // N, force on the particle
-  double tx[kContacts], ty[kContacts], tz[kContacts];        // N m, r_P x f_t
-  double sx[kContacts], sy[kContacts], sz[kContacts];        // m, spring for the next step
-  double vtx[kContacts], vty[kContacts], vtz[kContacts];     // m/s, tangential velocity
-  double fn[kContacts];                                       // N, positive part of the net normal force
-  double energy[kContacts];                                   // J, elastic energy
-  double damping[kContacts];                                  // W, dashpot power
-  double friction[kContacts];                                 // W, sliding power
-  std::int64_t slip[kContacts];                               // 1 when sliding (8 bytes, like SlipDecision)
+  double fx[kContacts], fy[kContacts], fz[kContacts];     // N, force on the particle
+  double tx[kContacts], ty[kContacts], tz[kContacts];     // N m, r_P x f_t
+  double sx[kContacts], sy[kContacts], sz[kContacts];     // m, spring for the next step
+  double vtx[kContacts], vty[kContacts], vtz[kContacts];  // m/s, tangential velocity
+  double fn[kContacts];                                   // N, positive part of the net normal force
+  double energy[kContacts];                               // J, elastic energy
+  double damping[kContacts];                              // W, dashpot power
+  double friction[kContacts];                             // W, sliding power
+  std::int64_t slip[kContacts];                           // 1 when sliding (8 bytes, like SlipDecision)
 
   // Room for one more particle with all its contacts.
   bool room() const { return count + kSlots <= kContacts && particles < kContacts; }

@@ -12,7 +12,8 @@ void BarrierContactStore::relayout(const BarrierBroadphase& broad) {
   // indices beyond the list - a scene that shrank without compact() - are dropped).
   std::vector<std::uint32_t> carry;
   for (std::size_t k = 0; k < active_.size(); ++k)
-    if (active_[k] < n && (committed_used_[k] > 0 || first_used_[k] > 0)) carry.push_back(static_cast<std::uint32_t>(k));
+    if (active_[k] < n && (committed_used_[k] > 0 || first_used_[k] > 0))
+      carry.push_back(static_cast<std::uint32_t>(k));
   if (!sorted_)
     std::sort(carry.begin(), carry.end(), [this](std::uint32_t a, std::uint32_t b) { return active_[a] < active_[b]; });
 
@@ -141,7 +142,9 @@ void BarrierContactStore::restore(BinaryReader& r, std::size_t particles) {
   std::vector<std::uint32_t> active = r.vector<std::uint32_t>();
   std::vector<std::uint8_t> counts = r.vector<std::uint8_t>();
   std::vector<BarrierSlot> slots = r.vector<BarrierSlot>();
-  const auto mismatch = [] { return std::runtime_error("checkpoint does not match the scene (barrier contact history)"); };
+  const auto mismatch = [] {
+    return std::runtime_error("checkpoint does not match the scene (barrier contact history)");
+  };
   if (counts.size() != active.size()) throw mismatch();
   std::vector<std::uint32_t> begin{0};
   for (std::size_t k = 0; k < active.size(); ++k) {
@@ -171,8 +174,8 @@ void BarrierContactStore::restore(BinaryReader& r, std::size_t particles) {
 std::size_t BarrierContactStore::bytes() const {
   const auto cap = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   return cap(active_) + cap(begin_) + cap(group_) + cap(elem_offset_) + cap(elem_user_) + cap(committed_) +
-         cap(tentative_) + cap(first_) + cap(loads_) + cap(committed_used_) + cap(tentative_used_) +
-         cap(first_used_) + cap(load_used_);
+         cap(tentative_) + cap(first_) + cap(loads_) + cap(committed_used_) + cap(tentative_used_) + cap(first_used_) +
+         cap(load_used_);
 }
 
 }  // namespace mpdem

@@ -25,30 +25,30 @@
 
 namespace mpdem {
 
-struct BarrierSlot {           // history of one contact (no padding: checkpoints copy its bytes)
-  std::int32_t element = -1;   // barrier element index
-  std::uint32_t slipped = 0;   // 1 when the Coulomb limit was hit
-  Vec3 spring;                 // m, tangential spring
-  Vec3 vt0;                    // m/s, tangential velocity (start of the next step)
-  Vec3 normal;                 // -, contact normal (towards the particle)
-  Vec3 wr0;                    // rad/s, the particle's rotation (start of the next step, rolling law)
+struct BarrierSlot {          // history of one contact (no padding: checkpoints copy its bytes)
+  std::int32_t element = -1;  // barrier element index
+  std::uint32_t slipped = 0;  // 1 when the Coulomb limit was hit
+  Vec3 spring;                // m, tangential spring
+  Vec3 vt0;                   // m/s, tangential velocity (start of the next step)
+  Vec3 normal;                // -, contact normal (towards the particle)
+  Vec3 wr0;                   // rad/s, the particle's rotation (start of the next step, rolling law)
 };
 
-struct BarrierLoad {           // one contact's action on its element
-  Vec3 force;                  // N, on the element
-  Vec3 point;                  // m, contact point
-  double overlap = 0.0;        // m
-  std::int32_t element = -1;   // barrier element index
+struct BarrierLoad {          // one contact's action on its element
+  Vec3 force;                 // N, on the element
+  Vec3 point;                 // m, contact point
+  double overlap = 0.0;       // m
+  std::int32_t element = -1;  // barrier element index
 };
 
-struct BarrierFirst {          // the first iteration's stick/slip decision of one contact
-  std::int32_t element = -1;   // barrier element index
-  std::uint32_t slipped = 0;   // 1 when the contact slipped
+struct BarrierFirst {         // the first iteration's stick/slip decision of one contact
+  std::int32_t element = -1;  // barrier element index
+  std::uint32_t slipped = 0;  // 1 when the contact slipped
 };
 
 class BarrierContactStore {
  public:
-  static constexpr int kSlots = 8;              // simultaneous barrier contacts per particle
+  static constexpr int kSlots = 8;               // simultaneous barrier contacts per particle
   static constexpr std::uint32_t kGroup = 1024;  // particles per reduction group (see groups())
 
   // True when the layout does not match the broad phase (rebuilt, or records renumbered).
@@ -68,7 +68,7 @@ class BarrierContactStore {
   std::size_t bytes() const;  // memory held by the store (capacities)
 
   // --- the layout (valid when !stale) ---
-  std::size_t size() const { return active_.size(); }             // active particles A
+  std::size_t size() const { return active_.size(); }  // active particles A
   std::uint32_t particle(std::size_t k) const { return active_[k]; }
   std::size_t capacity(std::size_t k) const { return begin_[k + 1] - begin_[k]; }  // slots of k
   // Reduction groups: the active particles whose indices fall in one block of kGroup particles,
@@ -99,22 +99,22 @@ class BarrierContactStore {
  private:
   static constexpr std::uint32_t kGone = 0xffffffffu;  // particle index of a removed particle
 
-  std::vector<std::uint32_t> active_;         // [A] particle indices (ascending unless dirty_)
-  std::vector<std::uint32_t> begin_{0};       // [A + 1] slot ranges
-  std::vector<std::uint32_t> group_{0};       // [groups + 1] positions in active_
-  std::vector<std::uint32_t> elem_offset_{0}; // [M + 1] CSR of elem_user_
-  std::vector<std::uint32_t> elem_user_;      // [candidates of active particles] positions in active_
-  std::vector<BarrierSlot> committed_;        // [slots]
-  std::vector<BarrierSlot> tentative_;        // [slots]
-  std::vector<BarrierFirst> first_;           // [slots]
-  std::vector<BarrierLoad> loads_;            // [slots] of the last evaluation
-  std::vector<std::uint8_t> committed_used_;  // [A] records in committed_
-  std::vector<std::uint8_t> tentative_used_;  // [A] records in tentative_
-  std::vector<std::uint8_t> first_used_;      // [A] records in first_
-  std::vector<std::uint8_t> load_used_;       // [A] records in loads_
-  bool dirty_ = true;                         // records renumbered or restored since the layout
-  bool sorted_ = true;                        // active_ ascending (false after permute)
-  std::uint64_t generation_ = 0;              // broad-phase build of the layout
+  std::vector<std::uint32_t> active_;          // [A] particle indices (ascending unless dirty_)
+  std::vector<std::uint32_t> begin_{0};        // [A + 1] slot ranges
+  std::vector<std::uint32_t> group_{0};        // [groups + 1] positions in active_
+  std::vector<std::uint32_t> elem_offset_{0};  // [M + 1] CSR of elem_user_
+  std::vector<std::uint32_t> elem_user_;       // [candidates of active particles] positions in active_
+  std::vector<BarrierSlot> committed_;         // [slots]
+  std::vector<BarrierSlot> tentative_;         // [slots]
+  std::vector<BarrierFirst> first_;            // [slots]
+  std::vector<BarrierLoad> loads_;             // [slots] of the last evaluation
+  std::vector<std::uint8_t> committed_used_;   // [A] records in committed_
+  std::vector<std::uint8_t> tentative_used_;   // [A] records in tentative_
+  std::vector<std::uint8_t> first_used_;       // [A] records in first_
+  std::vector<std::uint8_t> load_used_;        // [A] records in loads_
+  bool dirty_ = true;                          // records renumbered or restored since the layout
+  bool sorted_ = true;                         // active_ ascending (false after permute)
+  std::uint64_t generation_ = 0;               // broad-phase build of the layout
 };
 
 }  // namespace mpdem

@@ -34,7 +34,8 @@ template <int write = 0, class T>
 
 // Everything collect and flush read or write of particle i (its candidate list: only the
 // offsets, the list itself is fetched once they have arrived, see evaluate()).
-[[gnu::always_inline]] inline void prefetch_particle(const Particles& p, const BarrierBroadphase& broad, std::size_t i) {
+[[gnu::always_inline]] inline void prefetch_particle(const Particles& p, const BarrierBroadphase& broad,
+                                                     std::size_t i) {
   prefetch_item(p.x, i);
   prefetch_item(p.v, i);
   prefetch_item(p.w, i);
@@ -102,7 +103,7 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
     // right away, in the order element_loads would (ascending particle), saving that pass.
     const bool serial = omp_get_num_threads() == 1;
     if (serial) direct = true;
-    std::vector<BarrierContact> found;             // per thread, reused by its particles
+    std::vector<BarrierContact> found;  // per thread, reused by its particles
     found.reserve(kSlots);
     const auto batch = std::make_unique<BarrierBatch>();  // per thread (~40 KB: not on the stack)
     // Runs of groups with equal numbers of active particles (those near walls cluster in index).
@@ -136,15 +137,14 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
 
   if (direct)
     for (std::size_t e = 0; e < m; ++e) b.pressure[e] = element_pressure(b, e);
-  else
-    element_loads(b);
+  else element_loads(b);
   if (req.commit) store_.commit();
   return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3]};
 }
 
 void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers& b, const BarrierBroadphase& broad,
-                              const EvalRequest& req, std::vector<BarrierContact>& found,
-                              BarrierBatch& batch, std::array<double, 5>& acc) {
+                              const EvalRequest& req, std::vector<BarrierContact>& found, BarrierBatch& batch,
+                              std::array<double, 5>& acc) {
   const std::size_t i = store_.particle(k);
   const auto cand = broad.candidates(i);
   if (cand.empty()) {  // kept only for its records: no contact now (and no force to add)
@@ -174,15 +174,22 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
     const BarrierSlot* hist = nullptr;
     double best = kInheritCos;
     for (int s = 0; s < old_used; ++s) {
-      if (old[s].element == static_cast<std::int32_t>(e)) { hist = &old[s]; break; }
+      if (old[s].element == static_cast<std::int32_t>(e)) {
+        hist = &old[s];
+        break;
+      }
     }
     if (!hist) {
       for (int s = 0; s < old_used; ++s) {
         if (old[s].element < 0) continue;
         bool still = false;
-        for (std::size_t c2 = 0; c2 < count; ++c2) still |= found[c2].element == static_cast<std::uint32_t>(old[s].element);
+        for (std::size_t c2 = 0; c2 < count; ++c2)
+          still |= found[c2].element == static_cast<std::uint32_t>(old[s].element);
         const double cosang = dot(old[s].normal, bc.normal);
-        if (!still && cosang > best) { best = cosang; hist = &old[s]; }
+        if (!still && cosang > best) {
+          best = cosang;
+          hist = &old[s];
+        }
       }
     }
     // Later iterations keep the first iteration's stick/slip decision (physics/tangential.hpp).

@@ -65,7 +65,7 @@ class BarrierContacts {
   void element_loads(Barriers& b);  // sums the loads of the last evaluation onto the elements, in particle order
 
   const Model& model_;
-  ContactTable table_;                          // rebuilt from model_ at every evaluation
+  ContactTable table_;  // rebuilt from model_ at every evaluation
   BarrierTopology topo_;
   BarrierContactStore store_;
   std::vector<std::array<double, 5>> partial_;  // [groups] sums of one evaluation, per group

@@ -68,14 +68,14 @@ struct MixedLaw {
 
 // One contact as the kernel's geometry gives it.
 struct ContactState {
-  double overlap = 0.0;   // m, > 0 in contact
-  double r_star = 0.0;    // m, (52) (barrier: R)
-  double m_star = 0.0;    // kg, (53) (barrier: m)
-  Vec3 normal;            // -, unit, towards the body the force acts on
+  double overlap = 0.0;      // m, > 0 in contact
+  double r_star = 0.0;       // m, (52) (barrier: R)
+  double m_star = 0.0;       // kg, (53) (barrier: m)
+  Vec3 normal;               // -, unit, towards the body the force acts on
   double normal_rate = 0.0;  // m/s, v_rel . n (negative approaching)
-  Vec3 vt;                // m/s, tangential relative velocity (61)
-  Vec3 spring;            // m, stored spring (any plane; projected here (59))
-  Vec3 increment;         // m, spring increment of the step (64)
+  Vec3 vt;                   // m/s, tangential relative velocity (61)
+  Vec3 spring;               // m, stored spring (any plane; projected here (59))
+  Vec3 increment;            // m, spring increment of the step (64)
   SlipDecision decide = SlipDecision::Free;
 };
 
@@ -105,8 +105,8 @@ inline ContactResult evaluate_contact(const PairLaw& c, const ContactState& s) {
   out.fn = (k.clamp & (f < 0.0)) ? 0.0 : f;
   const double normal_power = (k.f_el - out.fn) * s.normal_rate;
   out.fn_limit = out.fn > 0.0 ? out.fn : 0.0;
-  const TangentialResult t = tangential_force(project_spring(s.spring, s.normal), s.increment, s.vt, k.k_t, d_t,
-                                              c.mu_s, c.mu_d, out.fn_limit, s.decide);
+  const TangentialResult t = tangential_force(project_spring(s.spring, s.normal), s.increment, s.vt, k.k_t, d_t, c.mu_s,
+                                              c.mu_d, out.fn_limit, s.decide);
   // Component by component: a whole-Vec3 copy between the two result records keeps GCC from
   // splitting them into scalars, and the kernels' loops would not vectorise.
   out.ft.x = t.force.x, out.ft.y = t.force.y, out.ft.z = t.force.z;

@@ -61,8 +61,7 @@ PairLaw resolve_pair_law(const ContactLawParams& p, double E_star, double G_star
   l.shear_root = l.cn > 0.0 ? std::sqrt(l.ct / l.cn) : 0.0;
   // Restitution -> damping ratio: the Hertz calibration (section 5 Departure), or for the linear
   // law the exact (55), whose oscillator it was derived for.
-  if (p.damping_ratio)
-    l.xi_n = *p.damping_ratio;
+  if (p.damping_ratio) l.xi_n = *p.damping_ratio;
   else if (p.restitution)
     l.xi_n = linear ? thesis_damping_ratio(*p.restitution) : damping_ratio_for_restitution(*p.restitution);
   l.xi_t = p.tangential_damping;
@@ -80,7 +79,7 @@ void ContactTable::build(const Model& model) {
   rolling_ = false;
   for (std::size_t a = 0; a < n_; ++a) {
     const Material& ma = mats[a];
-    const double ca = (1.0 - ma.poisson * ma.poisson) / ma.young;       // (51)
+    const double ca = (1.0 - ma.poisson * ma.poisson) / ma.young;                // (51)
     const double sa = (2.0 - ma.poisson) / shear_modulus(ma.young, ma.poisson);  // Mindlin G*
     for (std::size_t b = 0; b < n_; ++b) {
       const Material& mb = mats[b];
@@ -90,11 +89,10 @@ void ContactTable::build(const Model& model) {
       pp_[a * n_ + b] = resolve_pair_law(pair_params(model, model.params.contact.particle_particle, a, b, true),
                                          1.0 / (ca + cb), 1.0 / (sa + sb));
       // A particle against the half-space of the barrier's material (section 7).
-      pb_[a * n_ + b] = resolve_pair_law(
-          pair_params(model, model.params.contact.particle_barrier, a, b, false),
-          effective_modulus(ma.young, ma.poisson, mb.young, mb.poisson),
-          effective_shear_modulus(shear_modulus(ma.young, ma.poisson), ma.poisson, shear_modulus(mb.young, mb.poisson),
-                                  mb.poisson));
+      pb_[a * n_ + b] = resolve_pair_law(pair_params(model, model.params.contact.particle_barrier, a, b, false),
+                                         effective_modulus(ma.young, ma.poisson, mb.young, mb.poisson),
+                                         effective_shear_modulus(shear_modulus(ma.young, ma.poisson), ma.poisson,
+                                                                 shear_modulus(mb.young, mb.poisson), mb.poisson));
       rolling_ = rolling_ || pp_[a * n_ + b].mu_r > 0.0 || pb_[a * n_ + b].mu_r > 0.0;
     }
   }

@@ -105,9 +105,8 @@ void contact_stage(const PairPass& q, Batch& b) {
     } else {
       c.increment = dt_phi * c.vt;
     }
-    const PairLaw law = kUniform ? u
-                                 : PairLaw{b.law[t], b.cn[t], b.ct[t], b.sr[t], b.xin[t], b.xit[t],
-                                           b.mus[t], b.mud[t], b.mur[t]};
+    const PairLaw law = kUniform ? u : PairLaw{b.law[t], b.cn[t],  b.ct[t],  b.sr[t], b.xin[t],
+                                               b.xit[t], b.mus[t], b.mud[t], b.mur[t]};
     const ContactResult r = evaluate_contact<Law>(law, c);
     b.overlap[t] = c.overlap;
     b.nx[t] = nrm.x, b.ny[t] = nrm.y, b.nz[t] = nrm.z;
@@ -239,10 +238,8 @@ PairBlockSums evaluate_block(const PairPass& q, std::size_t lo, std::size_t hi, 
     if (k + 4 * kAhead < q.pairs) __builtin_prefetch(q.idx + k + 4 * kAhead);
     const std::size_t cnt = std::min(kGroup, k1 - k);
 #if MPDEM_VECTOR_SELECT
-    if (q.vector_select)
-      select_vector(q, b, k, cnt, end, c);
-    else
-      select_scalar(q, b, k, cnt, end, c);
+    if (q.vector_select) select_vector(q, b, k, cnt, end, c);
+    else select_scalar(q, b, k, cnt, end, c);
 #else
     select_scalar(q, b, k, cnt, end, c);
 #endif

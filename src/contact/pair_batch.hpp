@@ -25,8 +25,8 @@ struct ContactTerms {
 
 // The deepest contact, relative to the smaller radius.
 struct DeepestPair {
-  double ratio = 0.0;          // -, overlap / min(R_i, R_j)
-  std::int64_t first = -1;     // particle ids
+  double ratio = 0.0;       // -, overlap / min(R_i, R_j)
+  std::int64_t first = -1;  // particle ids
   std::int64_t second = -1;
 };
 
@@ -41,37 +41,37 @@ struct PairBlockSums {
 
 // Everything the kernel reads and writes, as plain pointers into distinct arrays.
 struct PairPass {
-  const Vec3* __restrict x;                  // [N] m
-  const Vec3* __restrict v;                  // [N] m/s
-  const Vec3* __restrict w;                  // [N] rad/s
-  const std::int64_t* __restrict id;         // [N]
-  const ContactTerms* __restrict terms;      // [N]
-  const double* __restrict inertia;          // [N] kg m^2 (rolling resistance)
-  const int* __restrict material;            // [N] material index
-  const PairLaw* __restrict laws;            // [materials x materials] contact table (contact_table.hpp)
-  const std::size_t* __restrict off;         // [N+1] half-list CSR offsets
-  const std::uint32_t* __restrict idx;       // [pairs] second members
-  const std::uint32_t* __restrict first;     // [pairs] first members
-  Vec3* __restrict force;                    // [N] N, accumulated
-  Vec3* __restrict torque;                   // [N] N m, accumulated
-  Vec3* __restrict spring;                   // [pairs] m, committed spring (updated at commits)
-  Vec3* __restrict vt0;                      // [pairs] m/s step-start tangential velocity, or null
-  Vec3* __restrict wr0;                      // [pairs] rad/s step-start w_i - w_j, or null
-  std::uint8_t* __restrict slipped;          // [pairs] first iteration's slip, or null
-  Vec3* __restrict cross_force;              // [cross] N, force on the second member
-  Vec3* __restrict cross_torque;             // [cross] N m, torque on the second member
-  std::size_t materials = 0;                 // rows of laws
-  bool uniform = false;                      // every particle has one material: uniform_law for all pairs
+  const Vec3* __restrict x;               // [N] m
+  const Vec3* __restrict v;               // [N] m/s
+  const Vec3* __restrict w;               // [N] rad/s
+  const std::int64_t* __restrict id;      // [N]
+  const ContactTerms* __restrict terms;   // [N]
+  const double* __restrict inertia;       // [N] kg m^2 (rolling resistance)
+  const int* __restrict material;         // [N] material index
+  const PairLaw* __restrict laws;         // [materials x materials] contact table (contact_table.hpp)
+  const std::size_t* __restrict off;      // [N+1] half-list CSR offsets
+  const std::uint32_t* __restrict idx;    // [pairs] second members
+  const std::uint32_t* __restrict first;  // [pairs] first members
+  Vec3* __restrict force;                 // [N] N, accumulated
+  Vec3* __restrict torque;                // [N] N m, accumulated
+  Vec3* __restrict spring;                // [pairs] m, committed spring (updated at commits)
+  Vec3* __restrict vt0;                   // [pairs] m/s step-start tangential velocity, or null
+  Vec3* __restrict wr0;                   // [pairs] rad/s step-start w_i - w_j, or null
+  std::uint8_t* __restrict slipped;       // [pairs] first iteration's slip, or null
+  Vec3* __restrict cross_force;           // [cross] N, force on the second member
+  Vec3* __restrict cross_torque;          // [cross] N m, torque on the second member
+  std::size_t materials = 0;              // rows of laws
+  bool uniform = false;                   // every particle has one material: uniform_law for all pairs
   PairLaw uniform_law;
-  LawMix mix = LawMix::Hertz;                // the laws the table holds
-  bool rolling = false;                      // some pair has rolling resistance
-  double dt = 0.0;                           // s
-  double phi = 1.0;                          // -
+  LawMix mix = LawMix::Hertz;  // the laws the table holds
+  bool rolling = false;        // some pair has rolling resistance
+  double dt = 0.0;             // s
+  double phi = 1.0;            // -
   int iteration = 0;
   bool commit = false;
-  std::size_t n = 0;                         // particles
-  std::size_t pairs = 0;                     // list slots
-  bool vector_select = true;                 // AVX-512 candidate selection, when built in (kVectorSelect)
+  std::size_t n = 0;          // particles
+  std::size_t pairs = 0;      // list slots
+  bool vector_select = true;  // AVX-512 candidate selection, when built in (kVectorSelect)
 };
 
 // True when the build has the AVX-512 candidate selection (bitwise the same as the scalar one).

@@ -20,10 +20,10 @@
 
 namespace mpdem::pair_kernel {
 
-constexpr std::size_t kBatch = 128;                 // candidate pairs per batch
-constexpr std::size_t kGroup = 8;                   // slots selected at a time
-constexpr std::size_t kLanes = 8;                   // doubles per vector (AVX-512); kBatch is a multiple
-constexpr std::uint32_t kInternal = 0xffffffffu;    // "no cross index"
+constexpr std::size_t kBatch = 128;               // candidate pairs per batch
+constexpr std::size_t kGroup = 8;                 // slots selected at a time
+constexpr std::size_t kLanes = 8;                 // doubles per vector (AVX-512); kBatch is a multiple
+constexpr std::uint32_t kInternal = 0xffffffffu;  // "no cross index"
 static_assert(kBatch % kLanes == 0 && kBatch >= kGroup, "batches hold whole vectors and groups");
 
 // One batch: the candidates, then each stage's results, structure-of-arrays so that the stage
@@ -41,27 +41,27 @@ struct Batch {
   double rr[kBatch], sm[kBatch];                 // m^2, 1/kg: R_i R_j, 1/m_i + 1/m_j
   // The pair's law (several materials only; one material: PairPass::uniform_law).
   ContactLawKind law[kBatch];
-  double cn[kBatch], ct[kBatch], sr[kBatch];     // PairLaw::cn, ct, shear_root
+  double cn[kBatch], ct[kBatch], sr[kBatch];                               // PairLaw::cn, ct, shear_root
   double xin[kBatch], xit[kBatch], mus[kBatch], mud[kBatch], mur[kBatch];  // -, damping, friction
   // Stage 1: geometry and kinematics.
-  double overlap[kBatch];              // m, 0 when apart
+  double overlap[kBatch];                        // m, 0 when apart
   double nx[kBatch], ny[kBatch], nz[kBatch];     // -, n_ij, from j to i
   double vtx[kBatch], vty[kBatch], vtz[kBatch];  // m/s, tangential relative velocity (61)
-  double r[kBatch];                    // m, r* (52)
+  double r[kBatch];                              // m, r* (52)
   // Stage 2a: history.
   double s0x[kBatch], s0y[kBatch], s0z[kBatch];  // m, stored spring
   double v0x[kBatch], v0y[kBatch], v0z[kBatch];  // m/s, step-start tangential velocity (kStepStart)
   SlipDecision decide[kBatch];
   // Stage 2: the law.
-  double fn[kBatch];                   // N, positive part of the net normal force (rolling resistance)
-  double sx[kBatch], sy[kBatch], sz[kBatch];     // m, spring for the next step
-  std::int64_t slip[kBatch];           // 1 when sliding (8 bytes, like SlipDecision)
+  double fn[kBatch];                          // N, positive part of the net normal force (rolling resistance)
+  double sx[kBatch], sy[kBatch], sz[kBatch];  // m, spring for the next step
+  std::int64_t slip[kBatch];                  // 1 when sliding (8 bytes, like SlipDecision)
   // Stage 4a: results.
-  double fx[kBatch], fy[kBatch], fz[kBatch];     // N, force on i
-  double ax[kBatch], ay[kBatch], az[kBatch];     // N, n x f_t
-  double energy[kBatch];               // J, elastic energy of the contact
-  double damping[kBatch];              // W, dashpot power
-  double friction[kBatch];             // W, sliding power
+  double fx[kBatch], fy[kBatch], fz[kBatch];  // N, force on i
+  double ax[kBatch], ay[kBatch], az[kBatch];  // N, n x f_t
+  double energy[kBatch];                      // J, elastic energy of the contact
+  double damping[kBatch];                     // W, dashpot power
+  double friction[kBatch];                    // W, sliding power
   // The vector stages run over whole vectors: the lanes past count repeat the last candidate
   // (gather_members, gather_history), so they compute finite values nobody reads.
   std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }
@@ -82,7 +82,7 @@ inline void forget_history(const PairPass& q, std::size_t k) {
 // commit forgets the history of the other slots. Every slot is written, the count advances only
 // for a candidate (no data-dependent branch).
 inline void select_scalar(const PairPass& q, Batch& b, std::size_t k, std::size_t cnt, std::uint32_t end,
-                   std::uint32_t& c) {
+                          std::uint32_t& c) {
   for (const std::size_t stop = k + cnt; k < stop; ++k) {
     const std::uint32_t i = q.first[k], j = q.idx[k];
     const bool internal = j < end;
@@ -112,7 +112,7 @@ inline void select_scalar(const PairPass& q, Batch& b, std::size_t k, std::size_
 // The same selection, bit for bit, 8 slots at once: gathers of the members' centres and radii,
 // the candidates compressed into the batch, the cross numbers by expansion.
 inline void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_t cnt, std::uint32_t end,
-                   std::uint32_t& c) {
+                          std::uint32_t& c) {
   const __mmask8 lanes = static_cast<__mmask8>((1u << cnt) - 1u);
   const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   const __m256i iv = _mm256_maskz_loadu_epi32(lanes, q.first + k);
@@ -134,7 +134,8 @@ inline void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_
   const __m512d d2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
   const __m512d lim = _mm512_mul_pd(_mm512_mul_pd(reach, reach), _mm512_set1_pd(1.0 + 1e-9));
   const __mmask8 cand = _mm512_mask_cmp_pd_mask(lanes, d2, lim, _CMP_LE_OQ);
-  const __mmask8 crossing = static_cast<__mmask8>(lanes & ~_mm256_cmplt_epu32_mask(jv, _mm256_set1_epi32(static_cast<int>(end))));
+  const __mmask8 crossing = static_cast<__mmask8>(
+      lanes & ~_mm256_cmplt_epu32_mask(jv, _mm256_set1_epi32(static_cast<int>(end))));
   const __m256i cross = _mm256_mask_expand_epi32(_mm256_set1_epi32(static_cast<int>(kInternal)), crossing,
                                                  _mm256_add_epi32(iota, _mm256_set1_epi32(static_cast<int>(c))));
   c += static_cast<std::uint32_t>(std::popcount(static_cast<unsigned>(crossing)));

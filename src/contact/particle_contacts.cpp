@@ -59,15 +59,37 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   const bool uniform = single_material_ >= 0;
   const auto m0 = static_cast<std::size_t>(uniform ? single_material_ : 0);
 
-  const PairPass q{p.x.data(), p.v.data(), p.w.data(), p.id.data(),
-                   terms_.data(), p.inertia.data(), p.material.data(), table_.particle_pairs(),
-                   list.offsets().data(), list.indices().data(), blocks.first_members().data(),
-                   p.force.data(), p.torque.data(),
-                   spring_.data(), vt0_.empty() ? nullptr : vt0_.data(), wr0_.empty() ? nullptr : wr0_.data(),
-                   slipped_.empty() ? nullptr : slipped_.data(), cross_force_.data(), cross_torque_.data(),
-                   table_.materials(), uniform, n > 0 ? table_.particle_pair(m0, m0) : PairLaw{},
-                   table_.particle_mix(), table_.any_rolling(),
-                   req.dt, req.phi, req.iteration, req.commit, n, list.num_pairs(), vector_select_};
+  const PairPass q{p.x.data(),
+                   p.v.data(),
+                   p.w.data(),
+                   p.id.data(),
+                   terms_.data(),
+                   p.inertia.data(),
+                   p.material.data(),
+                   table_.particle_pairs(),
+                   list.offsets().data(),
+                   list.indices().data(),
+                   blocks.first_members().data(),
+                   p.force.data(),
+                   p.torque.data(),
+                   spring_.data(),
+                   vt0_.empty() ? nullptr : vt0_.data(),
+                   wr0_.empty() ? nullptr : wr0_.data(),
+                   slipped_.empty() ? nullptr : slipped_.data(),
+                   cross_force_.data(),
+                   cross_torque_.data(),
+                   table_.materials(),
+                   uniform,
+                   n > 0 ? table_.particle_pair(m0, m0) : PairLaw{},
+                   table_.particle_mix(),
+                   table_.any_rolling(),
+                   req.dt,
+                   req.phi,
+                   req.iteration,
+                   req.commit,
+                   n,
+                   list.num_pairs(),
+                   vector_select_};
 
   // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
   const std::size_t nb = blocks.num_blocks();
@@ -129,10 +151,10 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
 }
 
 std::size_t ParticleContacts::memory_bytes() const {
-  return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() +
-          cross_torque_.capacity()) * sizeof(Vec3) +
-         slipped_.capacity() + terms_.capacity() * sizeof(Terms) +
-         block_sums_.capacity() * sizeof(PairBlockSums) + (block_seconds_.capacity() + block_cost_.capacity()) * sizeof(double);
+  return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() + cross_torque_.capacity()) *
+             sizeof(Vec3) +
+         slipped_.capacity() + terms_.capacity() * sizeof(Terms) + block_sums_.capacity() * sizeof(PairBlockSums) +
+         (block_seconds_.capacity() + block_cost_.capacity()) * sizeof(double);
 }
 
 ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborSearch& search) {

@@ -20,24 +20,24 @@ namespace mpdem {
 // acts on), used to carry springs across list rebuilds and reorderings.
 struct PairHistory {
   std::int64_t id_first = 0, id_second = 0;
-  Vec3 spring;   // m
-  Vec3 vt0;      // m/s
-  Vec3 wr0;      // rad/s, relative rotation w_first - w_second at the step start
+  Vec3 spring;  // m
+  Vec3 vt0;     // m/s
+  Vec3 wr0;     // rad/s, relative rotation w_first - w_second at the step start
 };
 
 struct PairStats {
   std::size_t contacts = 0;
-  double elastic_energy = 0.0;      // J
-  double damping_power = 0.0;       // W, removed by normal + tangential damping
-  double friction_power = 0.0;      // W, removed by sliding and rolling friction
+  double elastic_energy = 0.0;  // J
+  double damping_power = 0.0;   // W, removed by normal + tangential damping
+  double friction_power = 0.0;  // W, removed by sliding and rolling friction
 };
 
 // The deepest contact of the last evaluation, relative to the smaller radius.
 struct OverlapReport {
-  double ratio = 0.0;              // -, overlap / min(R_i, R_j) (particle-barrier: / R_i)
-  std::int64_t particle = -1;      // id of the (first) particle
-  std::int64_t other = -1;         // id of the other particle, or -1
-  std::int64_t element = -1;       // id of the barrier element, or -1
+  double ratio = 0.0;          // -, overlap / min(R_i, R_j) (particle-barrier: / R_i)
+  std::int64_t particle = -1;  // id of the (first) particle
+  std::int64_t other = -1;     // id of the other particle, or -1
+  std::int64_t element = -1;   // id of the barrier element, or -1
 };
 
 class ParticleContacts {
@@ -89,19 +89,19 @@ class ParticleContacts {
   void refresh_terms(const Particles& p, std::uint64_t generation);
 
   const Model& model_;
-  ContactTable table_;               // rebuilt from model_ at every evaluation
+  ContactTable table_;  // rebuilt from model_ at every evaluation
   bool step_start_;
   // Per pair slot [pairs]; the committed history is updated in place by commit evaluations.
-  std::vector<Vec3> spring_;         // m, committed tangential spring of the slot's first member
-  std::vector<Vec3> vt0_;            // m/s, tangential velocity at the step start (step_start)
-  std::vector<Vec3> wr0_;            // rad/s, w_first - w_second at the step start (step_start, mu_r > 0)
+  std::vector<Vec3> spring_;           // m, committed tangential spring of the slot's first member
+  std::vector<Vec3> vt0_;              // m/s, tangential velocity at the step start (step_start)
+  std::vector<Vec3> wr0_;              // rad/s, w_first - w_second at the step start (step_start, mu_r > 0)
   std::vector<std::uint8_t> slipped_;  // stick (0) / slip (1) of the first iteration (step_start)
   // Per cross pair [PairBlocks::num_cross()], the second member's share, added after the block pass:
-  std::vector<Vec3> cross_force_;    // N
-  std::vector<Vec3> cross_torque_;   // N m
-  std::vector<Terms> terms_;         // [N], from the particles' radii and masses
-  std::uint64_t terms_generation_ = 0;  // NeighborSearch::generation() they were computed at
-  int single_material_ = -1;         // the material of every particle, or -1 (several)
+  std::vector<Vec3> cross_force_;          // N
+  std::vector<Vec3> cross_torque_;         // N m
+  std::vector<Terms> terms_;               // [N], from the particles' radii and masses
+  std::uint64_t terms_generation_ = 0;     // NeighborSearch::generation() they were computed at
+  int single_material_ = -1;               // the material of every particle, or -1 (several)
   std::vector<PairBlockSums> block_sums_;  // [blocks]
   std::vector<double> block_seconds_;      // [blocks] s, each block's time at the last evaluation
   std::vector<double> block_cost_;         // [blocks + 1] s, their sum before each block (thread shares)

@@ -21,7 +21,8 @@ std::size_t balanced_split(int r, int threads, std::size_t count, W&& weight_bef
   std::size_t lo = 0, hi = count;  // the first item whose weight before it reaches target
   while (lo < hi) {
     const std::size_t mid = lo + (hi - lo) / 2;
-    if (static_cast<double>(weight_before(mid)) < target) lo = mid + 1; else hi = mid;
+    if (static_cast<double>(weight_before(mid)) < target) lo = mid + 1;
+    else hi = mid;
   }
   // The nearer of the two boundaries around the target (items can be coarse).
   if (lo > 0 && target - static_cast<double>(weight_before(lo - 1)) < static_cast<double>(weight_before(lo)) - target)

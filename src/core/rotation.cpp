@@ -35,9 +35,7 @@ Mat3 quat_matrix(const Quat& q) {
                {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
 }
 
-Quat quat_from_rodrigues(const Vec3& a) {
-  return quat_normalized({1.0, 0.5 * a.x, 0.5 * a.y, 0.5 * a.z});
-}
+Quat quat_from_rodrigues(const Vec3& a) { return quat_normalized({1.0, 0.5 * a.x, 0.5 * a.y, 0.5 * a.z}); }
 
 Vec3 rodrigues_from_rotation_vector(const Vec3& theta) {
   const double angle = norm(theta);

@@ -58,12 +58,12 @@ double NearFieldForces::evaluate(Particles& p, const NeighborSearch& search) {
       const double d = std::sqrt(d2);
       double f = 0.0;  // N, along n_ij
       if (coulomb_) {
-        f += coulomb_force(kc_, p.charge[i], p.charge[j], d);          // (44)
+        f += coulomb_force(kc_, p.charge[i], p.charge[j], d);  // (44)
         acc[0] += coulomb_potential(kc_, p.charge[i], p.charge[j], d);
       }
       if (empirical_) {
         const EmpiricalLaw& c = law(p.material[i], p.material[j]);
-        f += empirical_force(c, d);                                    // (46)
+        f += empirical_force(c, d);  // (46)
         acc[0] += empirical_potential(c, d);
       }
       force_[k] = (f / d) * dx;

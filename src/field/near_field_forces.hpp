@@ -41,11 +41,11 @@ class NearFieldForces {
  private:
   bool coulomb_ = false;
   bool empirical_ = false;
-  double cutoff_ = 0.0;                // m
-  double kc_ = 0.0;                    // N m^2/C^2, 1/(4 pi eps0 eps_r)
+  double cutoff_ = 0.0;  // m
+  double kc_ = 0.0;      // N m^2/C^2, 1/(4 pi eps0 eps_r)
   std::size_t materials_ = 0;
-  std::vector<EmpiricalLaw> table_;    // [materials^2] symmetric coefficient table
-  std::vector<Vec3> force_;            // [pairs] N, force on the slot's first member
+  std::vector<EmpiricalLaw> table_;  // [materials^2] symmetric coefficient table
+  std::vector<Vec3> force_;          // [pairs] N, force on the slot's first member
 };
 
 }  // namespace mpdem

@@ -17,18 +17,18 @@ enum class RegionShape { Box, Cylinder, Mesh };
 
 struct RegionSpec {
   RegionShape shape = RegionShape::Box;
-  Vec3 min{}, max{};              // m, Box: opposite corners
-  Vec3 base{};                    // m, Cylinder: centre of the base disc
-  Vec3 axis{0.0, 0.0, 1.0};       // m, Cylinder: base centre -> top centre (its length is the height)
-  double radius = 0.0;            // m, Cylinder
-  std::filesystem::path mesh;     // Mesh: closed surface, STL or barrier CSV
+  Vec3 min{}, max{};           // m, Box: opposite corners
+  Vec3 base{};                 // m, Cylinder: centre of the base disc
+  Vec3 axis{0.0, 0.0, 1.0};    // m, Cylinder: base centre -> top centre (its length is the height)
+  double radius = 0.0;         // m, Cylinder
+  std::filesystem::path mesh;  // Mesh: closed surface, STL or barrier CSV
 };
 
 struct GenerateSpec {
   RegionSpec region;
   RadiusDistribution radius;
-  std::size_t count = 0;              // particles; 0 = fill to solid_fraction instead
-  double solid_fraction = 0.0;        // -, target sum(4/3 pi r^3) / region volume
+  std::size_t count = 0;        // particles; 0 = fill to solid_fraction instead
+  double solid_fraction = 0.0;  // -, target sum(4/3 pi r^3) / region volume
   std::uint64_t seed = 1;
   double gap = 0.0;                   // m, minimum surface distance between particles and to the boundary
   std::string material;               // written to the CSV `material` column ("" = column left out)

@@ -67,11 +67,9 @@ class PlacementGrid {
   int index(double v, int a) const {
     return std::clamp(static_cast<int>(std::floor((v - lo_[a]) / h_)), 0, dim_[a] - 1);
   }
-  std::size_t flat(int i, int j, int k) const {
-    return (static_cast<std::size_t>(i) * dim_[1] + j) * dim_[2] + k;
-  }
+  std::size_t flat(int i, int j, int k) const { return (static_cast<std::size_t>(i) * dim_[1] + j) * dim_[2] + k; }
   Vec3 lo_;
-  double h_ = 1.0;                // m, cell size
+  double h_ = 1.0;  // m, cell size
   int dim_[3] = {1, 1, 1};
   std::vector<int> head_, next_;  // first sphere per cell, next sphere in the same cell
 };
@@ -141,8 +139,8 @@ GenerateResult generate_particles(const GenerateSpec& spec) {
     if (!done) {
       double wanted = 0.0;
       for (double x : radii) wanted += sphere_volume(x);
-      fail("could not place particle " + std::to_string(n + 1) + " of " + std::to_string(radii.size()) +
-           " (radius " + number_text(r) + " m) in " + std::to_string(spec.max_attempts) +
+      fail("could not place particle " + std::to_string(n + 1) + " of " + std::to_string(radii.size()) + " (radius " +
+           number_text(r) + " m) in " + std::to_string(spec.max_attempts) +
            " random attempts: reached solid fraction " + number_text(placed_volume / res.region_volume) +
            " of the requested " + number_text(wanted / res.region_volume) +
            ". Random sequential addition jams near 0.38 for equal spheres (less near walls); lower "

@@ -12,9 +12,9 @@
 namespace mpdem {
 
 struct GeneratedParticle {
-  Vec3 x;          // m, centre
-  double radius;   // m
-  Vec3 v;          // m/s, initial velocity
+  Vec3 x;         // m, centre
+  double radius;  // m
+  Vec3 v;         // m/s, initial velocity
 };
 
 struct GenerateResult {

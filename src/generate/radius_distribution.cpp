@@ -138,10 +138,9 @@ std::string RadiusDistribution::describe() const {
     case RadiusLaw::Constant: return "constant " + number_text(value) + " m";
     case RadiusLaw::Uniform: return "uniform [" + number_text(min) + ", " + number_text(max) + "] m";
     case RadiusLaw::Normal:
-      return "normal(mean " + number_text(mean) + ", std " + number_text(std) + ") truncated to [" +
-             number_text(min) + ", " + number_text(max) + "] m";
-    case RadiusLaw::LogNormal:
-      return "lognormal(mean " + number_text(mean) + ", std " + number_text(std) + ") m";
+      return "normal(mean " + number_text(mean) + ", std " + number_text(std) + ") truncated to [" + number_text(min) +
+             ", " + number_text(max) + "] m";
+    case RadiusLaw::LogNormal: return "lognormal(mean " + number_text(mean) + ", std " + number_text(std) + ") m";
     case RadiusLaw::Discrete: return "discrete (" + std::to_string(radii.size()) + " radii)";
   }
   return "";

@@ -13,14 +13,14 @@ enum class RadiusLaw { Constant, Uniform, Normal, LogNormal, Discrete };
 
 struct RadiusDistribution {
   RadiusLaw law = RadiusLaw::Constant;
-  double value = 0.0;               // m, Constant: the radius
-  double min = 0.0;                 // m, Uniform/Normal/LogNormal: lower bound (0 = none for LogNormal)
-  double max = 0.0;                 // m, Uniform/Normal/LogNormal: upper bound (0 = none for LogNormal)
-  double mean = 0.0;                // m, Normal: mean of the parent normal; LogNormal: mean of r
-  double std = 0.0;                 // m, Normal: std of the parent normal; LogNormal: std of r
-  std::vector<double> radii;        // m, Discrete: the radii
-  std::vector<double> fractions;    // -, Discrete: weights (normalised internally)
-  bool mass_fractions = false;      // Discrete: fractions are of mass (equal density) not number
+  double value = 0.0;             // m, Constant: the radius
+  double min = 0.0;               // m, Uniform/Normal/LogNormal: lower bound (0 = none for LogNormal)
+  double max = 0.0;               // m, Uniform/Normal/LogNormal: upper bound (0 = none for LogNormal)
+  double mean = 0.0;              // m, Normal: mean of the parent normal; LogNormal: mean of r
+  double std = 0.0;               // m, Normal: std of the parent normal; LogNormal: std of r
+  std::vector<double> radii;      // m, Discrete: the radii
+  std::vector<double> fractions;  // -, Discrete: weights (normalised internally)
+  bool mass_fractions = false;    // Discrete: fractions are of mass (equal density) not number
 
   // "" when the parameters are usable, else what is wrong (names the keys of docs/tools.md).
   std::string problem() const;

@@ -27,9 +27,7 @@ TriangleMesh read_region_mesh(const std::filesystem::path& file) {
 }
 
 Region::Region(const RegionSpec& spec, const std::string& origin, std::size_t line) : spec_(spec) {
-  const auto fail = [&](const std::string& key, const std::string& msg) {
-    throw InputError(origin, line, key, msg);
-  };
+  const auto fail = [&](const std::string& key, const std::string& msg) { throw InputError(origin, line, key, msg); };
   switch (spec.shape) {
     case RegionShape::Box: {
       for (int a = 0; a < 3; ++a)
@@ -56,7 +54,16 @@ Region::Region(const RegionSpec& spec, const std::string& origin, std::size_t li
         const double r = spec.radius * std::sqrt(std::max(0.0, 1.0 - w_[a] * w_[a]));
         const double e0 = spec.base[a], e1 = spec.base[a] + spec.axis[a];
         const double l = std::min(e0, e1) - r, h = std::max(e0, e1) + r;
-        if (a == 0) { lo_.x = l; hi_.x = h; } else if (a == 1) { lo_.y = l; hi_.y = h; } else { lo_.z = l; hi_.z = h; }
+        if (a == 0) {
+          lo_.x = l;
+          hi_.x = h;
+        } else if (a == 1) {
+          lo_.y = l;
+          hi_.y = h;
+        } else {
+          lo_.z = l;
+          hi_.z = h;
+        }
       }
       break;
     }
@@ -79,8 +86,7 @@ Region::Region(const RegionSpec& spec, const std::string& origin, std::size_t li
 bool Region::has_room(double c) const {
   switch (spec_.shape) {
     case RegionShape::Box:
-    case RegionShape::Mesh:
-      return hi_.x - lo_.x > 2 * c && hi_.y - lo_.y > 2 * c && hi_.z - lo_.z > 2 * c;
+    case RegionShape::Mesh: return hi_.x - lo_.x > 2 * c && hi_.y - lo_.y > 2 * c && hi_.z - lo_.z > 2 * c;
     case RegionShape::Cylinder: return spec_.radius > c && height_ > 2 * c;
   }
   return false;

@@ -31,8 +31,8 @@ class Region {
   RegionSpec spec_;
   double volume_ = 0.0;
   Vec3 lo_, hi_;
-  Vec3 u_, v_, w_;                    // Cylinder: orthonormal frame, w_ along the axis
-  double height_ = 0.0;               // m, Cylinder
+  Vec3 u_, v_, w_;       // Cylinder: orthonormal frame, w_ along the axis
+  double height_ = 0.0;  // m, Cylinder
   std::shared_ptr<const MeshSolid> solid_;
 };
 

@@ -80,34 +80,46 @@ MeshSolid::MeshSolid(const TriangleMesh& mesh) {
   ny_ = nz_ = nc;
   hy_ = ext.y / ny_;
   hz_ = ext.z / nz_;
-  fill_csr(tri_.size(), static_cast<std::size_t>(ny_) * nz_, [&](std::size_t t, auto emit) {
-    const auto& tr = tri_[t];
-    const int y0 = column_y(std::min({tr[0].y, tr[1].y, tr[2].y})), y1 = column_y(std::max({tr[0].y, tr[1].y, tr[2].y}));
-    const int z0 = column_z(std::min({tr[0].z, tr[1].z, tr[2].z})), z1 = column_z(std::max({tr[0].z, tr[1].z, tr[2].z}));
-    for (int j = y0; j <= y1; ++j)
-      for (int k = z0; k <= z1; ++k) emit(static_cast<std::size_t>(j) * nz_ + k);
-  }, col_start_, col_tri_);
+  fill_csr(
+      tri_.size(), static_cast<std::size_t>(ny_) * nz_,
+      [&](std::size_t t, auto emit) {
+        const auto& tr = tri_[t];
+        const int y0 = column_y(std::min({tr[0].y, tr[1].y, tr[2].y})),
+                  y1 = column_y(std::max({tr[0].y, tr[1].y, tr[2].y}));
+        const int z0 = column_z(std::min({tr[0].z, tr[1].z, tr[2].z})),
+                  z1 = column_z(std::max({tr[0].z, tr[1].z, tr[2].z}));
+        for (int j = y0; j <= y1; ++j)
+          for (int k = z0; k <= z1; ++k) emit(static_cast<std::size_t>(j) * nz_ + k);
+      },
+      col_start_, col_tri_);
 
   // Cells: about 4 per triangle, at most 64^3.
   const double target = std::clamp(4.0 * static_cast<double>(tri_.size()), 1.0, 262144.0);
   h_ = std::cbrt(ext.x * ext.y * ext.z / target);
   for (int a = 0; a < 3; ++a) n_[a] = std::clamp(static_cast<int>(std::ceil(ext[a] / h_)), 1, 1024);
-  fill_csr(tri_.size(), static_cast<std::size_t>(n_[0]) * n_[1] * n_[2], [&](std::size_t t, auto emit) {
-    const auto& tr = tri_[t];
-    std::array<int, 3> c0{}, c1{};
-    for (int a = 0; a < 3; ++a) {
-      c0[a] = cell(std::min({tr[0][a], tr[1][a], tr[2][a]}), a);
-      c1[a] = cell(std::max({tr[0][a], tr[1][a], tr[2][a]}), a);
-    }
-    for (int i = c0[0]; i <= c1[0]; ++i)
-      for (int j = c0[1]; j <= c1[1]; ++j)
-        for (int k = c0[2]; k <= c1[2]; ++k) emit((static_cast<std::size_t>(i) * n_[1] + j) * n_[2] + k);
-  }, cell_start_, cell_tri_);
+  fill_csr(
+      tri_.size(), static_cast<std::size_t>(n_[0]) * n_[1] * n_[2],
+      [&](std::size_t t, auto emit) {
+        const auto& tr = tri_[t];
+        std::array<int, 3> c0{}, c1{};
+        for (int a = 0; a < 3; ++a) {
+          c0[a] = cell(std::min({tr[0][a], tr[1][a], tr[2][a]}), a);
+          c1[a] = cell(std::max({tr[0][a], tr[1][a], tr[2][a]}), a);
+        }
+        for (int i = c0[0]; i <= c1[0]; ++i)
+          for (int j = c0[1]; j <= c1[1]; ++j)
+            for (int k = c0[2]; k <= c1[2]; ++k) emit((static_cast<std::size_t>(i) * n_[1] + j) * n_[2] + k);
+      },
+      cell_start_, cell_tri_);
   stamp_.assign(tri_.size(), 0);
 }
 
-int MeshSolid::column_y(double y) const { return std::clamp(static_cast<int>(std::floor((y - lo_.y) / hy_)), 0, ny_ - 1); }
-int MeshSolid::column_z(double z) const { return std::clamp(static_cast<int>(std::floor((z - lo_.z) / hz_)), 0, nz_ - 1); }
+int MeshSolid::column_y(double y) const {
+  return std::clamp(static_cast<int>(std::floor((y - lo_.y) / hy_)), 0, ny_ - 1);
+}
+int MeshSolid::column_z(double z) const {
+  return std::clamp(static_cast<int>(std::floor((z - lo_.z) / hz_)), 0, nz_ - 1);
+}
 int MeshSolid::cell(double v, int axis) const {
   return std::clamp(static_cast<int>(std::floor((v - lo_[axis]) / h_)), 0, n_[axis] - 1);
 }

@@ -21,23 +21,23 @@ class MeshSolid {
   double volume() const { return volume_; }  // m^3, enclosed volume
   Vec3 lo() const { return lo_; }            // m, bounding box
   Vec3 hi() const { return hi_; }
-  bool contains(const Vec3& p) const;        // p strictly inside (points on the surface: either)
+  bool contains(const Vec3& p) const;  // p strictly inside (points on the surface: either)
   // True when no point of the surface is closer to p than d (m).
   bool clear_of_surface(const Vec3& p, double d) const;
 
  private:
-  std::vector<std::array<Vec3, 3>> tri_;     // m, triangles
+  std::vector<std::array<Vec3, 3>> tri_;  // m, triangles
   Vec3 lo_, hi_;
   double volume_ = 0.0;
   // Ray columns over (y, z): CSR lists of triangles whose y-z bounding box meets the column.
   int ny_ = 1, nz_ = 1;
-  double hy_ = 1.0, hz_ = 1.0;               // m, column sizes
+  double hy_ = 1.0, hz_ = 1.0;  // m, column sizes
   std::vector<std::uint32_t> col_start_, col_tri_;
   // Distance cells: CSR lists of triangles whose bounding box meets the cell.
   std::array<int, 3> n_{1, 1, 1};
-  double h_ = 1.0;                           // m, cell size
+  double h_ = 1.0;  // m, cell size
   std::vector<std::uint32_t> cell_start_, cell_tri_;
-  mutable std::vector<std::uint32_t> stamp_; // per triangle: last query that tested it
+  mutable std::vector<std::uint32_t> stamp_;  // per triangle: last query that tested it
   mutable std::uint32_t query_ = 0;
 
   int column_y(double y) const;

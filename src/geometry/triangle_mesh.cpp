@@ -46,7 +46,8 @@ TriangleMesh weld(const std::vector<std::array<Vec3, 3>>& tris) {
 std::vector<std::array<Vec3, 3>> soup(const TriangleMesh& mesh) {
   std::vector<std::array<Vec3, 3>> out;
   out.reserve(mesh.size());
-  for (std::size_t t = 0; t < mesh.size(); ++t) out.push_back({mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)});
+  for (std::size_t t = 0; t < mesh.size(); ++t)
+    out.push_back({mesh.corner(t, 0), mesh.corner(t, 1), mesh.corner(t, 2)});
   return out;
 }
 
@@ -78,7 +79,8 @@ EdgeCounts count_edges(const TriangleMesh& mesh) {
 
 double signed_volume(const TriangleMesh& mesh) {
   double v = 0.0;
-  for (std::size_t t = 0; t < mesh.size(); ++t) v += dot(mesh.corner(t, 0), cross(mesh.corner(t, 1), mesh.corner(t, 2)));
+  for (std::size_t t = 0; t < mesh.size(); ++t)
+    v += dot(mesh.corner(t, 0), cross(mesh.corner(t, 1), mesh.corner(t, 2)));
   return v / 6.0;
 }
 

@@ -26,10 +26,10 @@ struct TriangleMesh {
     add_triangle(a, c, d);
   }
   Vec3 corner(std::size_t t, int k) const { return vertices[triangles[t][k]]; }
-  Vec3 normal(std::size_t t) const;   // unit normal of triangle t
-  double area(std::size_t t) const;   // m^2
+  Vec3 normal(std::size_t t) const;  // unit normal of triangle t
+  double area(std::size_t t) const;  // m^2
   void append(const TriangleMesh& other);
-  void flip();                        // reverses every triangle: normals point the other way
+  void flip();  // reverses every triangle: normals point the other way
 };
 
 struct EdgeCounts {
@@ -42,7 +42,7 @@ struct EdgeCounts {
 // Merges vertices with bitwise-equal coordinates (STL and CSV give triangle soups).
 TriangleMesh weld(const std::vector<std::array<Vec3, 3>>& soup);
 std::vector<std::array<Vec3, 3>> soup(const TriangleMesh& mesh);
-double total_area(const TriangleMesh& mesh);                 // m^2
+double total_area(const TriangleMesh& mesh);  // m^2
 // Edge census by vertex index; a closed, consistently oriented surface has only manifold edges.
 EdgeCounts count_edges(const TriangleMesh& mesh);
 // Signed enclosed volume sum (a . (b x c)) / 6, m^3: positive when normals point outward.

@@ -32,8 +32,8 @@ inline double step_factor(const StepReport& r, const Params& prm) {
   double f = kMaxFactor;
   for (int k = 0; k < kFieldCount; ++k)
     if (active[k] && r.iterations > 0)
-      f = std::min(f, step_factor(tols[k], r.first_error[k], r.last_error[k], r.iterations,
-                                  prm.time.desired_iterations, prm.time.p));
+      f = std::min(f, step_factor(tols[k], r.first_error[k], r.last_error[k], r.iterations, prm.time.desired_iterations,
+                                  prm.time.p));
   return f;
 }
 

@@ -15,14 +15,29 @@ constexpr double kTwoCycleAmplitude = 1e-2;
 
 void TrapezoidalIntegrator::save_start(const Particles& p) {
   const std::size_t n = p.size();
-  x0_.resize(n); v0_.resize(n); w0_.resize(n); a0_.resize(n); b0_.resize(n);
-  q0_.resize(n); T0_.resize(n); h0_.resize(n); alpha_.resize(n);
-  force0_.resize(n); torque0_.resize(n); heat0_.resize(n);
+  x0_.resize(n);
+  v0_.resize(n);
+  w0_.resize(n);
+  a0_.resize(n);
+  b0_.resize(n);
+  q0_.resize(n);
+  T0_.resize(n);
+  h0_.resize(n);
+  alpha_.resize(n);
+  force0_.resize(n);
+  torque0_.resize(n);
+  heat0_.resize(n);
   const bool thermal = params_.analysis.thermal;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
-    x0_[i] = p.x[i]; v0_[i] = p.v[i]; w0_[i] = p.w[i]; q0_[i] = p.q[i]; T0_[i] = p.T[i];
-    force0_[i] = p.force[i]; torque0_[i] = p.torque[i]; heat0_[i] = p.heat[i];
+    x0_[i] = p.x[i];
+    v0_[i] = p.v[i];
+    w0_[i] = p.w[i];
+    q0_[i] = p.q[i];
+    T0_[i] = p.T[i];
+    force0_[i] = p.force[i];
+    torque0_[i] = p.torque[i];
+    heat0_[i] = p.heat[i];
     a0_[i] = p.force[i] / p.mass[i];
     b0_[i] = p.torque[i] / p.inertia[i];
     h0_[i] = thermal ? heating_rate(p, i) : 0.0;
@@ -33,8 +48,14 @@ void TrapezoidalIntegrator::restore_start(Particles& p) const {
   const std::size_t n = p.size();
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
-    p.x[i] = x0_[i]; p.v[i] = v0_[i]; p.w[i] = w0_[i]; p.q[i] = q0_[i]; p.T[i] = T0_[i];
-    p.force[i] = force0_[i]; p.torque[i] = torque0_[i]; p.heat[i] = heat0_[i];
+    p.x[i] = x0_[i];
+    p.v[i] = v0_[i];
+    p.w[i] = w0_[i];
+    p.q[i] = q0_[i];
+    p.T[i] = T0_[i];
+    p.force[i] = force0_[i];
+    p.torque[i] = torque0_[i];
+    p.heat[i] = heat0_[i];
   }
 }
 
@@ -54,8 +75,7 @@ void TrapezoidalIntegrator::accept_midpoint(Particles& p) {
   }
 }
 
-StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& f, double t, double dt,
-                                       int max_iter) {
+StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& f, double t, double dt, int max_iter) {
   EvalRequest req{t + dt, dt, policy(params_).phi, false};
   StepReport rep;
   predict(p, dt);
@@ -121,12 +141,20 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
 void TrapezoidalIntegrator::predict(Particles& p, double dt) {
   const std::size_t n = p.size();
   save_start(p);
-  xp_.resize(n); vp_.resize(n); wp_.resize(n); alphap_.resize(n); Tp_.resize(n);
+  xp_.resize(n);
+  vp_.resize(n);
+  wp_.resize(n);
+  alphap_.resize(n);
+  Tp_.resize(n);
   // The end-of-step rates are guessed equal to the start rates.
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
     alpha_[i] = Vec3{};
-    xp_[i] = x0_[i]; vp_[i] = v0_[i]; wp_[i] = w0_[i]; alphap_[i] = Vec3{}; Tp_[i] = T0_[i];
+    xp_[i] = x0_[i];
+    vp_[i] = v0_[i];
+    wp_[i] = w0_[i];
+    alphap_[i] = Vec3{};
+    Tp_[i] = T0_[i];
   }
   update(p, dt, true);
 }

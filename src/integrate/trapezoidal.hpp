@@ -34,9 +34,9 @@ class TrapezoidalIntegrator {
   using Sums = std::array<double, 4 * kFieldCount>;
 
   // The four stages of a step:
-  void predict(Particles& p, double dt);       // end state from the start rates
+  void predict(Particles& p, double dt);                                             // end state from the start rates
   Sums iterate(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req);  // evaluate, update
-  void test_convergence(Particles& p, const Sums& s, int k, StepReport& rep);  // sets rep.converged
+  void test_convergence(Particles& p, const Sums& s, int k, StepReport& rep);        // sets rep.converged
   void commit(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req, const StepReport& rep);
   // After the last iteration failed: names the culprit and restores the start state.
   void reject(Particles& p, StepReport& rep) const;
@@ -44,7 +44,7 @@ class TrapezoidalIntegrator {
   Sums update(Particles& p, double dt, bool predictor);  // the end state (134)-(138)
   void save_start(const Particles& p);
   void restore_start(Particles& p) const;
-  void accept_midpoint(Particles& p);          // y <- (y_K + y_(K-1)) / 2
+  void accept_midpoint(Particles& p);  // y <- (y_K + y_(K-1)) / 2
 
   // K/s, dT/dt = heat / (m c) of particle i, c of its material.
   double heating_rate(const Particles& p, std::size_t i) const {
@@ -53,15 +53,15 @@ class TrapezoidalIntegrator {
   const Model& model_;
   const Params& params_;
   // Start-of-step state and rates [N]
-  std::vector<Vec3> x0_, v0_, w0_, a0_, b0_;   // m, m/s, rad/s, m/s^2, rad/s^2
+  std::vector<Vec3> x0_, v0_, w0_, a0_, b0_;  // m, m/s, rad/s, m/s^2, rad/s^2
   std::vector<Quat> q0_;
-  std::vector<double> T0_, h0_;                // K, K/s
-  std::vector<Vec3> force0_, torque0_;         // N, N m (to restore the rates on failure)
-  std::vector<double> heat0_;                  // W
-  std::vector<Vec3> alpha_;                    // rad, current rotation increment estimate
+  std::vector<double> T0_, h0_;         // K, K/s
+  std::vector<Vec3> force0_, torque0_;  // N, N m (to restore the rates on failure)
+  std::vector<double> heat0_;           // W
+  std::vector<Vec3> alpha_;             // rad, current rotation increment estimate
   // Previous iterate y_(K-1), to recognise a two-cycle (see docs/integrators.md) [N]
-  std::vector<Vec3> xp_, vp_, wp_, alphap_;    // m, m/s, rad/s, rad
-  std::vector<double> Tp_;                     // K
+  std::vector<Vec3> xp_, vp_, wp_, alphap_;  // m, m/s, rad/s, rad
+  std::vector<double> Tp_;                   // K
 };
 
 }  // namespace mpdem

@@ -38,8 +38,8 @@ std::size_t kick_drift_range(Vec3* __restrict x, Vec3* __restrict v, Vec3* __res
 
 // The second half kick over [lo, hi), vectorised like kick_drift_range.
 void kick_range(Vec3* __restrict v, Vec3* __restrict w, const Vec3* __restrict f, const Vec3* __restrict t,
-                const double* __restrict m, const double* __restrict I, std::size_t lo, std::size_t hi,
-                double half, bool rotation) {
+                const double* __restrict m, const double* __restrict I, std::size_t lo, std::size_t hi, double half,
+                bool rotation) {
   for (std::size_t i = lo; i < hi; ++i) v[i] += (half / m[i]) * f[i];
   if (rotation)
     for (std::size_t i = lo; i < hi; ++i) w[i] += (half / I[i]) * t[i];
@@ -52,9 +52,8 @@ void kick_drift(Particles& p, double dt) {
   std::size_t fast = 0;
 #pragma omp parallel for schedule(static) reduction(+ : fast) if (n > kParallelThreshold)
   for (std::size_t c = 0; c < chunks; ++c)
-    fast += kick_drift_range<kRotation>(p.x.data(), p.v.data(), p.w.data(), p.q.data(), p.force.data(),
-                                        p.torque.data(), p.mass.data(), p.inertia.data(), c * kChunk,
-                                        std::min(n, (c + 1) * kChunk), dt);
+    fast += kick_drift_range<kRotation>(p.x.data(), p.v.data(), p.w.data(), p.q.data(), p.force.data(), p.torque.data(),
+                                        p.mass.data(), p.inertia.data(), c * kChunk, std::min(n, (c + 1) * kChunk), dt);
   if (fast == 0) return;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
@@ -70,10 +69,8 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
   const bool thermal = params_.analysis.thermal;
   const std::size_t n = p.size();
   const double half = 0.5 * dt;
-  if (rotation)
-    kick_drift<true>(p, dt);
-  else
-    kick_drift<false>(p, dt);
+  if (rotation) kick_drift<true>(p, dt);
+  else kick_drift<false>(p, dt);
   if (thermal) {
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
     for (std::size_t i = 0; i < n; ++i)
@@ -84,8 +81,8 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
   const FieldParams& fields = params_.fields;
   const DomainParams& domain = params_.domain;
   StepReport rep;
-  rep.scan = scan_from_sums(deterministic_block_sums<kScanSums>(
-      n, [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums>& acc) {
+  rep.scan = scan_from_sums(
+      deterministic_block_sums<kScanSums>(n, [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums>& acc) {
         // A block at a time: the kick vectorises, and the scan then reads what is still in cache.
         kick_range(p.v.data(), p.w.data(), p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(), lo, hi,
                    half, rotation);

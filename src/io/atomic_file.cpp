@@ -34,8 +34,7 @@ std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
   return tmp;
 }
 
-void write_file_atomically(const std::filesystem::path& path,
-                           const std::function<void(std::ostream&)>& body) {
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body) {
   const std::filesystem::path tmp = temporary_path_for(path);
   auto discard = [&tmp] {
     std::error_code ec;

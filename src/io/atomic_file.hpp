@@ -18,8 +18,7 @@ std::filesystem::path temporary_path_for(const std::filesystem::path& path);
 // renames it onto `path`. Throws std::runtime_error naming `path` if the file cannot be written;
 // if body throws, its exception propagates. In both cases the temporary file is removed and any
 // previous file at `path` is left untouched.
-void write_file_atomically(const std::filesystem::path& path,
-                           const std::function<void(std::ostream&)>& body);
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body);
 
 // Appends `text` (expected to end in '\n') to `path`, creating the file if needed. The text is
 // written with a single O_APPEND write loop and the descriptor closed before returning.

@@ -16,8 +16,8 @@ namespace mpdem {
 namespace {
 
 constexpr std::array<std::string_view, 25> kColumns = {
-    "id", "x1", "y1", "z1", "x2", "y2", "z2", "x3", "y3", "z3", "group", "young", "poisson",
-    "ax", "ay", "az", "Ax", "Ay", "Az", "w1", "Bx", "By", "Bz", "w2", "temperature"};
+    "id", "x1", "y1", "z1", "x2", "y2", "z2", "x3", "y3", "z3", "group", "young",      "poisson",
+    "ax", "ay", "az", "Ax", "Ay", "Az", "w1", "Bx", "By", "Bz", "w2",    "temperature"};
 
 // Column index of every name in kColumns, in that order (-1 when absent).
 std::array<int, kColumns.size()> column_indices(const CsvTable& t) {
@@ -25,8 +25,33 @@ std::array<int, kColumns.size()> column_indices(const CsvTable& t) {
   for (std::size_t k = 0; k < kColumns.size(); ++k) c[k] = t.column(kColumns[k]);
   return c;
 }
-enum Col { ID, X1, Y1, Z1, X2, Y2, Z2, X3, Y3, Z3, GROUP, YOUNG, POISSON, AX, AY, AZ, AAX, AAY, AAZ, W1, BX, BY, BZ, W2,
-           TEMPERATURE };
+enum Col {
+  ID,
+  X1,
+  Y1,
+  Z1,
+  X2,
+  Y2,
+  Z2,
+  X3,
+  Y3,
+  Z3,
+  GROUP,
+  YOUNG,
+  POISSON,
+  AX,
+  AY,
+  AZ,
+  AAX,
+  AAY,
+  AAZ,
+  W1,
+  BX,
+  BY,
+  BZ,
+  W2,
+  TEMPERATURE
+};
 
 // A Vec3 from three optional columns, each falling back to its own component of `v`.
 Vec3 vec_or(const CsvTable& t, const CsvRow& row, const std::array<int, kColumns.size()>& c, int first, const Vec3& v) {
@@ -63,14 +88,15 @@ void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& so
     if (!t.missing(row, c[ID])) {
       bid = t.integer(row, c[ID]);
       if (const auto it = seen.find(bid); it != seen.end())
-        t.fail(row, c[ID], "duplicate barrier id " + std::to_string(bid) +
-                               (it->second > 0 ? " (first on line " + std::to_string(it->second) + ")"
-                                               : " (already used by an earlier barrier file)"));
+        t.fail(row, c[ID],
+               "duplicate barrier id " + std::to_string(bid) +
+                   (it->second > 0 ? " (first on line " + std::to_string(it->second) + ")"
+                                   : " (already used by an earlier barrier file)"));
     }
     // The largest int64 would leave no "next free id" (and overflow computing it).
     if (bid == std::numeric_limits<std::int64_t>::max())
-      t.fail(row, c[ID], "barrier id " + std::to_string(bid) + " leaves no next free id; expected ids < " +
-                             std::to_string(bid));
+      t.fail(row, c[ID],
+             "barrier id " + std::to_string(bid) + " leaves no next free id; expected ids < " + std::to_string(bid));
     seen.emplace(bid, row.line);
     next_id = std::max(next_id, bid + 1);
 

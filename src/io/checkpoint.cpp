@@ -25,8 +25,17 @@ template <class F>
 void for_each_counter(std::uint64_t& barriers, std::uint64_t& materials, double& time, std::uint64_t& steps,
                       std::uint64_t& evaluations, std::size_t& removed, std::uint64_t& redone, double& dt,
                       double& last_balance, double& last_active, bool& energy_checked, F&& f) {
-  f(barriers); f(materials); f(time); f(steps); f(evaluations); f(removed); f(redone); f(dt); f(last_balance);
-  f(last_active); f(energy_checked);
+  f(barriers);
+  f(materials);
+  f(time);
+  f(steps);
+  f(evaluations);
+  f(removed);
+  f(redone);
+  f(dt);
+  f(last_balance);
+  f(last_active);
+  f(energy_checked);
 }
 }  // namespace
 
@@ -44,9 +53,8 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
   });
   interactions_->save(w, scene_.particles);
   if (output_) w.section("output", [&](BinaryWriter& o) { output_->save(o); });
-  write_file_atomically(file, [&](std::ostream& os) {
-    os.write(w.bytes().data(), static_cast<std::streamsize>(w.bytes().size()));
-  });
+  write_file_atomically(
+      file, [&](std::ostream& os) { os.write(w.bytes().data(), static_cast<std::streamsize>(w.bytes().size())); });
 }
 
 void Simulation::resume_from(const std::filesystem::path& file) {

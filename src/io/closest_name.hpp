@@ -32,7 +32,10 @@ std::string closest_name(std::string_view word, const Names& candidates, std::si
   std::size_t best_d = max_distance + 1;
   for (const auto& c : candidates) {
     const std::size_t d = edit_distance(word, c);
-    if (d < best_d) { best_d = d; best = std::string(c); }
+    if (d < best_d) {
+      best_d = d;
+      best = std::string(c);
+    }
   }
   return best;
 }

@@ -42,8 +42,7 @@ void read_contact_law(const TomlSection& contact, std::string_view kind, Contact
   if (s->has("law")) c.law = read_law_kind(*s);
   c.restitution = s->number("restitution", kRestitutionRange);
   c.damping_ratio = s->number("damping_ratio", kNonNegative);
-  if (c.restitution && c.damping_ratio)
-    s->fail("damping_ratio", "give either restitution or damping_ratio, not both");
+  if (c.restitution && c.damping_ratio) s->fail("damping_ratio", "give either restitution or damping_ratio, not both");
   s->get("mu_static", c.mu_static, kNonNegative);
   s->get("mu_dynamic", c.mu_dynamic, kNonNegative);
   s->get("mu_rolling", c.mu_rolling, kNonNegative);
@@ -56,9 +55,9 @@ void read_contact_law(const TomlSection& contact, std::string_view kind, Contact
 
 // [[contact.pair]] entries; their materials must exist (materials are read first).
 void read_contact_pairs(const TomlSection& contact, const Model& model, ContactParams& c) {
-  for (const TomlSection& s : contact.tables("pair", {"materials", "kind", "law", "restitution", "damping_ratio",
-                                                      "mu_static", "mu_dynamic", "mu_rolling", "tangential_damping",
-                                                      "stiffness_normal", "stiffness_tangential"})) {
+  for (const TomlSection& s :
+       contact.tables("pair", {"materials", "kind", "law", "restitution", "damping_ratio", "mu_static", "mu_dynamic",
+                               "mu_rolling", "tangential_damping", "stiffness_normal", "stiffness_tangential"})) {
     ContactPairParams e;
     e.line = s.line();
     const std::vector<std::string> names = s.require(s.strings("materials", 2), "materials");

@@ -15,7 +15,7 @@ namespace mpdem {
 
 namespace {
 
-constexpr std::size_t kFlushBytes = 1 << 16;  // bounds memory between explicit flushes
+constexpr std::size_t kFlushBytes = 1 << 16;      // bounds memory between explicit flushes
 constexpr double kTwoPow53 = 9007199254740992.0;  // integers above lose exactness in a double
 
 std::string header_line(const std::vector<std::string>& columns) {
@@ -41,10 +41,8 @@ void drop_partial_last_line(const std::filesystem::path& file, const std::string
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (text.empty() || text.back() == '\n') return;
   const auto last = text.rfind('\n');
-  if (last == std::string::npos)
-    text = header;  // only a cut header line was there
-  else
-    text.resize(last + 1);
+  if (last == std::string::npos) text = header;  // only a cut header line was there
+  else text.resize(last + 1);
   write_file_atomically(file, [&text](std::ostream& os) { os << text; });
 }
 
@@ -55,8 +53,7 @@ void append_csv_number(std::string& out, double v) {
   std::to_chars_result r;
   if (std::trunc(v) == v && std::fabs(v) < kTwoPow53)
     r = std::to_chars(buf, buf + sizeof buf, static_cast<std::int64_t>(v));
-  else
-    r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 17);
+  else r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 17);
   out.append(buf, r.ptr);
 }
 

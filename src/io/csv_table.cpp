@@ -54,10 +54,10 @@ CsvTable CsvTable::read(const std::filesystem::path& file) {
       t.header_line_ = line_no;
       for (std::size_t c = 0; c < fields.size(); ++c) {
         if (fields[c].empty())
-          throw InputError(t.file_, line_no, "", "empty column name in the header (column " + std::to_string(c + 1) + ")");
+          throw InputError(t.file_, line_no, "",
+                           "empty column name in the header (column " + std::to_string(c + 1) + ")");
         for (std::size_t k = 0; k < c; ++k)
-          if (fields[k] == fields[c])
-            throw InputError(t.file_, line_no, fields[c], "duplicate column in the header");
+          if (fields[k] == fields[c]) throw InputError(t.file_, line_no, fields[c], "duplicate column in the header");
       }
       t.columns_ = std::move(fields);
       continue;

@@ -17,8 +17,8 @@
 namespace mpdem {
 
 struct CsvRow {
-  std::size_t line = 0;              // 1-based line in the file
-  std::vector<std::string> fields;   // trimmed, one per header column
+  std::size_t line = 0;             // 1-based line in the file
+  std::vector<std::string> fields;  // trimmed, one per header column
 };
 
 class CsvTable {

@@ -24,7 +24,8 @@ std::vector<double> numbers(const TomlSection& s, const toml::table& t, std::str
     else if (const auto* f = e.as_floating_point()) v = f->get();
     else s.fail(k, "expected an array of numbers, element " + std::to_string(out.size() + 1) + " is not a number");
     if (!std::isfinite(v) || !r.contains(v))
-      s.fail(k, "expected numbers " + r.text() + ", element " + std::to_string(out.size() + 1) + " is " + number_text(v));
+      s.fail(k,
+             "expected numbers " + r.text() + ", element " + std::to_string(out.size() + 1) + " is " + number_text(v));
     out.push_back(v);
   }
   return out;
@@ -39,8 +40,8 @@ RadiusDistribution read_radius(const TomlSection& g, const toml::table& t) {
     return d;
   }
   const toml::table& rt = *n->as_table();
-  const auto s = g.table("radius", {"distribution", "value", "min", "max", "mean", "std", "radii", "fractions",
-                                    "fractions_of"});
+  const auto s = g.table("radius",
+                         {"distribution", "value", "min", "max", "mean", "std", "radii", "fractions", "fractions_of"});
   const std::string law = s->require(s->string("distribution"), "distribution");
   if (!parse_radius_law(law, d.law))
     s->fail("distribution",
@@ -93,9 +94,9 @@ RadiusDistribution read_radius(const TomlSection& g, const toml::table& t) {
 
 GenerateSpec read_generate_spec(const std::string& file, const toml::table& table, const std::string& path,
                                 const std::filesystem::path& dir) {
-  const TomlSection g(file, table, path, {"region", "min", "max", "base", "axis", "cylinder_radius", "mesh", "count",
-                                          "solid_fraction", "radius", "seed", "gap", "material", "velocity", "speed",
-                                          "max_attempts"});
+  const TomlSection g(file, table, path,
+                      {"region", "min", "max", "base", "axis", "cylinder_radius", "mesh", "count", "solid_fraction",
+                       "radius", "seed", "gap", "material", "velocity", "speed", "max_attempts"});
   GenerateSpec spec;
   spec.origin = file;
   spec.line = g.line();
@@ -136,10 +137,12 @@ GenerateSpec read_generate_spec(const std::string& file, const toml::table& tabl
 
   if (g.has("count") == g.has("solid_fraction"))
     g.fail(g.has("count") ? "solid_fraction" : "count", "give exactly one of count and solid_fraction");
-  if (const auto n = g.integer("count", 1, std::numeric_limits<std::int64_t>::max())) spec.count = static_cast<std::size_t>(*n);
+  if (const auto n = g.integer("count", 1, std::numeric_limits<std::int64_t>::max()))
+    spec.count = static_cast<std::size_t>(*n);
   if (const auto f = g.number("solid_fraction", Range{0.0, 1.0, false, false})) spec.solid_fraction = *f;
   spec.radius = read_radius(g, table);
-  if (const auto s = g.integer("seed", 0, std::numeric_limits<std::int64_t>::max())) spec.seed = static_cast<std::uint64_t>(*s);
+  if (const auto s = g.integer("seed", 0, std::numeric_limits<std::int64_t>::max()))
+    spec.seed = static_cast<std::uint64_t>(*s);
   g.get("gap", spec.gap, kNonNegative);
   g.get("material", spec.material);
   if (g.has("velocity") && g.has("speed")) g.fail("speed", "give either velocity or speed, not both");

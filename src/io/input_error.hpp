@@ -11,8 +11,8 @@ class InputError : public std::runtime_error {
  public:
   // line = 0 when unknown; key may name a TOML key ("time.dt") or a CSV column ("radius").
   InputError(std::string file, std::size_t line, std::string key, const std::string& message)
-      : std::runtime_error(format(file, line, key, message)),
-        file_(std::move(file)), line_(line), key_(std::move(key)) {}
+      : std::runtime_error(format(file, line, key, message)), file_(std::move(file)), line_(line),
+        key_(std::move(key)) {}
 
   const std::string& file() const { return file_; }
   std::size_t line() const { return line_; }

@@ -105,7 +105,8 @@ LammpsData read_lammps_data(const std::filesystem::path& file) {
     while (next_row()) {
       if (!atoms) continue;
       if (t.size() != 7 && t.size() != 10)
-        throw InputError(name, lineno, "Atoms", "expected 'id type diameter density x y z' (7 columns, or 10 with image flags)");
+        throw InputError(name, lineno, "Atoms",
+                         "expected 'id type diameter density x y z' (7 columns, or 10 with image flags)");
       LammpsAtom a;
       if (!parse_int(t[0], a.id)) throw InputError(name, lineno, "id", "expected an integer id");
       if (!parse_int(t[1], a.type) || a.type < 1) throw InputError(name, lineno, "type", "expected an atom type >= 1");

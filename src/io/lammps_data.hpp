@@ -12,17 +12,17 @@
 namespace mpdem {
 
 struct LammpsAtom {
-  std::int64_t id = 0;     // atom id, unique
-  int type = 1;            // atom type (>= 1)
-  double diameter = 0.0;   // m
-  double density = 0.0;    // kg/m^3
-  Vec3 x;                  // m, centre
+  std::int64_t id = 0;    // atom id, unique
+  int type = 1;           // atom type (>= 1)
+  double diameter = 0.0;  // m
+  double density = 0.0;   // kg/m^3
+  Vec3 x;                 // m, centre
 };
 
 struct LammpsData {
-  Vec3 lo, hi;                     // m, box bounds (xlo ylo zlo, xhi yhi zhi)
-  std::size_t atom_types = 0;      // declared number of atom types
-  std::vector<LammpsAtom> atoms;   // in file order
+  Vec3 lo, hi;                    // m, box bounds (xlo ylo zlo, xhi yhi zhi)
+  std::size_t atom_types = 0;     // declared number of atom types
+  std::vector<LammpsAtom> atoms;  // in file order
 };
 
 // Reads `file`. Throws InputError (file, line, what was expected) for a missing or malformed

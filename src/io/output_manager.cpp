@@ -72,16 +72,17 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
     barriers_pvd_ = pvd(dir_ / "barriers.pvd");
   }
   if (particles_csv_.every > 0.0) fs::create_directories(dir_ / "particles_csv");
-  std::vector<std::string> log_cols{"step", "time", "dt", "iterations", "evaluations", "evaluations_total",
-                                    "redone_steps", "particles", "removed", "contacts_pp", "contacts_pb", "kinetic",
-                                    "rotational", "potential", "elastic", "damping_dissipated", "friction_dissipated",
-                                    "total_energy"};
+  std::vector<std::string> log_cols{
+      "step",         "time",      "dt",      "iterations",         "evaluations",         "evaluations_total",
+      "redone_steps", "particles", "removed", "contacts_pp",        "contacts_pb",         "kinetic",
+      "rotational",   "potential", "elastic", "damping_dissipated", "friction_dissipated", "total_energy"};
   // Optional columns only for the physics a scene turns on, so plain mechanical logs keep their shape.
   near_field_ = near_field_enabled(model.params.near_field);
   thermal_ = model.params.analysis.thermal;
   if (near_field_) log_cols.insert(log_cols.end() - 1, "near_field");  // part of total_energy
   if (thermal_)
-    for (const char* c : {"heat_to_barriers", "heat_convected", "heat_radiated", "thermal_energy"}) log_cols.push_back(c);
+    for (const char* c : {"heat_to_barriers", "heat_convected", "heat_radiated", "thermal_energy"})
+      log_cols.push_back(c);
   log_ = log(dir_ / "log.csv", log_cols);
   group_count_ = barriers.group_names.size();
   if (barrier_log_.every > 0.0 && group_count_ > 0) {
@@ -108,7 +109,7 @@ void OutputManager::restore(BinaryReader& r) {
 
 bool OutputManager::due(Series& s, double t, double dt, bool force) {
   if (s.every <= 0.0) return false;
-  const double slack = 0.5 * dt;  // round-off in the accumulated time must not skip a snapshot
+  const double slack = 0.5 * dt;                         // round-off in the accumulated time must not skip a snapshot
   if (s.count > 0 && t <= s.last + slack) return false;  // already written at this time
   if (!force && t + slack < s.next) return false;
   s.next = (std::floor((t + slack) / s.every) + 1.0) * s.every;
@@ -138,8 +139,12 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
       double* g = &row[1 + 7 * static_cast<std::size_t>(b.group[e])];
       const Vec3 c = b.centre(e);
       const Vec3 m = b.moment[e] + cross(c, b.force[e]);  // moment about the origin
-      g[0] += b.force[e].x; g[1] += b.force[e].y; g[2] += b.force[e].z;
-      g[3] += m.x; g[4] += m.y; g[5] += m.z;
+      g[0] += b.force[e].x;
+      g[1] += b.force[e].y;
+      g[2] += b.force[e].z;
+      g[3] += m.x;
+      g[4] += m.y;
+      g[5] += m.z;
       g[6] += b.area[e];
     }
     groups_->row(row);
@@ -151,13 +156,23 @@ void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const 
   const double nf = near_field_ ? s.near_field_energy : 0.0;
   const double total = e.kinetic + e.rotational + e.potential + s.elastic_energy + s.damping_dissipated +
                        s.friction_dissipated + nf;
-  std::vector<double> row{static_cast<double>(r.step), r.time, r.dt,
+  std::vector<double> row{static_cast<double>(r.step),
+                          r.time,
+                          r.dt,
                           static_cast<double>(r.report ? r.report->iterations : 0),
                           static_cast<double>(r.report ? r.report->evaluations : 0),
-                          static_cast<double>(r.evaluations_total), static_cast<double>(r.redone_steps),
-                          static_cast<double>(p.size()), static_cast<double>(r.removed_total),
-                          static_cast<double>(s.contacts_pp), static_cast<double>(s.contacts_pb), e.kinetic,
-                          e.rotational, e.potential, s.elastic_energy, s.damping_dissipated, s.friction_dissipated};
+                          static_cast<double>(r.evaluations_total),
+                          static_cast<double>(r.redone_steps),
+                          static_cast<double>(p.size()),
+                          static_cast<double>(r.removed_total),
+                          static_cast<double>(s.contacts_pp),
+                          static_cast<double>(s.contacts_pb),
+                          e.kinetic,
+                          e.rotational,
+                          e.potential,
+                          s.elastic_energy,
+                          s.damping_dissipated,
+                          s.friction_dissipated};
   if (near_field_) row.push_back(nf);
   row.push_back(total);
   if (thermal_) {

@@ -50,10 +50,10 @@ class OutputManager {
 
  private:
   struct Series {
-    double every = 0.0;        // s
-    double next = 0.0;         // s, time of the next snapshot
-    double last = 0.0;         // s, time of the last snapshot
-    std::uint64_t count = 0;   // snapshots written
+    double every = 0.0;       // s
+    double next = 0.0;        // s, time of the next snapshot
+    double last = 0.0;        // s, time of the last snapshot
+    std::uint64_t count = 0;  // snapshots written
   };
   static bool due(Series& s, double t, double dt, bool force);
 

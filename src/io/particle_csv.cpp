@@ -17,9 +17,9 @@ namespace mpdem {
 namespace {
 
 constexpr std::array<std::string_view, 20> kColumns = {
-    "id",     "x",       "y",       "z",      "vx",          "vy",            "vz",
-    "wx",     "wy",      "wz",      "radius", "material",    "density",       "young",
-    "poisson", "charge", "temperature", "heat_capacity", "conductivity", "emissivity"};
+    "id",           "x",         "y",        "z",       "vx",    "vy",      "vz",     "wx",          "wy",
+    "wz",           "radius",    "material", "density", "young", "poisson", "charge", "temperature", "heat_capacity",
+    "conductivity", "emissivity"};
 
 // Column indices (-1 when absent), looked up once per file.
 struct Cols {
@@ -55,8 +55,7 @@ double value_or(const CsvTable& t, const CsvRow& row, int col, double fallback) 
 
 }  // namespace
 
-void read_particle_csv(const std::filesystem::path& file, Model& model, int default_material,
-                       Particles& out) {
+void read_particle_csv(const std::filesystem::path& file, Model& model, int default_material, Particles& out) {
   const CsvTable t = CsvTable::read(file);
   t.check_known(kColumns);
   for (std::string_view req : {"x", "y", "z", "radius"}) t.require(req);
@@ -81,14 +80,15 @@ void read_particle_csv(const std::filesystem::path& file, Model& model, int defa
     if (!t.missing(row, c.id)) {
       pid = t.integer(row, c.id);
       if (const auto it = seen.find(pid); it != seen.end())
-        t.fail(row, c.id, "duplicate particle id " + std::to_string(pid) +
-                              (it->second > 0 ? " (first on line " + std::to_string(it->second) + ")"
-                                              : " (already used by an earlier particle file)"));
+        t.fail(row, c.id,
+               "duplicate particle id " + std::to_string(pid) +
+                   (it->second > 0 ? " (first on line " + std::to_string(it->second) + ")"
+                                   : " (already used by an earlier particle file)"));
     }
     // The largest int64 would leave no "next free id" (and overflow computing it).
     if (pid == std::numeric_limits<std::int64_t>::max())
-      t.fail(row, c.id, "particle id " + std::to_string(pid) + " leaves no next free id; expected ids < " +
-                            std::to_string(pid));
+      t.fail(row, c.id,
+             "particle id " + std::to_string(pid) + " leaves no next free id; expected ids < " + std::to_string(pid));
     seen.emplace(pid, row.line);
     next_id = std::max(next_id, pid + 1);
 

@@ -11,7 +11,6 @@ namespace mpdem {
 
 // Appends the particles of `file` to `out`. `default_material` is the index of the material used
 // for rows without a `material` column/value. Throws InputError (file, line, column, expectation).
-void read_particle_csv(const std::filesystem::path& file, Model& model, int default_material,
-                       Particles& out);
+void read_particle_csv(const std::filesystem::path& file, Model& model, int default_material, Particles& out);
 
 }  // namespace mpdem

@@ -81,8 +81,7 @@ PvdIndex::PvdIndex(std::filesystem::path pvd_file, double keep_until) : file_(st
     ss << in.rdbuf();
     const std::string text = ss.str();
     // Only the DataSet tags written by write() are parsed; this is not a general XML reader.
-    for (std::size_t pos = text.find("<DataSet"); pos != std::string::npos;
-         pos = text.find("<DataSet", pos + 1)) {
+    for (std::size_t pos = text.find("<DataSet"); pos != std::string::npos; pos = text.find("<DataSet", pos + 1)) {
       const auto end = text.find("/>", pos);
       if (end == std::string::npos) break;
       const std::string tag = text.substr(pos, end - pos);

@@ -11,8 +11,8 @@ namespace mpdem {
 class PvdIndex {
  public:
   struct Entry {
-    double time;        // s, simulated time of the snapshot
-    std::string file;   // path of the .vtu relative to the .pvd's folder
+    double time;       // s, simulated time of the snapshot
+    std::string file;  // path of the .vtu relative to the .pvd's folder
   };
 
   // Starts a new, empty series and writes it (replacing any .pvd left by an earlier run).

@@ -43,10 +43,10 @@ void read_time(const TomlSection& root, TimeParams& t) {
   t.dt_max = s->number("dt_max", kPositive).value_or(t.dt);
   if (t.dt_min > t.dt_max)
     s->fail(s->has("dt_min") ? "dt_min" : "dt_max", "expected dt_min <= dt_max, got dt_min = " + number_text(t.dt_min) +
-                                                         " > dt_max = " + number_text(t.dt_max));
+                                                        " > dt_max = " + number_text(t.dt_max));
   if (t.dt < t.dt_min || t.dt > t.dt_max)
-    s->fail("dt", "expected dt within [dt_min, dt_max] = [" + number_text(t.dt_min) + ", " +
-                      number_text(t.dt_max) + "]");
+    s->fail("dt",
+            "expected dt within [dt_min, dt_max] = [" + number_text(t.dt_min) + ", " + number_text(t.dt_max) + "]");
   s->get("adaptive", t.adaptive);
   s->get("desired_iterations", t.desired_iterations, 1);
   s->get("p", t.p, kPositive);
@@ -54,9 +54,9 @@ void read_time(const TomlSection& root, TimeParams& t) {
 }
 
 void read_tolerance(const TomlSection& root, ToleranceParams& t) {
-  const auto s = root.table("tolerance", {"position", "velocity", "rotation", "angular_velocity", "temperature",
-                                          "position_floor", "velocity_floor", "rotation_floor",
-                                          "angular_velocity_floor", "temperature_floor"});
+  const auto s = root.table("tolerance",
+                            {"position", "velocity", "rotation", "angular_velocity", "temperature", "position_floor",
+                             "velocity_floor", "rotation_floor", "angular_velocity_floor", "temperature_floor"});
   if (!s) return;
   s->get("position", t.position, kPositive);
   s->get("velocity", t.velocity, kPositive);
@@ -84,8 +84,8 @@ void read_analysis_and_fields(const TomlSection& root, Params& p) {
 
 void read_contact_and_thermal(const TomlSection& root, const Model& model, Params& p) {
   read_contact(root, model, p.contact);
-  if (const auto s = root.table("thermal", {"air_temperature", "air_velocity", "environment_temperature",
-                                            "conduction", "convection", "radiation"})) {
+  if (const auto s = root.table("thermal", {"air_temperature", "air_velocity", "environment_temperature", "conduction",
+                                            "convection", "radiation"})) {
     s->get("air_temperature", p.thermal.air_temperature, kPositive);
     s->get("air_velocity", p.thermal.air_velocity);
     s->get("environment_temperature", p.thermal.environment_temperature, kPositive);
@@ -115,8 +115,8 @@ void read_materials(const TomlSection& root, Model& model) {
 }
 
 void read_near_field(const TomlSection& root, const Model& model, NearFieldParams& nf) {
-  const auto s = root.table("near_field", {"empirical", "a1", "b1", "a2", "b2", "pair", "coulomb", "permittivity",
-                                           "cutoff"});
+  const auto s = root.table("near_field",
+                            {"empirical", "a1", "b1", "a2", "b2", "pair", "coulomb", "permittivity", "cutoff"});
   if (!s) return;
   s->get("a1", nf.a1);
   s->get("b1", nf.b1);
@@ -125,7 +125,11 @@ void read_near_field(const TomlSection& root, const Model& model, NearFieldParam
   for (const TomlSection& ps : s->tables("pair", {"material_a", "material_b", "a1", "b1", "a2", "b2"})) {
     // A pair's coefficients default to the global ones, so it overrides only what it names.
     NearFieldPair pair{ps.require(ps.string("material_a"), "material_a"),
-                       ps.require(ps.string("material_b"), "material_b"), nf.a1, nf.b1, nf.a2, nf.b2};
+                       ps.require(ps.string("material_b"), "material_b"),
+                       nf.a1,
+                       nf.b1,
+                       nf.a2,
+                       nf.b2};
     check_material(ps, "material_a", pair.material_a, model);
     check_material(ps, "material_b", pair.material_b, model);
     ps.get("a1", pair.a1);
@@ -157,7 +161,8 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
   std::size_t entry = 0;
   for (const TomlSection& s : root.tables("particles", {"file", "generate", "material"})) {
     if (scene.model.materials.empty())
-      throw InputError(root.file(), s.line(), "material", "at least one [[material]] is required when particles are given");
+      throw InputError(root.file(), s.line(), "material",
+                       "at least one [[material]] is required when particles are given");
     ParticleSource src;
     src.line = s.line();
     if (s.has("file") && s.has("generate")) s.fail("generate", "give either file or generate, not both");
@@ -265,9 +270,9 @@ Scene parse_scene_file(const std::filesystem::path& file) {
   Scene scene;
   scene.file = std::filesystem::absolute(file).lexically_normal();
   scene.dir = scene.file.parent_path();
-  const TomlSection root(name, doc, "", {"time", "tolerance", "analysis", "gravity", "fields", "near_field",
-                                         "contact", "thermal", "material", "particles", "barriers", "domain",
-                                         "neighbor", "output", "checks"});
+  const TomlSection root(name, doc, "",
+                         {"time", "tolerance", "analysis", "gravity", "fields", "near_field", "contact", "thermal",
+                          "material", "particles", "barriers", "domain", "neighbor", "output", "checks"});
   Params& p = scene.model.params;
   read_time(root, p.time);
   read_tolerance(root, p.tolerance);

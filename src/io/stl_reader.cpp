@@ -50,8 +50,9 @@ StlMesh read_binary(const std::string& name, const std::string& data) {
       const char* v = rec + 12 + 12 * k;  // the first 12 bytes are the stored normal
       tri[k] = {read_float(v), read_float(v + 4), read_float(v + 8)};
       if (!isfinite(tri[k]))
-        throw InputError(name, 0, "", "binary STL triangle " + std::to_string(t + 1) + ": vertex " +
-                                          std::to_string(k + 1) + " has a non-finite coordinate");
+        throw InputError(name, 0, "",
+                         "binary STL triangle " + std::to_string(t + 1) + ": vertex " + std::to_string(k + 1) +
+                             " has a non-finite coordinate");
     }
     keep(out, tri);
   }
@@ -168,21 +169,23 @@ StlMesh read_stl(const std::filesystem::path& file) {
   while (b < data.size() && std::isspace(static_cast<unsigned char>(data[b]))) ++b;
   std::string head = data.substr(b, 5);
   for (char& c : head) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const bool printable = std::all_of(data.begin(), data.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(data.size(), 512)),
-                                     [](char c) { return c == '\n' || c == '\r' || c == '\t' || (c >= 32 && c < 127); });
+  const bool printable = std::all_of(
+      data.begin(), data.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(data.size(), 512)),
+      [](char c) { return c == '\n' || c == '\r' || c == '\t' || (c >= 32 && c < 127); });
   if (head == "solid" && printable) {
     StlMesh out = read_ascii(name, data);
     if (out.triangles.empty() && out.degenerate == 0) throw InputError(name, 0, "", "ASCII STL file holds no facets");
     return out;
   }
   if (data.size() < 84)
-    throw InputError(name, 0, "", "truncated binary STL: " + std::to_string(data.size()) +
-                                      " bytes, less than the 84-byte header");
+    throw InputError(name, 0, "",
+                     "truncated binary STL: " + std::to_string(data.size()) + " bytes, less than the 84-byte header");
   std::uint32_t n = 0;
   std::memcpy(&n, data.data() + 80, 4);
-  throw InputError(name, 0, "", "truncated or malformed binary STL: the header announces " + std::to_string(n) +
-                                    " triangles (" + std::to_string(84 + 50 * static_cast<std::size_t>(n)) +
-                                    " bytes) but the file has " + std::to_string(data.size()) + " bytes");
+  throw InputError(name, 0, "",
+                   "truncated or malformed binary STL: the header announces " + std::to_string(n) + " triangles (" +
+                       std::to_string(84 + 50 * static_cast<std::size_t>(n)) + " bytes) but the file has " +
+                       std::to_string(data.size()) + " bytes");
 }
 
 }  // namespace mpdem
@@ -211,14 +214,12 @@ void read_stl_barriers(const BarrierSource& src, const Model& model, Barriers& o
     if (out.add(next_id, p[0], p[1], p[2], g, mat.young, mat.poisson, src.motion, src.thickness, temp)) {
       out.material.back() = mat_index;
       ++next_id;
-    }
-    else ++dropped;  // collapsed by the transform
+    } else ++dropped;  // collapsed by the transform
   }
   if (dropped > 0)
     std::fprintf(stderr, "warning: %s: dropped %zu degenerate (zero-area) triangle(s) of %zu\n",
                  src.stl.string().c_str(), dropped, stl.triangles.size() + stl.degenerate);
-  if (stl.triangles.empty())
-    throw InputError(src.stl.string(), 0, "", "STL file has no triangle with a non-zero area");
+  if (stl.triangles.empty()) throw InputError(src.stl.string(), 0, "", "STL file has no triangle with a non-zero area");
 }
 
 }  // namespace mpdem

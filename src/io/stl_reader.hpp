@@ -14,7 +14,7 @@ namespace mpdem {
 
 struct StlMesh {
   std::vector<std::array<Vec3, 3>> triangles;  // in file units, winding as stored
-  std::size_t degenerate = 0;  // zero-area triangles dropped (|n| <= 1e-12 x longest edge^2)
+  std::size_t degenerate = 0;                  // zero-area triangles dropped (|n| <= 1e-12 x longest edge^2)
   bool binary = false;
 };
 

@@ -28,8 +28,8 @@ void put_float(std::ostream& out, double v) {
 
 }  // namespace
 
-void write_stl(const std::filesystem::path& file, const std::vector<std::array<Vec3, 3>>& triangles,
-               StlFormat format, const std::string& solid_name) {
+void write_stl(const std::filesystem::path& file, const std::vector<std::array<Vec3, 3>>& triangles, StlFormat format,
+               const std::string& solid_name) {
   write_file_atomically(file, [&](std::ostream& out) {
     if (format == StlFormat::Ascii) {
       out << "solid " << solid_name << '\n';

@@ -13,7 +13,7 @@ namespace mpdem {
 enum class StlFormat { Ascii, Binary };
 
 // Writes the triangles atomically (temporary file + rename). Throws std::runtime_error on I/O failure.
-void write_stl(const std::filesystem::path& file, const std::vector<std::array<Vec3, 3>>& triangles,
-               StlFormat format, const std::string& solid_name = "mpdem");
+void write_stl(const std::filesystem::path& file, const std::vector<std::array<Vec3, 3>>& triangles, StlFormat format,
+               const std::string& solid_name = "mpdem");
 
 }  // namespace mpdem

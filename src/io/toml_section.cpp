@@ -31,7 +31,8 @@ TomlSection::TomlSection(const std::string& file, const toml::table& table, std:
     for (std::string_view name : known) ok = ok || k.str() == name;
     if (!ok) {
       const std::string prefix = path_.empty() ? "" : path_ + ".";
-      throw InputError(*file_, k.source().begin.line, key(k.str()), "unknown key" + did_you_mean(k.str(), known, prefix));
+      throw InputError(*file_, k.source().begin.line, key(k.str()),
+                       "unknown key" + did_you_mean(k.str(), known, prefix));
     }
   }
 }
@@ -56,7 +57,7 @@ std::optional<double> TomlSection::number(std::string_view k, Range r) const {
   if (!n) return std::nullopt;
   const std::string want = r.text().empty() ? "a number" : "a number " + r.text();
   double v = 0.0;
-  if (const auto* i = n->as_integer()) v = static_cast<double>(i->get());   // integers are accepted
+  if (const auto* i = n->as_integer()) v = static_cast<double>(i->get());  // integers are accepted
   else if (const auto* f = n->as_floating_point()) v = f->get();
   else fail(k, "expected " + want + ", got " + type_name(*n));
   if (!std::isfinite(v)) fail(k, "expected a finite number, got " + number_text(v));

@@ -26,10 +26,10 @@ class TomlSection {
               std::initializer_list<std::string_view> known);
 
   const std::string& file() const { return *file_; }
-  std::size_t line() const;                         // line of the table itself
-  std::string key(std::string_view k) const;        // dotted name of key k
+  std::size_t line() const;                   // line of the table itself
+  std::string key(std::string_view k) const;  // dotted name of key k
   bool has(std::string_view k) const { return table_->contains(k); }
-  std::size_t line_of(std::string_view k) const;    // line of key k (the table's line if absent)
+  std::size_t line_of(std::string_view k) const;  // line of key k (the table's line if absent)
 
   std::optional<double> number(std::string_view k, Range r = kAnyValue) const;
   std::optional<std::int64_t> integer(std::string_view k, std::int64_t min, std::int64_t max) const;

@@ -161,15 +161,15 @@ void write_particles_vtu(const std::filesystem::path& file, const Particles& p, 
     const std::size_t n = p.size();
     header(s, time, n, n);
     s.text("      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n");
-    id_array(s, "id", p.id);                          // -
-    scalar_array(s, "radius", p.radius);              // m
-    int_array(s, "material", "Int32", p.material);    // index into the scene's materials
-    vector_array(s, "velocity", p.v);                 // m/s
-    vector_array(s, "angular_velocity", p.w);         // rad/s
-    vector_array(s, "force", p.force);                // N
-    scalar_array(s, "temperature", p.T);              // K
-    scalar_array(s, "charge", p.charge);              // C
-    open_array(s, "Float64", "orientation", 4);       // unit quaternion (w, x, y, z), body -> world
+    id_array(s, "id", p.id);                        // -
+    scalar_array(s, "radius", p.radius);            // m
+    int_array(s, "material", "Int32", p.material);  // index into the scene's materials
+    vector_array(s, "velocity", p.v);               // m/s
+    vector_array(s, "angular_velocity", p.w);       // rad/s
+    vector_array(s, "force", p.force);              // N
+    scalar_array(s, "temperature", p.T);            // K
+    scalar_array(s, "charge", p.charge);            // C
+    open_array(s, "Float64", "orientation", 4);     // unit quaternion (w, x, y, z), body -> world
     for (const Quat& q : p.q) {
       s.value(q.w);
       s.value(q.x);
@@ -180,7 +180,7 @@ void write_particles_vtu(const std::filesystem::path& file, const Particles& p, 
     close_array(s);
     s.text("      </PointData>\n"
            "      <Points>\n");
-    open_array(s, "Float64", "Points", 3);            // m, centres
+    open_array(s, "Float64", "Points", 3);  // m, centres
     for (const Vec3& x : p.x) {
       s.value(x.x);
       s.value(x.y);
@@ -200,16 +200,16 @@ void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, do
     const std::size_t m = b.size();
     header(s, time, 3 * m, m);
     s.text("      <CellData Scalars=\"pressure\" Vectors=\"force\">\n");
-    id_array(s, "id", b.id);                          // -
-    int_array(s, "group", "Int32", b.group);          // index into group_names
-    vector_array(s, "force", b.force);                // N
-    vector_array(s, "moment", b.moment);              // N m, about the element centre
-    scalar_array(s, "pressure", b.pressure);          // Pa
-    vector_array(s, "normal", b.normal);              // -, unit
-    vector_array(s, "velocity", b.velocity);          // m/s
+    id_array(s, "id", b.id);                  // -
+    int_array(s, "group", "Int32", b.group);  // index into group_names
+    vector_array(s, "force", b.force);        // N
+    vector_array(s, "moment", b.moment);      // N m, about the element centre
+    scalar_array(s, "pressure", b.pressure);  // Pa
+    vector_array(s, "normal", b.normal);      // -, unit
+    vector_array(s, "velocity", b.velocity);  // m/s
     s.text("      </CellData>\n"
            "      <Points>\n");
-    open_array(s, "Float64", "Points", 3);            // m, current vertex positions
+    open_array(s, "Float64", "Points", 3);  // m, current vertex positions
     for (std::size_t e = 0; e < m; ++e)
       for (int k = 0; k < 3; ++k) {
         const Vec3 v = b.vertex(e, k);

@@ -7,14 +7,14 @@ namespace mpdem {
 
 struct Material {
   std::string name;
-  double density = 2500.0;        // kg/m^3
-  double young = 1e7;             // Pa
-  double poisson = 0.3;           // - in [0, 0.5)
-  double conductivity = 1.0;      // W/(m K)
-  double heat_capacity = 800.0;   // J/(kg K)
-  double emissivity = 0.9;        // - in [0, 1]
-  double charge = 0.0;            // C, default particle charge
-  double temperature = 293.15;    // K, default initial particle temperature
+  double density = 2500.0;       // kg/m^3
+  double young = 1e7;            // Pa
+  double poisson = 0.3;          // - in [0, 0.5)
+  double conductivity = 1.0;     // W/(m K)
+  double heat_capacity = 800.0;  // J/(kg K)
+  double emissivity = 0.9;       // - in [0, 1]
+  double charge = 0.0;           // C, default particle charge
+  double temperature = 293.15;   // K, default initial particle temperature
   // A copy of another material with the per-particle or per-element values a particle or barrier
   // CSV gave (model/material_variants.hpp): its index, or -1 for a material of the scene.
   int variant_of = -1;

@@ -20,8 +20,8 @@ MaterialVariants::MaterialVariants(Model& model, std::string source) : model_(mo
 
 int MaterialVariants::find(int current, const Material& wanted) {
   const bool valid = current >= 0 && current < static_cast<int>(model_.materials.size());
-  const int base =
-      valid ? (model_.materials[current].variant_of >= 0 ? model_.materials[current].variant_of : current) : -1;
+  const int base = valid ? (model_.materials[current].variant_of >= 0 ? model_.materials[current].variant_of : current)
+                         : -1;
   if (valid && key_of(base, model_.materials[current]) == key_of(base, wanted)) return current;
   if (const auto it = known_.find(key_of(base, wanted)); it != known_.end()) return it->second;
   if (model_.materials.size() >= kMaxMaterials)

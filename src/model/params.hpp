@@ -18,45 +18,45 @@ namespace mpdem {
 enum class Integrator { Trapezoidal, Verlet };
 
 struct TimeParams {
-  double duration = 0.0;              // s, simulated time to run (required, > 0)
+  double duration = 0.0;  // s, simulated time to run (required, > 0)
   Integrator integrator = Integrator::Trapezoidal;
-  double phi = 0.5;                   // -, trapezoidal weight in [0, 1] (0 explicit, 1 implicit)
-  double dt = 0.0;                    // s, (initial) time step (required, > 0)
-  double dt_min = 0.0;                // s, adaptive lower bound (default dt / 1000)
-  double dt_max = 0.0;                // s, adaptive upper bound (default dt)
-  bool adaptive = false;              // adaptive time stepping (physics.md section 10)
-  int desired_iterations = 10;        // K_D, iterations per step the adaptivity aims at
-  double p = 2.0;                     // convergence exponent of the fixed-point iteration
-  int max_iterations = 50;            // cap on fixed-point iterations per step (fixed dt)
+  double phi = 0.5;             // -, trapezoidal weight in [0, 1] (0 explicit, 1 implicit)
+  double dt = 0.0;              // s, (initial) time step (required, > 0)
+  double dt_min = 0.0;          // s, adaptive lower bound (default dt / 1000)
+  double dt_max = 0.0;          // s, adaptive upper bound (default dt)
+  bool adaptive = false;        // adaptive time stepping (physics.md section 10)
+  int desired_iterations = 10;  // K_D, iterations per step the adaptivity aims at
+  double p = 2.0;               // convergence exponent of the fixed-point iteration
+  int max_iterations = 50;      // cap on fixed-point iterations per step (fixed dt)
 };
 
 // Relative tolerances of the fixed-point iteration, one per field (physics.md section 9).
 struct ToleranceParams {
-  double position = 1e-8;             // TOL_r
-  double velocity = 1e-8;             // TOL_v
-  double rotation = 1e-8;             // TOL_alpha
-  double angular_velocity = 1e-8;     // TOL_w
-  double temperature = 1e-8;          // TOL_T
+  double position = 1e-8;          // TOL_r
+  double velocity = 1e-8;          // TOL_v
+  double rotation = 1e-8;          // TOL_alpha
+  double angular_velocity = 1e-8;  // TOL_w
+  double temperature = 1e-8;       // TOL_T
   // Absolute floors, RMS per particle: a field is converged when
   //   rms|y_K - y_(K-1)| <= TOL rms|y_K - y(t)| + floor,
   // so fields that hardly change over a step (a resting bed, a uniform temperature) converge at
   // once instead of chasing round-off (docs/integrators.md).
-  double position_floor = 1e-12;      // m
-  double velocity_floor = 1e-10;      // m/s
-  double rotation_floor = 1e-12;      // rad
+  double position_floor = 1e-12;         // m
+  double velocity_floor = 1e-10;         // m/s
+  double rotation_floor = 1e-12;         // rad
   double angular_velocity_floor = 1e-8;  // rad/s
-  double temperature_floor = 1e-9;    // K
+  double temperature_floor = 1e-9;       // K
 };
 
 struct AnalysisParams {
-  bool rotation = true;               // integrate angular velocity and orientation
-  bool thermal = false;               // integrate temperature (physics.md section 8)
+  bool rotation = true;  // integrate angular velocity and orientation
+  bool thermal = false;  // integrate temperature (physics.md section 8)
 };
 
 struct FieldParams {
-  Vec3 gravity{0.0, 0.0, -9.81};      // m/s^2
-  Vec3 electric{};                    // V/m, uniform E
-  Vec3 magnetic{};                    // T, uniform B
+  Vec3 gravity{0.0, 0.0, -9.81};  // m/s^2
+  Vec3 electric{};                // V/m, uniform E
+  Vec3 magnetic{};                // T, uniform B
 };
 
 // Empirical near-field law f = (a1 d^-b1 - a2 d^-b2) n for one material pair (46).
@@ -66,15 +66,15 @@ struct NearFieldPair {
 };
 
 struct NearFieldParams {
-  bool empirical = false;             // empirical power law (46) on
-  double a1 = 0.0;                    // N m^b1
-  double b1 = 0.0;                    // -
-  double a2 = 0.0;                    // N m^b2
-  double b2 = 0.0;                    // -
-  std::vector<NearFieldPair> pairs;   // per-material-pair overrides of a1, b1, a2, b2
-  bool coulomb = false;               // Coulomb force between charges (44)
-  double permittivity = 1.0;          // eps_r, relative permittivity of the medium
-  double cutoff = 0.0;                // m, range of both laws (0 = near field off)
+  bool empirical = false;            // empirical power law (46) on
+  double a1 = 0.0;                   // N m^b1
+  double b1 = 0.0;                   // -
+  double a2 = 0.0;                   // N m^b2
+  double b2 = 0.0;                   // -
+  std::vector<NearFieldPair> pairs;  // per-material-pair overrides of a1, b1, a2, b2
+  bool coulomb = false;              // Coulomb force between charges (44)
+  double permittivity = 1.0;         // eps_r, relative permittivity of the medium
+  double cutoff = 0.0;               // m, range of both laws (0 = near field off)
 };
 
 // The force law of a contact (docs/contact_model.md): Hertz-Mindlin (physics.md sections 5-6) or
@@ -85,13 +85,13 @@ enum class ContactLawKind : std::int64_t { Hertz, Linear };
 // every pair of materials.
 struct ContactLawParams {
   ContactLawKind law = ContactLawKind::Hertz;
-  std::optional<double> restitution;  // e in (0, 1]; calibrated damping (physics.md 5 Departure)
-  std::optional<double> damping_ratio;// xi_n >= 0 used as written in (50); exclusive with e
-  double mu_static = 0.5;             // -, static Coulomb coefficient
-  double mu_dynamic = 0.4;            // -, dynamic Coulomb coefficient (<= mu_static)
-  double mu_rolling = 0.0;            // -, rolling resistance coefficient
-  double tangential_damping = 0.0;    // xi_t, tangential damping ratio (67)
-  double stiffness_normal = 0.0;      // N/m, k_n of the linear law (required for it, > 0)
+  std::optional<double> restitution;           // e in (0, 1]; calibrated damping (physics.md 5 Departure)
+  std::optional<double> damping_ratio;         // xi_n >= 0 used as written in (50); exclusive with e
+  double mu_static = 0.5;                      // -, static Coulomb coefficient
+  double mu_dynamic = 0.4;                     // -, dynamic Coulomb coefficient (<= mu_static)
+  double mu_rolling = 0.0;                     // -, rolling resistance coefficient
+  double tangential_damping = 0.0;             // xi_t, tangential damping ratio (67)
+  double stiffness_normal = 0.0;               // N/m, k_n of the linear law (required for it, > 0)
   std::optional<double> stiffness_tangential;  // N/m, k_t of the linear law (default 2/7 k_n)
 };
 
@@ -99,12 +99,12 @@ struct ContactLawParams {
 // particle of one and a particle or barrier of the other; `kind` restricts it to one of the two).
 struct ContactPairParams {
   std::string material_a, material_b;
-  bool particle_particle = true;      // applies to particle-particle contacts
-  bool particle_barrier = true;       // applies to particle-barrier contacts
+  bool particle_particle = true;  // applies to particle-particle contacts
+  bool particle_barrier = true;   // applies to particle-barrier contacts
   std::optional<ContactLawKind> law;
   std::optional<double> restitution, damping_ratio, mu_static, mu_dynamic, mu_rolling, tangential_damping;
   std::optional<double> stiffness_normal, stiffness_tangential;
-  std::size_t line = 0;               // line of the entry, for messages
+  std::size_t line = 0;  // line of the entry, for messages
 };
 
 struct ContactParams {
@@ -114,9 +114,9 @@ struct ContactParams {
 };
 
 struct ThermalParams {
-  double air_temperature = 293.15;         // K
-  Vec3 air_velocity{};                     // m/s
-  double environment_temperature = 293.15; // K, radiation sink
+  double air_temperature = 293.15;          // K
+  Vec3 air_velocity{};                      // m/s
+  double environment_temperature = 293.15;  // K, radiation sink
   bool conduction = true;
   bool convection = false;
   bool radiation = false;
@@ -125,31 +125,31 @@ struct ThermalParams {
 enum class ExitPolicy { Remove, Stop };
 
 struct DomainParams {
-  bool bounded = false;                   // false: no domain check
-  Vec3 min{}, max{};                      // m, axis-aligned box
+  bool bounded = false;  // false: no domain check
+  Vec3 min{}, max{};     // m, axis-aligned box
   ExitPolicy on_exit = ExitPolicy::Stop;
 };
 
 struct NeighborParams {
-  double skin = 0.0;                      // m, Verlet skin (0 = 0.1 x smallest diameter)
+  double skin = 0.0;  // m, Verlet skin (0 = 0.1 x smallest diameter)
 };
 
 struct OutputParams {
-  std::string dir = "output";             // relative to the scene file's folder
-  double particles_every = 0.0;           // s of simulated time between particle VTU (0 = off)
-  double barriers_every = 0.0;            // s between barrier VTU (0 = off)
-  double particle_csv_every = 0.0;        // s between particle CSV snapshots (0 = off)
-  double barrier_log_every = 0.0;         // s between barrier-group log rows (0 = off)
-  int log_every = 100;                    // steps between global log rows (>= 1)
-  int checkpoint_every = 0;               // steps between checkpoints (0 = off)
-  double progress_every = 10.0;           // s of wall time between plain progress lines
+  std::string dir = "output";       // relative to the scene file's folder
+  double particles_every = 0.0;     // s of simulated time between particle VTU (0 = off)
+  double barriers_every = 0.0;      // s between barrier VTU (0 = off)
+  double particle_csv_every = 0.0;  // s between particle CSV snapshots (0 = off)
+  double barrier_log_every = 0.0;   // s between barrier-group log rows (0 = off)
+  int log_every = 100;              // steps between global log rows (>= 1)
+  int checkpoint_every = 0;         // steps between checkpoints (0 = off)
+  double progress_every = 10.0;     // s of wall time between plain progress lines
 };
 
 // Instability detection: the run stops with a message naming particles, time and step.
 struct CheckParams {
-  double max_overlap = 0.05;          // -, largest overlap / smaller radius (0 = off)
-  double energy_jump = 0.5;           // -, largest one-step rise of the energy balance relative
-                                      //    to kinetic + rotational + elastic energy (0 = off)
+  double max_overlap = 0.05;  // -, largest overlap / smaller radius (0 = off)
+  double energy_jump = 0.5;   // -, largest one-step rise of the energy balance relative
+                              //    to kinetic + rotational + elastic energy (0 = off)
 };
 
 struct Params {

@@ -19,24 +19,24 @@ namespace mpdem {
 // [[particles]] entry: a particle CSV file, or particles generated in a region (`generate`).
 // Columns the file lacks take `material`'s defaults.
 struct ParticleSource {
-  std::filesystem::path file;     // absolute (resolved against the scene file's folder), or empty
+  std::filesystem::path file;            // absolute (resolved against the scene file's folder), or empty
   std::optional<GenerateSpec> generate;  // set instead of `file` for generated particles
-  std::string material;           // default material name ("" = first material)
-  std::size_t line = 0;           // line of the entry in the scene file, for messages
+  std::string material;                  // default material name ("" = first material)
+  std::size_t line = 0;                  // line of the entry in the scene file, for messages
 };
 
 // [[barriers]] entry: a barrier CSV file or an STL file, with defaults for its elements.
 struct BarrierSource {
-  std::filesystem::path file;     // barrier CSV (absolute), or empty
-  std::filesystem::path stl;      // STL file (absolute), or empty
-  std::string group;              // group name ("" = file stem)
-  std::string material;           // material giving young/poisson when the CSV has none
-  MotionLaw motion;               // default motion law for elements without motion columns
-  double thickness = 0.0;         // m, fictitious thickness t_b
-  std::optional<double> temperature; // K, fixed temperature (none = insulated)
-  double scale = 1.0;             // STL only: vertex scale factor
-  Vec3 rotate_deg{};              // STL only: rotation about x, then y, then z, degrees
-  Vec3 translate{};               // STL only: m, translation after scale and rotation
+  std::filesystem::path file;         // barrier CSV (absolute), or empty
+  std::filesystem::path stl;          // STL file (absolute), or empty
+  std::string group;                  // group name ("" = file stem)
+  std::string material;               // material giving young/poisson when the CSV has none
+  MotionLaw motion;                   // default motion law for elements without motion columns
+  double thickness = 0.0;             // m, fictitious thickness t_b
+  std::optional<double> temperature;  // K, fixed temperature (none = insulated)
+  double scale = 1.0;                 // STL only: vertex scale factor
+  Vec3 rotate_deg{};                  // STL only: rotation about x, then y, then z, degrees
+  Vec3 translate{};                   // STL only: m, translation after scale and rotation
   std::size_t line = 0;
 };
 
@@ -47,8 +47,8 @@ struct Model {
 };
 
 struct Scene {
-  std::filesystem::path file;     // the scene file
-  std::filesystem::path dir;      // its folder; relative paths resolve against it
+  std::filesystem::path file;  // the scene file
+  std::filesystem::path dir;   // its folder; relative paths resolve against it
   Model model;
   std::vector<ParticleSource> particle_sources;
   std::vector<BarrierSource> barrier_sources;

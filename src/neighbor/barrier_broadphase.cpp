@@ -109,7 +109,7 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
 
   // One query per particle; each thread owns a contiguous block of particles (see VerletList).
   offset_.assign(n + 1, 0);
-#pragma omp parallel if(n >= kNeighborParallelMin)
+#pragma omp parallel if (n >= kNeighborParallelMin)
   {
     const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
     const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
@@ -134,7 +134,7 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
         const Node& nd = nodes_[stack[--top]];
         if (!in_expanded_box(p, nd.lo, nd.hi, r)) continue;
         if (nd.count == 0) {
-          stack[top++] = nd.first;                                           // right child
+          stack[top++] = nd.first;                                             // right child
           stack[top++] = static_cast<std::uint32_t>(&nd - nodes_.data()) + 1;  // left child
           continue;
         }

@@ -35,7 +35,7 @@ class BarrierBroadphase {
   // non-finite input.
   void build(std::span<const Vec3> x, std::span<const double> radius, const Barriers& barriers, double skin);
 
-  std::size_t size() const { return offset_.size() - 1; }      // N at the last build
+  std::size_t size() const { return offset_.size() - 1; }            // N at the last build
   std::size_t num_elements() const { return offset_build_.size(); }  // M at the last build
   std::size_t num_candidates() const { return index_.size(); }
   // Candidate elements of particle i, ascending.
@@ -59,24 +59,24 @@ class BarrierBroadphase {
 
  private:
   struct Node {
-    Vec3 lo, hi;               // m, box of the expanded element boxes below, padded outward
-    std::uint32_t first = 0;   // leaf: first slot in perm_; inner: index of the right child
-    std::uint32_t count = 0;   // leaf: number of elements; inner: 0 (left child is next node)
+    Vec3 lo, hi;              // m, box of the expanded element boxes below, padded outward
+    std::uint32_t first = 0;  // leaf: first slot in perm_; inner: index of the right child
+    std::uint32_t count = 0;  // leaf: number of elements; inner: 0 (left child is next node)
   };
   std::uint32_t build_node(std::uint32_t begin, std::uint32_t end, double pad_scale);
 
-  double skin_ = 0.0;                      // m
+  double skin_ = 0.0;  // m
   bool built_ = false;
   std::uint64_t generation_ = 0;
-  std::vector<Vec3> lo_, hi_;              // [M] m, vertex box of each element (unexpanded)
-  std::vector<double> grow_;               // [M] m, t_b/2 + skin of each element
-  std::vector<Vec3> centroid_;             // [M] m, box centres, for splitting
-  std::vector<std::uint32_t> perm_;        // [M] element indices in leaf order
-  std::vector<Node> nodes_;                // [< 2M] hierarchy, root at 0
-  std::vector<Vec3> offset_build_;         // [M] m, barrier offsets u(t) at build
-  std::vector<std::size_t> offset_{0};     // [N+1] CSR offsets
-  std::vector<std::uint32_t> index_;       // [candidates] element indices
-  std::vector<std::uint32_t> active_;      // [particles with candidates] indices, ascending
+  std::vector<Vec3> lo_, hi_;           // [M] m, vertex box of each element (unexpanded)
+  std::vector<double> grow_;            // [M] m, t_b/2 + skin of each element
+  std::vector<Vec3> centroid_;          // [M] m, box centres, for splitting
+  std::vector<std::uint32_t> perm_;     // [M] element indices in leaf order
+  std::vector<Node> nodes_;             // [< 2M] hierarchy, root at 0
+  std::vector<Vec3> offset_build_;      // [M] m, barrier offsets u(t) at build
+  std::vector<std::size_t> offset_{0};  // [N+1] CSR offsets
+  std::vector<std::uint32_t> index_;    // [candidates] element indices
+  std::vector<std::uint32_t> active_;   // [particles with candidates] indices, ascending
   std::vector<std::vector<std::uint32_t>> thread_buf_;
   std::vector<std::vector<std::uint32_t>> thread_active_;
   std::vector<std::size_t> active_start_;  // [threads + 1] where each thread's active particles go

@@ -131,8 +131,7 @@ void CellGrid::build(std::span<const Vec3> x, double cell_side, bool find_neighb
   } else {
     origin_ = {};
   }
-  side_ = std::max(cell_side > 0.0 && std::isfinite(cell_side) ? cell_side : 1.0,
-                   extent / kMaxCellsPerAxis) * kSidePad;
+  side_ = std::max(cell_side > 0.0 && std::isfinite(cell_side) ? cell_side : 1.0, extent / kMaxCellsPerAxis) * kSidePad;
   if (!(side_ > 0.0)) side_ = 1.0;  // extent 0 and a tiny side underflowing cannot happen, but be safe
   inv_side_ = 1.0 / side_;
 
@@ -140,7 +139,7 @@ void CellGrid::build(std::span<const Vec3> x, double cell_side, bool find_neighb
   // cells, else the (slower) bitwise Z-order comparison gives the same order.
   pcoord_.resize(n);
   std::int64_t mx = 0, my = 0, mz = 0;
-#pragma omp parallel for schedule(static) reduction(max : mx, my, mz) if(n >= kNeighborParallelMin)
+#pragma omp parallel for schedule(static) reduction(max : mx, my, mz) if (n >= kNeighborParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     pcoord_[i] = coord_of(x[i]);
     mx = std::max(mx, pcoord_[i].x);
@@ -176,7 +175,7 @@ void CellGrid::sort_particles(std::size_t n) {
   }
   keys_.resize(n);
   keys_tmp_.resize(n);
-#pragma omp parallel for schedule(static) if(n >= kNeighborParallelMin)
+#pragma omp parallel for schedule(static) if (n >= kNeighborParallelMin)
   for (std::size_t i = 0; i < n; ++i) keys_[i] = {morton_key(pcoord_[i]), static_cast<std::uint32_t>(i)};
   // LSD radix sort, 11 bits per pass, only over the bits the keys use. Stable, and the input is
   // in index order, so equal keys stay ordered by index: the order is (key, index).
@@ -202,7 +201,7 @@ void CellGrid::sort_particles(std::size_t n) {
     for (std::size_t i = 0; i < n; ++i) keys_tmp_[count[(keys_[i].key >> shift) & (kBuckets - 1)]++] = keys_[i];
     keys_.swap(keys_tmp_);
   }
-#pragma omp parallel for schedule(static) if(n >= kNeighborParallelMin)
+#pragma omp parallel for schedule(static) if (n >= kNeighborParallelMin)
   for (std::size_t k = 0; k < n; ++k) sorted_[k] = keys_[k].index;
 }
 
@@ -215,8 +214,8 @@ void CellGrid::index_cells(bool find_neighbors) {
   for (std::size_t k = 0; k < n; ++k) {
     // On the key path the coordinates are decoded from the (sequential) keys rather than
     // gathered from pcoord_ in random order.
-    const bool new_cell = k == 0 || (morton_fast_ ? keys_[k].key != keys_[k - 1].key
-                                                  : !(pcoord_[sorted_[k]] == coord_.back()));
+    const bool new_cell = k == 0 ||
+                          (morton_fast_ ? keys_[k].key != keys_[k - 1].key : !(pcoord_[sorted_[k]] == coord_.back()));
     if (new_cell) {
       if (morton_fast_) {
         const std::uint64_t key = keys_[k].key;
@@ -234,8 +233,8 @@ void CellGrid::index_cells(bool find_neighbors) {
 
   // Compact sets: a dense array over the bounding box (direct, cache-friendly lookups), allowed
   // only while it stays within kDenseFactor N slots. Otherwise a hash table at most half full.
-  const double box_cells =
-      static_cast<double>(dims_[0]) * static_cast<double>(dims_[1]) * static_cast<double>(dims_[2]);
+  const double box_cells = static_cast<double>(dims_[0]) * static_cast<double>(dims_[1]) *
+                           static_cast<double>(dims_[2]);
   table_.clear();
   dense_.clear();
   if (!find_neighbors) return;
@@ -256,8 +255,7 @@ void CellGrid::index_cells(bool find_neighbors) {
     }
   }
 
-  for (int k = 0; k < 27; ++k)
-    dense_offset_[k] = ((k / 9 - 1) * dims_[1] + (k / 3 % 3 - 1)) * dims_[0] + (k % 3 - 1);
+  for (int k = 0; k < 27; ++k) dense_offset_[k] = ((k / 9 - 1) * dims_[1] + (k / 3 % 3 - 1)) * dims_[0] + (k % 3 - 1);
 }
 
 int CellGrid::neighbor_cells(std::size_t c, std::uint32_t out[27]) const {
@@ -288,8 +286,7 @@ std::size_t CellGrid::memory_bytes() const {
   return pcoord_.capacity() * sizeof(CellCoord) + (keys_.capacity() + keys_tmp_.capacity()) * sizeof(KeyIndex) +
          dense_.capacity() * sizeof(std::uint32_t) + sorted_.capacity() * sizeof(std::uint32_t) +
          cell_of_.capacity() * sizeof(std::uint32_t) + coord_.capacity() * sizeof(CellCoord) +
-         start_.capacity() * sizeof(std::uint32_t) + table_.capacity() * sizeof(std::uint32_t) +
-         0;
+         start_.capacity() * sizeof(std::uint32_t) + table_.capacity() * sizeof(std::uint32_t) + 0;
 }
 
 }  // namespace mpdem

@@ -45,8 +45,8 @@ class CellGrid {
 
   std::size_t num_particles() const { return sorted_.size(); }
   std::size_t num_cells() const { return coord_.size(); }
-  double cell_side() const { return side_; }              // m
-  const Vec3& origin() const { return origin_; }          // m, corner of cell (0, 0, 0)
+  double cell_side() const { return side_; }      // m
+  const Vec3& origin() const { return origin_; }  // m, corner of cell (0, 0, 0)
 
   // Particle indices in cell (Morton) order; within a cell ascending by index [N].
   std::span<const std::uint32_t> sorted() const { return sorted_; }
@@ -62,8 +62,8 @@ class CellGrid {
   // be the largest array of the grid).
   int neighbor_cells(std::size_t c, std::uint32_t out[27]) const;
 
-  CellCoord coord_of(const Vec3& p) const;     // cell containing point p (may be unoccupied)
-  std::uint32_t find(const CellCoord& c) const; // cell index, or kNone if no particle is in it
+  CellCoord coord_of(const Vec3& p) const;       // cell containing point p (may be unoccupied)
+  std::uint32_t find(const CellCoord& c) const;  // cell index, or kNone if no particle is in it
 
   // Bytes held by all containers (capacity), for the O(N) memory check.
   std::size_t memory_bytes() const;
@@ -78,7 +78,7 @@ class CellGrid {
   static constexpr double kDenseFactor = 8.0;
 
  private:
-  struct KeyIndex {         // radix-sort record: Morton key of the particle's cell, particle index
+  struct KeyIndex {  // radix-sort record: Morton key of the particle's cell, particle index
     std::uint64_t key;
     std::uint32_t index;
   };
@@ -86,9 +86,9 @@ class CellGrid {
   void index_cells(bool find_neighbors);
   std::size_t slot_of(const CellCoord& c) const;
 
-  double side_ = 1.0;                      // m
-  double inv_side_ = 1.0;                  // 1/m
-  Vec3 origin_{};                          // m
+  double side_ = 1.0;      // m
+  double inv_side_ = 1.0;  // 1/m
+  Vec3 origin_{};          // m
   bool morton_fast_ = true;
   std::int64_t dims_[3] = {0, 0, 0};       // cells per axis spanned by the particles
   std::vector<CellCoord> pcoord_;          // [N] cell coordinates of each particle (build only)

@@ -58,8 +58,8 @@ class NeighborSearch {
   BarrierBroadphase broad_;
   PairBlocks blocks_;
   bool want_incoming_ = false;
-  std::vector<std::size_t> in_offset_;     // [N+1] CSR offsets of the transposed index
-  std::vector<std::uint32_t> in_slot_;     // [pairs] slots, grouped by second member
+  std::vector<std::size_t> in_offset_;  // [N+1] CSR offsets of the transposed index
+  std::vector<std::uint32_t> in_slot_;  // [pairs] slots, grouped by second member
 
   void build(std::span<const Vec3> x, std::span<const double> radius, const Barriers& b);
 };

@@ -33,7 +33,7 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
 
   double rmax = 0.0;
   bool radii_ok = true;
-#pragma omp parallel for schedule(static) reduction(max : rmax) reduction(&& : radii_ok) if(n >= kNeighborParallelMin)
+#pragma omp parallel for schedule(static) reduction(max : rmax) reduction(&& : radii_ok) if (n >= kNeighborParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     radii_ok = radii_ok && radius[i] >= 0.0 && std::isfinite(radius[i]);
     rmax = std::max(rmax, radius[i]);
@@ -46,16 +46,16 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
   // Any listed pair is closer than 2 R_max + extra + skin, so it lies in adjacent cells.
   CellGrid grid;
   grid.build(x, 2.0 * rmax + extra_range + skin);
-  grid_stats_ = {grid.num_cells(), grid.hash_slots(), grid.dense_slots(), grid.memory_bytes(),
-                 grid.uses_morton_key(), grid.uses_dense_index()};
+  grid_stats_ = {grid.num_cells(),    grid.hash_slots(),      grid.dense_slots(),
+                 grid.memory_bytes(), grid.uses_morton_key(), grid.uses_dense_index()};
 
   // Centres and radii in cell order: the inner loop then streams contiguous memory.
   const auto sorted = grid.sorted();
   const auto start = grid.cell_start();
-  std::vector<Vec3> xs(n);     // m
-  std::vector<double> rs(n);   // m
+  std::vector<Vec3> xs(n);                             // m
+  std::vector<double> rs(n);                           // m
   std::vector<std::vector<std::uint32_t>> thread_buf;  // per-thread pair buffers
-#pragma omp parallel for schedule(static) if(n >= kNeighborParallelMin)
+#pragma omp parallel for schedule(static) if (n >= kNeighborParallelMin)
   for (std::size_t k = 0; k < n; ++k) {
     xs[k] = x[sorted[k]];
     rs[k] = radius[sorted[k]];
@@ -65,7 +65,7 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
 
   // Each thread owns a contiguous block of i: it writes only those counts and its own buffer,
   // so the result is the same for any number of threads. Counts -> exclusive scan -> copy.
-#pragma omp parallel if(n >= kNeighborParallelMin)
+#pragma omp parallel if (n >= kNeighborParallelMin)
   {
     const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
     const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
@@ -121,7 +121,7 @@ double VerletList::max_displacement(std::span<const Vec3> x) const {
   if (!built_ || x.size() != x_build_.size()) return std::numeric_limits<double>::infinity();
   double m2 = 0.0;
   const std::size_t n = x.size();
-#pragma omp parallel for schedule(static) reduction(max : m2) if(n >= kNeighborParallelMin)
+#pragma omp parallel for schedule(static) reduction(max : m2) if (n >= kNeighborParallelMin)
   for (std::size_t i = 0; i < n; ++i) m2 = std::max(m2, norm2(x[i] - x_build_[i]));
   return std::sqrt(m2);
 }
@@ -133,7 +133,7 @@ bool VerletList::needs_rebuild(std::span<const Vec3> x) const {
   const double limit2 = half * half;
   bool exceeded = false;
   const std::size_t n = x.size();
-#pragma omp parallel for schedule(static) reduction(|| : exceeded) if(n >= kNeighborParallelMin)
+#pragma omp parallel for schedule(static) reduction(|| : exceeded) if (n >= kNeighborParallelMin)
   for (std::size_t i = 0; i < n; ++i) exceeded = exceeded || norm2(x[i] - x_build_[i]) > limit2;
   return exceeded;
 }

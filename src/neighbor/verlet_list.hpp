@@ -29,14 +29,14 @@ class VerletList {
   // or radius, a non-finite position, or more than 2^32 - 1 particles.
   void build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range = 0.0);
 
-  std::size_t size() const { return x_build_.size(); }        // N at the last build
+  std::size_t size() const { return x_build_.size(); }  // N at the last build
   std::size_t num_pairs() const { return index_.size(); }
   // Neighbours j > i of particle i, ascending.
   std::span<const std::uint32_t> neighbors(std::size_t i) const {
     return {index_.data() + offset_[i], offset_[i + 1] - offset_[i]};
   }
-  const std::vector<std::size_t>& offsets() const { return offset_; }    // [N+1]
-  const std::vector<std::uint32_t>& indices() const { return index_; }   // [num_pairs]
+  const std::vector<std::size_t>& offsets() const { return offset_; }   // [N+1]
+  const std::vector<std::uint32_t>& indices() const { return index_; }  // [num_pairs]
 
   // Largest |x_i - x_i(build)| (m); +infinity if the particle count changed since the build.
   double max_displacement(std::span<const Vec3> x) const;
@@ -44,29 +44,29 @@ class VerletList {
   // changed, or the list was never built).
   bool needs_rebuild(std::span<const Vec3> x) const;
 
-  double skin() const { return skin_; }                 // m
+  double skin() const { return skin_; }                                  // m
   const std::vector<Vec3>& build_positions() const { return x_build_; }  // [N] m, at the last build
-  double extra_range() const { return extra_; }         // m
-  double max_radius() const { return max_radius_; }     // m, at build
+  double extra_range() const { return extra_; }                          // m
+  double max_radius() const { return max_radius_; }                      // m, at build
   // The cell grid of the last build. It and the build's scratch are freed when the build ends
   // (rebuilds are rare; between them the memory matters more), so only its figures are kept.
   struct GridStats {
     std::size_t cells = 0, hash_slots = 0, dense_slots = 0;
-    std::size_t bytes = 0;          // held by the grid during the build
+    std::size_t bytes = 0;  // held by the grid during the build
     bool morton_key = false, dense_index = false;
   };
   const GridStats& grid_stats() const { return grid_stats_; }
-  std::size_t memory_bytes() const;                     // bytes held between builds
+  std::size_t memory_bytes() const;  // bytes held between builds
 
  private:
-  double skin_ = 0.0;                        // m
-  double extra_ = 0.0;                       // m
-  double max_radius_ = 0.0;                  // m
+  double skin_ = 0.0;        // m
+  double extra_ = 0.0;       // m
+  double max_radius_ = 0.0;  // m
   bool built_ = false;
   GridStats grid_stats_;
-  std::vector<Vec3> x_build_;                // [N] m, centres at build time
-  std::vector<std::size_t> offset_{0};       // [N+1] CSR offsets
-  std::vector<std::uint32_t> index_;         // [pairs] neighbour indices
+  std::vector<Vec3> x_build_;           // [N] m, centres at build time
+  std::vector<std::size_t> offset_{0};  // [N+1] CSR offsets
+  std::vector<std::uint32_t> index_;    // [pairs] neighbour indices
 };
 
 }  // namespace mpdem

@@ -87,8 +87,8 @@ bool vertex_kept(const BarrierTopology& topo, const Vec3& x, std::int32_t v, con
 // point is within rounding of a neighbouring feature (edge end / vertex with an edge nearly
 // interior), to that feature too. Sets c.kind/c.feature of the first feature kept.
 template <class TriOf>
-bool boundary_kept(const Barriers& bars, const TriOf& tri_of, const BarrierTopology& topo, const Vec3& x,
-                   std::size_t e, const Tri& t, const TriangleClosestPoint& cp, BarrierContact& c) {
+bool boundary_kept(const Barriers& bars, const TriOf& tri_of, const BarrierTopology& topo, const Vec3& x, std::size_t e,
+                   const Tri& t, const TriangleClosestPoint& cp, BarrierContact& c) {
   const Vec3& off = bars.offset[e];
   auto try_edge = [&](int k) {
     const std::int32_t g = topo.elem_edge[3 * e + k];

@@ -26,12 +26,12 @@
 namespace mpdem {
 
 struct BarrierContact {
-  std::uint32_t element = 0;      // barrier element index
-  Feature kind = Feature::Face;   // feature of the element holding the contact point
-  std::int32_t feature = 0;       // Face: element index; Edge: global edge id; Vertex: global vertex id
-  Vec3 point;                     // m, contact point on the (mid-)surface at the current offset
-  Vec3 normal;                    // -, unit, from the contact point towards the sphere centre
-  double overlap = 0.0;           // m, R + t_b/2 - |x - p| > 0
+  std::uint32_t element = 0;     // barrier element index
+  Feature kind = Feature::Face;  // feature of the element holding the contact point
+  std::int32_t feature = 0;      // Face: element index; Edge: global edge id; Vertex: global vertex id
+  Vec3 point;                    // m, contact point on the (mid-)surface at the current offset
+  Vec3 normal;                   // -, unit, from the contact point towards the sphere centre
+  double overlap = 0.0;          // m, R + t_b/2 - |x - p| > 0
 };
 
 // One element's triangle at the barriers' current offsets, with what detection derives from its

@@ -32,14 +32,13 @@ inline PairGeometry pair_geometry(const Vec3& x_i, double R_i, const Vec3& x_j, 
 
 // Velocity of i relative to j at the contact point                                 (60)
 // v_rel = (v_i + w_i x r_Pi) - (v_j + w_j x r_Pj)   (m/s; w in rad/s, r in m)
-inline Vec3 contact_relative_velocity(const Vec3& v_i, const Vec3& w_i, const Vec3& r_Pi,
-                                      const Vec3& v_j, const Vec3& w_j, const Vec3& r_Pj) {
+inline Vec3 contact_relative_velocity(const Vec3& v_i, const Vec3& w_i, const Vec3& r_Pi, const Vec3& v_j,
+                                      const Vec3& w_j, const Vec3& r_Pj) {
   return (v_i + cross(w_i, r_Pi)) - (v_j + cross(w_j, r_Pj));
 }
 
 // Particle-barrier: the barrier translates rigidly with u'(t) (97) and does not rotate.
-inline Vec3 contact_relative_velocity_barrier(const Vec3& v_i, const Vec3& w_i, const Vec3& r_Pi,
-                                              const Vec3& u_dot) {
+inline Vec3 contact_relative_velocity_barrier(const Vec3& v_i, const Vec3& w_i, const Vec3& r_Pi, const Vec3& u_dot) {
   return (v_i + cross(w_i, r_Pi)) - u_dot;
 }
 

@@ -30,9 +30,7 @@ inline double pair_conductivity(double k_i, double k_j) {
 }
 
 // Conduction into i from j across their contact: K A (T_j - T_i) / d                (88), (90)  [W]
-inline double conduction_heat(double K, double A, double d, double T_i, double T_j) {
-  return K * A * (T_j - T_i) / d;
-}
+inline double conduction_heat(double K, double A, double d, double T_i, double T_j) { return K * A * (T_j - T_i) / d; }
 
 // Contact area of a sphere of radius R cut by a plane at depth `overlap`:
 // A = pi (R^2 - (R - overlap)^2); a centre past the plane gives the full disc pi R^2.     [m^2]

@@ -14,9 +14,7 @@ namespace mpdem {
 inline constexpr double kVacuumPermittivity = 8.8541878128e-12;  // F/m, eps0 (CODATA 2018)
 
 // Coulomb constant of the medium 1 / (4 pi eps0 eps_r)   [N m^2 / C^2]
-inline double coulomb_constant(double eps_r) {
-  return 1.0 / (4.0 * std::numbers::pi * kVacuumPermittivity * eps_r);
-}
+inline double coulomb_constant(double eps_r) { return 1.0 / (4.0 * std::numbers::pi * kVacuumPermittivity * eps_r); }
 
 // Coulomb force coefficient q_i q_j / (4 pi eps0 eps_r d^2)                       (44)   [N]
 // kc = coulomb_constant(eps_r); q in C, d > 0 in m.

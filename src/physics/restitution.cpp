@@ -30,8 +30,7 @@ State rk4_step(const State& s, double h, double c) {
   const double k2x = s.y + 0.5 * h * k1y, k2y = accel(s.x + 0.5 * h * k1x, s.y + 0.5 * h * k1y, c);
   const double k3x = s.y + 0.5 * h * k2y, k3y = accel(s.x + 0.5 * h * k2x, s.y + 0.5 * h * k2y, c);
   const double k4x = s.y + h * k3y, k4y = accel(s.x + h * k3x, s.y + h * k3y, c);
-  return {s.x + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x),
-          s.y + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y)};
+  return {s.x + h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x), s.y + h / 6.0 * (k1y + 2.0 * k2y + 2.0 * k3y + k4y)};
 }
 
 // True once the pair has separated: recovering (x' < 0) and either the clamp is engaged
@@ -44,13 +43,13 @@ bool separated(const State& s, double c) {
 
 // Step control. Near tau = 0 the solution contains tau^(5/4) terms, so a uniform RK4 step loses
 // its order; a step proportional to tau (ratio kGrade) keeps the summed error ~kGrade^4.
-constexpr double kGrade = 0.01;      // h / tau in the graded start
-constexpr double kMaxStep = 1e-3;    // uniform step afterwards (dimensionless time)
-constexpr double kFirstStep = 1e-12; // first step
-constexpr double kMinStep = 1e-10;   // resolution of the separation instant: the force is ~0
-                                     // there, so x' errs by ~h^2 |dF/dtau|; much finer steps
-                                     // drown in rounding where x^(5/4) ~ -c x'
-constexpr double kMaxTime = 1e4;     // guard: far beyond any e >= 1e-3 collision
+constexpr double kGrade = 0.01;       // h / tau in the graded start
+constexpr double kMaxStep = 1e-3;     // uniform step afterwards (dimensionless time)
+constexpr double kFirstStep = 1e-12;  // first step
+constexpr double kMinStep = 1e-10;    // resolution of the separation instant: the force is ~0
+                                      // there, so x' errs by ~h^2 |dF/dtau|; much finer steps
+                                      // drown in rounding where x^(5/4) ~ -c x'
+constexpr double kMaxTime = 1e4;      // guard: far beyond any e >= 1e-3 collision
 
 }  // namespace
 
@@ -112,8 +111,7 @@ double solve_damping_ratio(double e) {
 
 double damping_ratio_for_restitution(double e) {
   if (!(e >= 1e-3 && e <= 1.0))
-    throw std::invalid_argument("damping_ratio_for_restitution: e must be in [1e-3, 1], got " +
-                                std::to_string(e));
+    throw std::invalid_argument("damping_ratio_for_restitution: e must be in [1e-3, 1], got " + std::to_string(e));
   if (e == 1.0) return 0.0;
   // Small cache: a run asks for a handful of distinct e (one per contact class / material pair).
   static std::mutex mutex;

@@ -22,8 +22,8 @@ inline double rolling_inertia_pair(double I_i, double I_j) { return I_i * I_j / 
 // w_rel = 0 instead of oscillating around it. Returns zero when w_rel = 0 (resistance is
 // static then, and the contact's tangential spring carries any load).
 // w_rel (rad/s), mu_r (-), r_star (m), f_n (N), I_eff (kg m^2), dt (s).
-inline Vec3 rolling_resistance_torque(const Vec3& w_rel, double mu_r, double r_star, double f_n,
-                                      double I_eff, double dt) {
+inline Vec3 rolling_resistance_torque(const Vec3& w_rel, double mu_r, double r_star, double f_n, double I_eff,
+                                      double dt) {
   if (mu_r <= 0.0) return Vec3{};  // before the square root: most scenes have no rolling friction
   const double w = norm(w_rel);
   if (w == 0.0) return Vec3{};

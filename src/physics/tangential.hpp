@@ -39,11 +39,11 @@ inline Vec3 project_spring(const Vec3& s, const Vec3& n) {
 }
 
 struct TangentialResult {
-  Vec3 force;                      // N, tangential force on i (on j: -force)
-  Vec3 spring;                     // m, spring to store for the next step
-  bool slipped = false;            // true when the Coulomb limit was hit
-  double dissipated_power = 0.0;   // W, estimate: dashpot d_t |v_t|^2 when sticking,
-                                   //    friction work rate -f_t.v_t when slipping
+  Vec3 force;                     // N, tangential force on i (on j: -force)
+  Vec3 spring;                    // m, spring to store for the next step
+  bool slipped = false;           // true when the Coulomb limit was hit
+  double dissipated_power = 0.0;  // W, estimate: dashpot d_t |v_t|^2 when sticking,
+                                  //    friction work rate -f_t.v_t when slipping
 };
 
 // Steps 2-5 of section 6 (57)-(58), (68)-(70). Inputs: spring s (m) already projected by
@@ -69,8 +69,8 @@ enum class SlipDecision : std::int64_t { Free, Stick, Slip };
 // branch).
 inline Vec3 pick(bool c, const Vec3& a, const Vec3& b) { return {c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z}; }
 
-inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Vec3& v_t, double k_t,
-                                         double d_t, double mu_s, double mu_d, double f_n,
+inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Vec3& v_t, double k_t, double d_t,
+                                         double mu_s, double mu_d, double f_n,
                                          SlipDecision decide = SlipDecision::Free) {
   TangentialResult out;
   const Vec3 s_tent = s + ds;                        // (58)
@@ -83,11 +83,11 @@ inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Ve
   const bool stick = (free & coulomb) | (!free & imposed);  // bitwise: a select, not a branch
   // Both outcomes are computed and one is selected (no branch, see project_spring); the slip
   // values use safe operands when sticking (ft2 > 0 whenever it slips).
-  const Vec3 t = f_trial * (1.0 / std::sqrt(stick ? 1.0 : ft2));    // (70)
+  const Vec3 t = f_trial * (1.0 / std::sqrt(stick ? 1.0 : ft2));  // (70)
   const double f_slide = mu_d * std::abs(f_n);
   const Vec3 f_slip = f_slide * t;
   const double s_slip = k_t > 0.0 ? -f_slide / (k_t > 0.0 ? k_t : 1.0) : 0.0;  // (69), dynamic limit
-  out.force = pick(stick, f_trial, f_slip);          // stick (68) or slide
+  out.force = pick(stick, f_trial, f_slip);                                    // stick (68) or slide
   out.spring = pick(stick, s_tent, s_slip * t);
   out.slipped = !stick;
   out.dissipated_power = stick ? d_t * norm2(v_t) : -dot(f_slip, v_t);

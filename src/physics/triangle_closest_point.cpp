@@ -4,8 +4,7 @@
 
 namespace mpdem {
 
-TriangleClosestPoint closest_point_on_triangle_boundary(const Vec3& x, const Vec3& a, const Vec3& b,
-                                                        const Vec3& c) {
+TriangleClosestPoint closest_point_on_triangle_boundary(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 v[3] = {a, b, c};
   TriangleClosestPoint best{a, Feature::Vertex, 0};
   double best_d2 = std::numeric_limits<double>::infinity();

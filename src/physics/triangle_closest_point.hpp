@@ -17,14 +17,14 @@ namespace mpdem {
 enum class Feature : std::uint8_t { Face = 0, Edge = 1, Vertex = 2 };
 
 struct TriangleClosestPoint {
-  Vec3 point;                      // m, closest point of the closed triangle
-  Feature kind = Feature::Face;    // Voronoi region of the triangle containing the query point
-  int index = 0;                   // Face: 0; Edge k: 0 a-b, 1 b-c, 2 c-a; Vertex k: 0 a, 1 b, 2 c
+  Vec3 point;                    // m, closest point of the closed triangle
+  Feature kind = Feature::Face;  // Voronoi region of the triangle containing the query point
+  int index = 0;                 // Face: 0; Edge k: 0 a-b, 1 b-c, 2 c-a; Vertex k: 0 a, 1 b, 2 c
 };
 
 struct TriangleNormal {
-  Vec3 n;              // m^2, unnormalised normal, equal to (b - a) x (c - a) in exact arithmetic
-  double scale2 = 0.0; // m^4, |e_i|^2 |e_j|^2 of the two edges used: bounds |n|^2, sizes rounding
+  Vec3 n;               // m^2, unnormalised normal, equal to (b - a) x (c - a) in exact arithmetic
+  double scale2 = 0.0;  // m^4, |e_i|^2 |e_j|^2 of the two edges used: bounds |n|^2, sizes rounding
 };
 
 // Normal from the two shortest edges: |n| is the same for every pair, but the rounding error of a
@@ -49,16 +49,13 @@ inline double vertex_ray(const Vec3& x, const Vec3& v, const Vec3& w) { return d
 
 // Closest point on the three edges (the triangle's boundary). Edge interior when both vertex rays
 // of the edge are positive, else the vertex; the nearest of the three candidates wins.
-TriangleClosestPoint closest_point_on_triangle_boundary(const Vec3& x, const Vec3& a, const Vec3& b,
-                                                        const Vec3& c);
+TriangleClosestPoint closest_point_on_triangle_boundary(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c);
 
 // Closest point on the closed triangle (a, b, c). FACE when x projects strictly inside (all three
 // edge sides > 0), otherwise the boundary result. Degenerate triangles fall back to the boundary.
 TriangleClosestPoint closest_point_on_triangle(const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c);
 
 // Orthogonal projection of x onto the plane through a with normal n (n != 0).
-inline Vec3 project_on_plane(const Vec3& x, const Vec3& a, const Vec3& n) {
-  return x - n * (dot(x - a, n) / norm2(n));
-}
+inline Vec3 project_on_plane(const Vec3& x, const Vec3& a, const Vec3& n) { return x - n * (dot(x - a, n) / norm2(n)); }
 
 }  // namespace mpdem

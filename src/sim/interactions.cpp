@@ -38,13 +38,11 @@ double default_skin(const Model& model, const Particles& p) {
 }
 
 Interactions::Interactions(const Model& model, const Particles& p, const Barriers& b, const StepPolicy& policy)
-    : model_(model),
-      policy_(policy),
+    : model_(model), policy_(policy),
       // The list reaches beyond contact by the near-field cutoff (0 when the near field is off).
-      search_(std::make_unique<NeighborSearch>(default_skin(model, p),
-                                               near_field_extra_range(model.params.near_field, p))),
-      pp_(std::make_unique<ParticleContacts>(model,
-                                             policy.step_start)),
+      search_(
+          std::make_unique<NeighborSearch>(default_skin(model, p), near_field_extra_range(model.params.near_field, p))),
+      pp_(std::make_unique<ParticleContacts>(model, policy.step_start)),
       pb_(std::make_unique<BarrierContacts>(model, b)) {
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
   if (model.params.analysis.thermal) heat_ = std::make_unique<HeatTransfer>(model, b);
@@ -183,8 +181,16 @@ namespace {
 // The checkpointed statistics, field by field (one list for writing and reading).
 template <class S, class F>
 void for_each_stat(S& s, F&& f) {
-  f(s.contacts_pp); f(s.contacts_pb); f(s.elastic_energy); f(s.damping_dissipated); f(s.friction_dissipated);
-  f(s.rebuilds); f(s.near_field_energy); f(s.heat_to_barriers); f(s.heat_convected); f(s.heat_radiated);
+  f(s.contacts_pp);
+  f(s.contacts_pb);
+  f(s.elastic_energy);
+  f(s.damping_dissipated);
+  f(s.friction_dissipated);
+  f(s.rebuilds);
+  f(s.near_field_energy);
+  f(s.heat_to_barriers);
+  f(s.heat_convected);
+  f(s.heat_radiated);
 }
 // A field added to InteractionStats must be added to for_each_stat (and is then a format change).
 static_assert(sizeof(InteractionStats) == 10 * 8, "InteractionStats changed: update for_each_stat");
@@ -239,7 +245,8 @@ void Interactions::start_accumulators(Particles& p) const {
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
     p.force[i] = gravity_force(p.mass[i], f.gravity);
-    if (charged) p.force[i] += electric_force(p.charge[i], f.electric) + magnetic_force(p.charge[i], p.v[i], f.magnetic);
+    if (charged)
+      p.force[i] += electric_force(p.charge[i], f.electric) + magnetic_force(p.charge[i], p.v[i], f.magnetic);
     p.torque[i] = Vec3{};
     if (thermal) p.heat[i] = 0.0;
   }

@@ -18,39 +18,39 @@
 namespace mpdem {
 
 struct EvalRequest {
-  double time = 0.0;   // s, time of the evaluated state (barrier positions follow it)
-  double dt = 0.0;     // s, step length, for tangential spring increments (64)
-  double phi = 1.0;    // -, weight of the evaluated state's tangential velocity in the increment
-  bool commit = false; // store contact history: the evaluated state is the accepted end of step
-  int iteration = 0;   // fixed-point iteration (1, 2, ...) of the step, 0 outside the iteration
+  double time = 0.0;    // s, time of the evaluated state (barrier positions follow it)
+  double dt = 0.0;      // s, step length, for tangential spring increments (64)
+  double phi = 1.0;     // -, weight of the evaluated state's tangential velocity in the increment
+  bool commit = false;  // store contact history: the evaluated state is the accepted end of step
+  int iteration = 0;    // fixed-point iteration (1, 2, ...) of the step, 0 outside the iteration
 };
 
 // Energy and contact bookkeeping (physics.md section 12).
 struct InteractionStats {
-  std::size_t contacts_pp = 0;      // particle-particle contacts at the last evaluation
-  std::size_t contacts_pb = 0;      // particle-barrier contacts at the last evaluation
-  double elastic_energy = 0.0;      // J, Hertz + tangential springs at the last evaluation
-  double damping_dissipated = 0.0;  // J, cumulative over committed steps
-  double friction_dissipated = 0.0; // J, cumulative over committed steps
-  std::uint64_t rebuilds = 0;       // neighbour list rebuilds
-  double near_field_energy = 0.0;   // J, potential of the near-field pairs within the cutoff
+  std::size_t contacts_pp = 0;       // particle-particle contacts at the last evaluation
+  std::size_t contacts_pb = 0;       // particle-barrier contacts at the last evaluation
+  double elastic_energy = 0.0;       // J, Hertz + tangential springs at the last evaluation
+  double damping_dissipated = 0.0;   // J, cumulative over committed steps
+  double friction_dissipated = 0.0;  // J, cumulative over committed steps
+  std::uint64_t rebuilds = 0;        // neighbour list rebuilds
+  double near_field_energy = 0.0;    // J, potential of the near-field pairs within the cutoff
   // Thermal bookkeeping (physics.md section 8), cumulative over committed steps with the
   // integrator's own weighting of the start and end flows, so that
   //   sum m c T + heat_to_barriers + heat_convected + heat_radiated
   // stays constant (docs/multiphysics.md).
-  double heat_to_barriers = 0.0;    // J, conducted from the particles into fixed-temperature barriers
-  double heat_convected = 0.0;      // J, given by the particles to the air
-  double heat_radiated = 0.0;       // J, radiated by the particles to the surroundings
+  double heat_to_barriers = 0.0;  // J, conducted from the particles into fixed-temperature barriers
+  double heat_convected = 0.0;    // J, given by the particles to the air
+  double heat_radiated = 0.0;     // J, radiated by the particles to the surroundings
 };
 
 // Wall time spent per part of the evaluations (s, cumulative; not checkpointed), for the
 // benchmark's breakdown of where a step goes.
 struct PhaseTimes {
-  double search = 0.0;      // rebuild checks and rebuilds (prepare_step's, with reordering, too)
-  double fields = 0.0;      // accumulators reset, field forces
-  double pairs = 0.0;       // particle-particle contacts
-  double barriers = 0.0;    // particle-barrier contacts and element loads
-  double other = 0.0;       // near field, heat
+  double search = 0.0;    // rebuild checks and rebuilds (prepare_step's, with reordering, too)
+  double fields = 0.0;    // accumulators reset, field forces
+  double pairs = 0.0;     // particle-particle contacts
+  double barriers = 0.0;  // particle-barrier contacts and element loads
+  double other = 0.0;     // near field, heat
 };
 
 struct OverlapReport;
@@ -114,8 +114,8 @@ class Interactions {
   std::unique_ptr<NeighborSearch> search_;
   std::unique_ptr<ParticleContacts> pp_;
   std::unique_ptr<BarrierContacts> pb_;
-  std::unique_ptr<NearFieldForces> near_;   // null when the near field is off
-  std::unique_ptr<HeatTransfer> heat_;      // null when [analysis] thermal is off
+  std::unique_ptr<NearFieldForces> near_;  // null when the near field is off
+  std::unique_ptr<HeatTransfer> heat_;     // null when [analysis] thermal is off
   // Outward heat flows (W) of the last committed evaluation, the start values of the next step.
   double out_barriers_ = 0.0, out_convected_ = 0.0, out_radiated_ = 0.0;
 };

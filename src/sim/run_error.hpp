@@ -20,7 +20,7 @@ class Interrupted : public RunError {
       : RunError("interrupted by signal " + std::to_string(sig)), signal(sig), time(t), step(n),
         checkpoint(std::move(file)) {}
   int signal;
-  double time;          // s
+  double time;  // s
   std::uint64_t step;
   std::filesystem::path checkpoint;
 };

@@ -66,8 +66,8 @@ StepReport Simulation::advance(double dt) {
           "the fixed-point iteration did not converge within {} iterations at step {} (t = {:.9g} s, dt = {:.3g} s): "
           "field '{}' error {:.3g} > tolerance; largest change at particle id {}. Reduce time.dt (the contraction "
           "factor grows like (phi dt)^2 / m) or raise time.max_iterations.",
-          prm.time.max_iterations, steps_ + 1, time_, dt, kFieldNames[rep.worst_field],
-          rep.last_error[rep.worst_field], rep.worst_particle));
+          prm.time.max_iterations, steps_ + 1, time_, dt, kFieldNames[rep.worst_field], rep.last_error[rep.worst_field],
+          rep.worst_particle));
     }
   }
   evaluations_ += static_cast<std::uint64_t>(rep.evaluations);
@@ -154,8 +154,9 @@ void Simulation::check_overlap() {
   if (!(limit > 0.0)) return;
   const OverlapReport r = interactions_->max_overlap(scene_.particles, scene_.barriers);
   if (!(r.ratio > limit)) return;
-  const std::string between = r.element >= 0 ? fmt::format("particle id {} and barrier element id {}", r.particle, r.element)
-                                             : fmt::format("particles id {} and id {}", r.particle, r.other);
+  const std::string between = r.element >= 0
+                                  ? fmt::format("particle id {} and barrier element id {}", r.particle, r.element)
+                                  : fmt::format("particles id {} and id {}", r.particle, r.other);
   throw RunError(fmt::format(
       "overlap of {:.3g}% of the radius between {} at step {} (t = {:.9g} s), more than checks.max_overlap = {:.3g}%. "
       "The contact is not resolved: reduce time.dt (see `mpdem check` for a recommended step) or raise young.",
@@ -172,8 +173,7 @@ void Simulation::check_state(const StepReport& rep) {
       if (!finite_state(p, i))
         throw RunError(fmt::format("non-finite state of particle id {} at step {} (t = {:.9g} s): x = ({}, {}, {}), "
                                    "v = ({}, {}, {}). The run is unstable; reduce time.dt.",
-                                   p.id[i], steps_, time_, p.x[i].x, p.x[i].y, p.x[i].z, p.v[i].x, p.v[i].y,
-                                   p.v[i].z));
+                                   p.id[i], steps_, time_, p.x[i].x, p.x[i].y, p.x[i].z, p.v[i].x, p.v[i].y, p.v[i].z));
     }
   check_overlap();
   check_energy(scan);
@@ -189,9 +189,10 @@ void Simulation::remove_outside() {
     const Vec3& x = p.x[i];
     if (inside_domain(d, x)) continue;
     if (d.on_exit == ExitPolicy::Stop)
-      throw RunError(fmt::format("particle id {} left the domain at step {} (t = {:.9g} s) at ({:.6g}, {:.6g}, {:.6g}); "
-                                 "domain.on_exit = \"stop\"",
-                                 p.id[i], steps_, time_, x.x, x.y, x.z));
+      throw RunError(
+          fmt::format("particle id {} left the domain at step {} (t = {:.9g} s) at ({:.6g}, {:.6g}, {:.6g}); "
+                      "domain.on_exit = \"stop\"",
+                      p.id[i], steps_, time_, x.x, x.y, x.z));
     keep[i] = 0;
     ++gone;
     if (output_) output_->removed(p.id[i], time_, x);
@@ -230,10 +231,8 @@ RunSummary Simulation::run() {
   StepReport last;
   while (time_ < duration - 1e-9 * dt) {
     const double t0 = time_;
-    if (prm.time.adaptive && prm.time.integrator == Integrator::Trapezoidal)
-      last = advance_adaptive(duration - time_);
-    else
-      last = advance(std::min(dt, duration - time_));  // the last step ends exactly at duration
+    if (prm.time.adaptive && prm.time.integrator == Integrator::Trapezoidal) last = advance_adaptive(duration - time_);
+    else last = advance(std::min(dt, duration - time_));  // the last step ends exactly at duration
     const double h = time_ - t0;
     if (output_) {
       output_->snapshots(time_, h, scene_.particles, scene_.barriers, false);

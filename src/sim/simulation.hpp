@@ -25,10 +25,10 @@ struct RunOptions {
 };
 
 struct RunSummary {
-  double time = 0.0;                 // s, simulated time reached
+  double time = 0.0;  // s, simulated time reached
   std::uint64_t steps = 0;
-  std::uint64_t evaluations = 0;     // interaction evaluations
-  std::size_t removed = 0;           // particles removed at the domain boundary
+  std::uint64_t evaluations = 0;  // interaction evaluations
+  std::size_t removed = 0;        // particles removed at the domain boundary
 };
 
 // Output folder of a run: options.output_dir, else the scene's [output] dir relative to the scene.
@@ -43,11 +43,11 @@ class Simulation {
   Simulation(const Simulation&) = delete;  // the parts hold references into scene_
   Simulation& operator=(const Simulation&) = delete;
 
-  RunSummary run();                  // runs to [time] duration
+  RunSummary run();  // runs to [time] duration
 
   // Finer control, for tests and tools.
-  void initialize();                 // first evaluation of the rates at t = 0
-  StepReport advance(double dt);     // one accepted step of length dt (throws RunError on failure)
+  void initialize();              // first evaluation of the rates at t = 0
+  StepReport advance(double dt);  // one accepted step of length dt (throws RunError on failure)
   // One accepted adaptive step (physics.md section 10): tries the current step, shrinks and
   // redoes it until the iteration converges within desired_iterations, then sets the next dt.
   // `limit` caps the step (to land exactly on the end time).
@@ -71,7 +71,7 @@ class Simulation {
   void check_state(const StepReport& rep);  // NaN / infinity, energy jumps, domain exits
   void check_energy(const StateScan& s);
   void check_overlap();
-  void remove_outside();             // domain.on_exit: stop or remove
+  void remove_outside();  // domain.on_exit: stop or remove
   // J, mechanical energy + cumulative dissipation, from the scan of the particles.
   double energy_balance(const StateScan& s) const;
 
@@ -81,17 +81,17 @@ class Simulation {
   TrapezoidalIntegrator trapezoidal_;
   VerletIntegrator verlet_;
   std::unique_ptr<OutputManager> output_;
-  double time_ = 0.0;                // s
+  double time_ = 0.0;  // s
   std::uint64_t steps_ = 0;
   std::uint64_t evaluations_ = 0;
-  std::uint64_t redone_ = 0;         // adaptive steps redone with a smaller dt
-  double dt_ = 0.0;                  // s, step the next adaptive step tries
-  double last_balance_ = 0.0;        // J, energy_balance() after the previous step
-  double last_active_ = 0.0;         // J, kinetic + rotational + elastic after the previous step
-  bool energy_checked_ = false;      // last_balance_ / last_active_ are set
+  std::uint64_t redone_ = 0;     // adaptive steps redone with a smaller dt
+  double dt_ = 0.0;              // s, step the next adaptive step tries
+  double last_balance_ = 0.0;    // J, energy_balance() after the previous step
+  double last_active_ = 0.0;     // J, kinetic + rotational + elastic after the previous step
+  bool energy_checked_ = false;  // last_balance_ / last_active_ are set
   std::size_t removed_ = 0;
   bool initialized_ = false;
-  bool resumed_ = false;             // state loaded from a checkpoint
+  bool resumed_ = false;                   // state loaded from a checkpoint
   std::vector<char> resume_output_state_;  // OutputManager series from the checkpoint
 };
 

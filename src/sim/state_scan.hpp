@@ -16,8 +16,8 @@ namespace mpdem {
 // True when x lies in the closed box of a bounded domain (always true when unbounded).
 // & and | rather than && and ||: no branch, so the scan's loop vectorises.
 inline bool inside_domain(const DomainParams& d, const Vec3& x) {
-  return (!d.bounded) | ((x.x >= d.min.x) & (x.x <= d.max.x) & (x.y >= d.min.y) & (x.y <= d.max.y) &
-                         (x.z >= d.min.z) & (x.z <= d.max.z));
+  return (!d.bounded) | ((x.x >= d.min.x) & (x.x <= d.max.x) & (x.y >= d.min.y) & (x.y <= d.max.y) & (x.z >= d.min.z) &
+                         (x.z <= d.max.z));
 }
 
 // True when a particle's position, velocity, spin and temperature are all finite.
@@ -27,10 +27,10 @@ inline bool finite_state(const Vec3& x, const Vec3& v, const Vec3& w, double T) 
 inline bool finite_state(const Particles& p, std::size_t i) { return finite_state(p.x[i], p.v[i], p.w[i], p.T[i]); }
 
 struct StateScan {
-  ParticleEnergy energy;        // J, kinetic, rotational, gravitational
-  double electric = 0.0;        // J, potential in the uniform electric field, -sum q E.x
-  std::size_t nonfinite = 0;    // particles with a non-finite x, v, w or T
-  std::size_t outside = 0;      // particles outside the domain (0 when it is unbounded)
+  ParticleEnergy energy;      // J, kinetic, rotational, gravitational
+  double electric = 0.0;      // J, potential in the uniform electric field, -sum q E.x
+  std::size_t nonfinite = 0;  // particles with a non-finite x, v, w or T
+  std::size_t outside = 0;    // particles outside the domain (0 when it is unbounded)
 };
 
 StateScan scan_state(const Particles& p, const FieldParams& fields, const DomainParams& domain);

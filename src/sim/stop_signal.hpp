@@ -3,8 +3,8 @@
 // after the current step, writes a checkpoint, flushes its outputs and stops cleanly.
 namespace mpdem {
 
-void install_stop_handlers();   // idempotent
-int stop_signal();              // the signal received, or 0
-void clear_stop_signal();       // for tests
+void install_stop_handlers();  // idempotent
+int stop_signal();             // the signal received, or 0
+void clear_stop_signal();      // for tests
 
 }  // namespace mpdem

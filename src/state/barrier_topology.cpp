@@ -57,8 +57,8 @@ BarrierTopology BarrierTopology::build(const Barriers& bars) {
   t.elem_class = motion_classes(bars);
   t.elem_size.resize(m);
   for (std::size_t e = 0; e < m; ++e)
-    t.elem_size[e] = std::sqrt(std::max({norm2(bars.p1[e] - bars.p0[e]), norm2(bars.p2[e] - bars.p1[e]),
-                                         norm2(bars.p0[e] - bars.p2[e])}));
+    t.elem_size[e] = std::sqrt(
+        std::max({norm2(bars.p1[e] - bars.p0[e]), norm2(bars.p2[e] - bars.p1[e]), norm2(bars.p0[e] - bars.p2[e])}));
 
   // --- weld corners: sort (class, x, y, z, corner slot); equal keys share a global vertex
   struct Corner {

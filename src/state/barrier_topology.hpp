@@ -23,15 +23,15 @@ struct BarrierTopology {
   std::vector<std::int32_t> elem_class;   // [M] motion class (elements with identical MotionLaw)
   std::vector<double> elem_size;          // [M] m, longest edge at rest
   // --- per global vertex [V]
-  std::vector<Vec3> vertex_rest;               // [V] m, rest position
-  std::vector<std::int32_t> vertex_elem_start; // [V+1] CSR offsets into vertex_elem
-  std::vector<std::int32_t> vertex_elem;       // elements having the vertex, ascending per vertex
-  std::vector<std::int32_t> vertex_edge_start; // [V+1] CSR offsets into vertex_edge
-  std::vector<std::int32_t> vertex_edge;       // edges incident to the vertex, ascending per vertex
+  std::vector<Vec3> vertex_rest;                // [V] m, rest position
+  std::vector<std::int32_t> vertex_elem_start;  // [V+1] CSR offsets into vertex_elem
+  std::vector<std::int32_t> vertex_elem;        // elements having the vertex, ascending per vertex
+  std::vector<std::int32_t> vertex_edge_start;  // [V+1] CSR offsets into vertex_edge
+  std::vector<std::int32_t> vertex_edge;        // edges incident to the vertex, ascending per vertex
   // --- per global edge [E]
-  std::vector<std::int32_t> edge_vertex;       // [2E] end vertices (lower id first) at 2g, 2g+1
-  std::vector<std::int32_t> edge_elem_start;   // [E+1] CSR offsets into edge_elem
-  std::vector<std::int32_t> edge_elem;         // elements having the edge, ascending per edge
+  std::vector<std::int32_t> edge_vertex;      // [2E] end vertices (lower id first) at 2g, 2g+1
+  std::vector<std::int32_t> edge_elem_start;  // [E+1] CSR offsets into edge_elem
+  std::vector<std::int32_t> edge_elem;        // elements having the edge, ascending per edge
 
   // O(M log M). Throws std::length_error when 3M does not fit the 32-bit ids.
   static BarrierTopology build(const Barriers& bars);

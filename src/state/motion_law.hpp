@@ -9,11 +9,11 @@
 namespace mpdem {
 
 struct MotionLaw {
-  Vec3 a{};          // m/s, constant velocity
-  Vec3 A{};          // m, sine amplitude
-  double w1 = 0.0;   // rad/s
-  Vec3 B{};          // m, cosine amplitude
-  double w2 = 0.0;   // rad/s
+  Vec3 a{};         // m/s, constant velocity
+  Vec3 A{};         // m, sine amplitude
+  double w1 = 0.0;  // rad/s
+  Vec3 B{};         // m, cosine amplitude
+  double w2 = 0.0;  // rad/s
 
   Vec3 displacement(double t) const { return a * t + A * std::sin(w1 * t) + B * std::cos(w2 * t); }
   Vec3 velocity(double t) const { return a + A * (w1 * std::cos(w1 * t)) - B * (w2 * std::sin(w2 * t)); }

@@ -16,22 +16,22 @@ namespace mpdem {
 
 struct Particles {
   // --- constant properties [N] ---
-  std::vector<std::int64_t> id;        // user id, unique
-  std::vector<int> material;           // index into Model::materials
-  std::vector<double> radius;          // m
-  std::vector<double> mass;            // kg, 4/3 pi R^3 rho (rho of the material at load)
-  std::vector<double> inertia;         // kg m^2, 2/5 m R^2   (32)
-  std::vector<double> charge;          // C
+  std::vector<std::int64_t> id;  // user id, unique
+  std::vector<int> material;     // index into Model::materials
+  std::vector<double> radius;    // m
+  std::vector<double> mass;      // kg, 4/3 pi R^3 rho (rho of the material at load)
+  std::vector<double> inertia;   // kg m^2, 2/5 m R^2   (32)
+  std::vector<double> charge;    // C
   // --- state [N] ---
-  std::vector<Vec3> x;                 // m, centre
-  std::vector<Vec3> v;                 // m/s, velocity
-  std::vector<Vec3> w;                 // rad/s, angular velocity
-  std::vector<Quat> q;                 // orientation (unit quaternion, body -> world)
-  std::vector<double> T;               // K, temperature
+  std::vector<Vec3> x;    // m, centre
+  std::vector<Vec3> v;    // m/s, velocity
+  std::vector<Vec3> w;    // rad/s, angular velocity
+  std::vector<Quat> q;    // orientation (unit quaternion, body -> world)
+  std::vector<double> T;  // K, temperature
   // --- accumulators, overwritten by every interaction evaluation [N] ---
-  std::vector<Vec3> force;             // N, total force
-  std::vector<Vec3> torque;            // N m, total torque about the centre
-  std::vector<double> heat;            // W, total heat flow into the particle
+  std::vector<Vec3> force;   // N, total force
+  std::vector<Vec3> torque;  // N m, total torque about the centre
+  std::vector<double> heat;  // W, total heat flow into the particle
 
   std::size_t size() const { return id.size(); }
   void resize(std::size_t n);
@@ -50,9 +50,20 @@ struct Particles {
   // array added here cannot be forgotten by any of them.
   template <class F>
   void for_each_array(F&& f) {
-    f("id", id); f("material", material); f("radius", radius); f("mass", mass); f("inertia", inertia);
-    f("charge", charge); f("x", x); f("v", v); f("w", w); f("q", q); f("T", T);
-    f("force", force); f("torque", torque); f("heat", heat);
+    f("id", id);
+    f("material", material);
+    f("radius", radius);
+    f("mass", mass);
+    f("inertia", inertia);
+    f("charge", charge);
+    f("x", x);
+    f("v", v);
+    f("w", w);
+    f("q", q);
+    f("T", T);
+    f("force", force);
+    f("torque", torque);
+    f("heat", heat);
   }
 };
 

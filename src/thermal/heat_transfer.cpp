@@ -44,9 +44,9 @@ HeatFlows HeatTransfer::evaluate(Particles& p, const Barriers& b, const Neighbor
           pair_heat_[k] = 0.0;
           continue;
         }
-        const double A = contact_area_pair(d, p.radius[i], p.radius[j]);           // (89)
+        const double A = contact_area_pair(d, p.radius[i], p.radius[j]);  // (89)
         const double K = pair_conductivity(material(p, i).conductivity, material(p, j).conductivity);
-        pair_heat_[k] = conduction_heat(K, A, d, p.T[i], p.T[j]);                  // (88)
+        pair_heat_[k] = conduction_heat(K, A, d, p.T[i], p.T[j]);  // (88)
       }
     }
   }
@@ -69,7 +69,8 @@ HeatFlows HeatTransfer::evaluate(Particles& p, const Barriers& b, const Neighbor
         if (!std::isfinite(Tb)) continue;  // insulated element
         const double R = p.radius[i];
         const double A = contact_area_plane(R, c.overlap);
-        const double qb = conduction_heat(material(p, i).conductivity, A, barrier_conduction_distance(R, c.overlap), p.T[i], Tb);
+        const double qb = conduction_heat(material(p, i).conductivity, A, barrier_conduction_distance(R, c.overlap),
+                                          p.T[i], Tb);
         q += qb;
         acc[0] += qb;
       }
@@ -77,12 +78,14 @@ HeatFlows HeatTransfer::evaluate(Particles& p, const Barriers& b, const Neighbor
     if (convection) {
       const double v = norm(p.v[i] - prm_.air_velocity);
       if (v > kConvectionMaxSpeed) acc[3] += 1.0;
-      const double qc = convection_heat(convection_coefficient(v), p.radius[i], prm_.air_temperature, p.T[i]);  // (91)-(93)
+      const double qc = convection_heat(convection_coefficient(v), p.radius[i], prm_.air_temperature,
+                                        p.T[i]);  // (91)-(93)
       q += qc;
       acc[1] += qc;
     }
     if (radiation) {
-      const double qr = radiation_heat(material(p, i).emissivity, p.radius[i], prm_.environment_temperature, p.T[i]);  // (95)
+      const double qr = radiation_heat(material(p, i).emissivity, p.radius[i], prm_.environment_temperature,
+                                       p.T[i]);  // (95)
       q += qr;
       acc[2] += qr;
     }

@@ -41,9 +41,9 @@ class HeatTransfer {
   const Material& material(const Particles& p, std::size_t i) const {
     return model_.materials[static_cast<std::size_t>(p.material[i])];
   }
-  const Model& model_;             // conductivity and emissivity by material
+  const Model& model_;  // conductivity and emissivity by material
   ThermalParams prm_;
-  bool barrier_heat_ = false;      // conduction on and some barrier has a fixed temperature
+  bool barrier_heat_ = false;  // conduction on and some barrier has a fixed temperature
   BarrierTopology topo_;
   std::vector<double> pair_heat_;  // [pairs] W, into the slot's first member (second gets -)
   std::uint64_t clamped_ = 0;

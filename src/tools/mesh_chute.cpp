@@ -51,8 +51,8 @@ TriangleMesh make_chute(const ChuteSpec& s) {
       right_top[i] = m.add_vertex(m.vertices[right[i]] + up);
     }
     for (int i = 0; i + 1 < np; ++i) {
-      m.add_quad(left[i], left_top[i], left_top[i + 1], left[i + 1]);        // normal +y (inward)
-      m.add_quad(right[i], right[i + 1], right_top[i + 1], right_top[i]);    // normal -y (inward)
+      m.add_quad(left[i], left_top[i], left_top[i + 1], left[i + 1]);      // normal +y (inward)
+      m.add_quad(right[i], right[i + 1], right_top[i + 1], right_top[i]);  // normal -y (inward)
     }
   }
   return m;

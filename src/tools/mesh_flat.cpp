@@ -13,7 +13,8 @@ constexpr double kPi = 3.14159265358979323846;
 }
 
 TriangleMesh make_rectangle(double lx, double ly, int nx, int ny) {
-  if (!(lx > 0 && ly > 0) || nx < 1 || ny < 1) throw std::invalid_argument("rectangle: expected sizes > 0 and nx, ny >= 1");
+  if (!(lx > 0 && ly > 0) || nx < 1 || ny < 1)
+    throw std::invalid_argument("rectangle: expected sizes > 0 and nx, ny >= 1");
   TriangleMesh m;
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) m.add_vertex({-0.5 * lx + lx * i / nx, -0.5 * ly + ly * j / ny, 0.0});
@@ -32,11 +33,11 @@ TriangleMesh make_box(double lx, double ly, double lz, bool closed) {
       for (int i = 0; i < 2; ++i) m.add_vertex({(i - 0.5) * lx, (j - 0.5) * ly, k * lz});
   const auto c = [](int i, int j, int k) { return i + 2 * j + 4 * k; };
   // Faces wound outward, flipped to inward at the end.
-  m.add_quad(c(0, 0, 0), c(0, 1, 0), c(1, 1, 0), c(1, 0, 0));  // floor, -z
-  m.add_quad(c(0, 0, 0), c(1, 0, 0), c(1, 0, 1), c(0, 0, 1));  // y = -ly/2, -y
-  m.add_quad(c(0, 1, 0), c(0, 1, 1), c(1, 1, 1), c(1, 1, 0));  // y = +ly/2, +y
-  m.add_quad(c(0, 0, 0), c(0, 0, 1), c(0, 1, 1), c(0, 1, 0));  // x = -lx/2, -x
-  m.add_quad(c(1, 0, 0), c(1, 1, 0), c(1, 1, 1), c(1, 0, 1));  // x = +lx/2, +x
+  m.add_quad(c(0, 0, 0), c(0, 1, 0), c(1, 1, 0), c(1, 0, 0));              // floor, -z
+  m.add_quad(c(0, 0, 0), c(1, 0, 0), c(1, 0, 1), c(0, 0, 1));              // y = -ly/2, -y
+  m.add_quad(c(0, 1, 0), c(0, 1, 1), c(1, 1, 1), c(1, 1, 0));              // y = +ly/2, +y
+  m.add_quad(c(0, 0, 0), c(0, 0, 1), c(0, 1, 1), c(0, 1, 0));              // x = -lx/2, -x
+  m.add_quad(c(1, 0, 0), c(1, 1, 0), c(1, 1, 1), c(1, 0, 1));              // x = +lx/2, +x
   if (closed) m.add_quad(c(0, 0, 1), c(1, 0, 1), c(1, 1, 1), c(0, 1, 1));  // lid, +z
   m.flip();
   return m;
@@ -69,7 +70,8 @@ TriangleMesh make_plate_with_round_hole(double lx, double ly, double r, int n) {
   for (int k = 0; k < n; ++k) {
     const double c = std::cos(angle[k]), s = std::sin(angle[k]);
     hole[k] = m.add_vertex({r * c, r * s, 0.0});
-    const double t = std::min(std::abs(c) > 0 ? ax / std::abs(c) : INFINITY, std::abs(s) > 0 ? ay / std::abs(s) : INFINITY);
+    const double t = std::min(std::abs(c) > 0 ? ax / std::abs(c) : INFINITY,
+                              std::abs(s) > 0 ? ay / std::abs(s) : INFINITY);
     // Snap the coordinate on the edge so the plate's outline is exact.
     Vec3 p{t * c, t * s, 0.0};
     if (std::abs(c) > 0 && ax / std::abs(c) <= t) p.x = std::copysign(ax, c);
@@ -85,8 +87,8 @@ TriangleMesh make_plate_with_round_hole(double lx, double ly, double r, int n) {
     // from hole_k triangulates it counter-clockwise (+z normal).
     std::vector<int> chain{outer[k]};
     for (int q = 0; q < 4; ++q)
-      if (corner_angle[q] > angle[k] && corner_angle[q] < angle[k + 1] &&
-          !(m.vertices[outer[k]] == corner[q]) && !(m.vertices[outer[(k + 1) % n]] == corner[q]))
+      if (corner_angle[q] > angle[k] && corner_angle[q] < angle[k + 1] && !(m.vertices[outer[k]] == corner[q]) &&
+          !(m.vertices[outer[(k + 1) % n]] == corner[q]))
         chain.push_back(m.add_vertex(corner[q]));
     chain.push_back(outer[(k + 1) % n]);
     chain.push_back(hole[(k + 1) % n]);

@@ -16,7 +16,6 @@ enum class MeshFileFormat { Csv, StlAscii, StlBinary };
 void write_mesh_csv(const std::filesystem::path& file, const TriangleMesh& mesh, const std::string& group,
                     std::int64_t first_id = 0);
 void write_mesh(const std::filesystem::path& file, const TriangleMesh& mesh, MeshFileFormat format,
-                const std::string& group,
-                std::int64_t first_id = 0);
+                const std::string& group, std::int64_t first_id = 0);
 
 }  // namespace mpdem

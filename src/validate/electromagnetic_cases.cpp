@@ -65,9 +65,7 @@ CaseResult charged_case(const CaseContext& ctx, const std::string& name, const s
   return r;
 }
 
-CaseResult electric(const CaseContext& ctx) {
-  return charged_case(ctx, "electric_field", "E only: parabola");
-}
+CaseResult electric(const CaseContext& ctx) { return charged_case(ctx, "electric_field", "E only: parabola"); }
 CaseResult magnetic(const CaseContext& ctx) {
   return charged_case(ctx, "magnetic_field", "B only: helix at constant speed");
 }
@@ -78,7 +76,9 @@ CaseResult both(const CaseContext& ctx) {
 }  // namespace
 
 std::vector<CaseSpec> electromagnetic_cases() {
-  return {{"electric_field", "Figs. 18-19", false, electric}, {"magnetic_field", "Figs. 20-21", false, magnetic}, {"electromagnetic_field", "Figs. 22-23", true, both}};
+  return {{"electric_field", "Figs. 18-19", false, electric},
+          {"magnetic_field", "Figs. 20-21", false, magnetic},
+          {"electromagnetic_field", "Figs. 22-23", true, both}};
 }
 
 }  // namespace mpdem::validate

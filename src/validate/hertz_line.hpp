@@ -10,18 +10,18 @@
 namespace mpdem::validate {
 
 struct LineSphere {
-  double x = 0.0;       // m, centre along the line (spheres sorted by x)
-  double v = 0.0;       // m/s
-  double mass = 0.0;    // kg
-  double radius = 0.0;  // m
-  double young = 0.0;   // Pa
-  double poisson = 0.0; // -
+  double x = 0.0;        // m, centre along the line (spheres sorted by x)
+  double v = 0.0;        // m/s
+  double mass = 0.0;     // kg
+  double radius = 0.0;   // m
+  double young = 0.0;    // Pa
+  double poisson = 0.0;  // -
 };
 
 struct LineWall {
-  double x = 0.0;       // m, wall surface; the first sphere lies above it (x > wall)
-  double young = 0.0;   // Pa
-  double poisson = 0.0; // -
+  double x = 0.0;        // m, wall surface; the first sphere lies above it (x > wall)
+  double young = 0.0;    // Pa
+  double poisson = 0.0;  // -
 };
 
 // E* of two bodies, (51)   [Pa]

@@ -20,7 +20,8 @@ LineSamples run_on_line(Scene& scene, const Vec3& axis, std::optional<LineWall> 
   const Particles& p0 = scene.particles;
   std::vector<std::size_t> order(p0.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return dot(p0.x[a], axis) < dot(p0.x[b], axis); });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return dot(p0.x[a], axis) < dot(p0.x[b], axis); });
 
   LineSamples s;
   std::vector<LineSphere> spheres;

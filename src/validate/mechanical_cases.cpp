@@ -22,8 +22,8 @@ const char* kLineOracle =
     "error = max over time of |v_sim - v_ref| / impact speed";
 
 // Velocity along the line of the listed spheres (by position along the line) vs time.
-void write_speed_plot(const CaseContext& ctx, const std::string& stem, const std::string& title,
-                      const LineSamples& s, const std::vector<std::size_t>& which, const std::string& axis_name) {
+void write_speed_plot(const CaseContext& ctx, const std::string& stem, const std::string& title, const LineSamples& s,
+                      const std::vector<std::size_t>& which, const std::string& axis_name) {
   PlotCsv plot(title, "time t [s]", fmt::format("velocity v_{} [m/s]", axis_name));
   for (std::size_t k : which) plot.add_series(fmt::format("particle {}", s.ids[k]), true, "Hertz reference (RK4)");
   const std::size_t stride = stride_for(s.t.size(), 600);
@@ -38,7 +38,8 @@ void write_speed_plot(const CaseContext& ctx, const std::string& stem, const std
   plot.write(ctx.output_dir / (stem + ".csv"));
 }
 
-CaseResult line_case(const CaseContext& ctx, const std::string& name, const std::string& axis_name, const Vec3& axis, bool wall) {
+CaseResult line_case(const CaseContext& ctx, const std::string& name, const std::string& axis_name, const Vec3& axis,
+                     bool wall) {
   Scene scene = load_case_scene(ctx);
   std::optional<LineWall> w;
   if (wall) {
@@ -72,9 +73,7 @@ CaseResult three_particles(const CaseContext& ctx) {
   return line_case(ctx, "three_particle_contact", "x", {1, 0, 0}, false);
 }
 
-CaseResult particle_barrier(const CaseContext& ctx) {
-  return line_case(ctx, "particle_barrier", "z", {0, 0, 1}, true);
-}
+CaseResult particle_barrier(const CaseContext& ctx) { return line_case(ctx, "particle_barrier", "z", {0, 0, 1}, true); }
 
 CaseResult adjacent_barriers(const CaseContext& ctx) {
   CaseResult r = line_case(ctx, "adjacent_barriers", "z", {0, 0, 1}, true);

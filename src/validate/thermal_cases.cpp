@@ -31,11 +31,11 @@ CaseResult thermal_contact(const CaseContext& ctx) {
   const std::int64_t id1 = p0.id[0], id2 = p0.id[1];
   const double R1 = p0.radius[0], R2 = p0.radius[1], d = norm(p0.x[0] - p0.x[1]);
   const double xc = (d * d + R1 * R1 - R2 * R2) / (2.0 * d);
-  const double A = kPi * (R1 * R1 - xc * xc);                                           // m^2, (89)
+  const double A = kPi * (R1 * R1 - xc * xc);  // m^2, (89)
   const double k1 = material_of(scene, 0).conductivity, k2 = material_of(scene, 1).conductivity;
   const double K = 2.0 * k1 * k2 / (k1 + k2);
   const double C1 = capacity(scene, 0), C2 = capacity(scene, 1);
-  const double lambda = K * A / d * (1.0 / C1 + 1.0 / C2);                              // 1/s
+  const double lambda = K * A / d * (1.0 / C1 + 1.0 / C2);  // 1/s
   const double T10 = p0.T[0], T20 = p0.T[1], Tm = (C1 * T10 + C2 * T20) / (C1 + C2);
   auto exact = [&](double T0, double t) { return Tm + (T0 - Tm) * std::exp(-lambda * t); };
 

@@ -32,8 +32,8 @@ CaseResult step_convergence(const CaseContext& ctx) {
     const auto steps = std::llround(end / dt);
     for (long long k = 0; k < steps; ++k) sim.advance(dt);
     dts.push_back(dt);
-    const ChargedState e =
-        charged_motion(x0, v0, q, m, prm.fields.electric, prm.fields.magnetic, prm.fields.gravity, sim.time());
+    const ChargedState e = charged_motion(x0, v0, q, m, prm.fields.electric, prm.fields.magnetic, prm.fields.gravity,
+                                          sim.time());
     errs.push_back(norm(sim.particles().x[0] - e.x) / r_larmor);
   }
   const double slope = log_log_slope(dts, errs);
@@ -79,7 +79,7 @@ CaseResult adaptive_step(const CaseContext& ctx) {
   const Scene base = load_case_scene(ctx);
   const double end = base.model.params.time.duration;
   const std::int64_t id = base.particles.id[0];
-  const double h0 = base.particles.x[0].z - base.particles.radius[0];             // m, drop height
+  const double h0 = base.particles.x[0].z - base.particles.radius[0];                          // m, drop height
   const double v_impact = std::sqrt(2.0 * std::abs(base.model.params.fields.gravity.z) * h0);  // m/s
 
   Track ada, ref;
@@ -123,8 +123,8 @@ CaseResult adaptive_step(const CaseContext& ctx) {
     ref_evals = sim.evaluations();
   }
   double worst_z = 0.0;
-  PlotCsv plot("adaptive_step: sphere bouncing on a floor, mpdem with adaptive steps vs a fine fixed step", "time t [s]",
-               "height z [m]");
+  PlotCsv plot("adaptive_step: sphere bouncing on a floor, mpdem with adaptive steps vs a fine fixed step",
+               "time t [s]", "height z [m]");
   plot.add_series("height z", true, fmt::format("fixed-step reference, dt = {} s", sci(dt_ref)));
   PlotCsv dt_plot("adaptive_step: accepted step size", "time t [s]", "time step dt [s]");
   dt_plot.set_log_y();
@@ -155,7 +155,8 @@ CaseResult adaptive_step(const CaseContext& ctx) {
 }  // namespace
 
 std::vector<CaseSpec> time_stepping_cases() {
-  return {{"step_convergence", "Fig. 24", true, step_convergence}, {"adaptive_step", "Figs. 25-26", true, adaptive_step}};
+  return {{"step_convergence", "Fig. 24", true, step_convergence},
+          {"adaptive_step", "Figs. 25-26", true, adaptive_step}};
 }
 
 }  // namespace mpdem::validate

@@ -18,21 +18,21 @@ struct CaseContext {
 };
 
 struct CaseResult {
-  std::string name;                  // case name = folder name
-  std::string figure;                // the thesis figure(s) it reproduces (set by the suite)
-  std::string oracle;                // what the simulation is compared with, and the error metric
-  double tolerance = 0.0;            // the metric's limit
-  double error = 0.0;                // the measured metric
-  bool pass = false;                 // error <= tolerance (and any extra condition in `oracle`)
-  std::string note;                  // extra measured numbers, for the report
-  std::vector<std::string> plots;    // CSV stems written to the output folder (one PNG each)
-  double seconds = 0.0;              // wall time of the case
+  std::string name;                // case name = folder name
+  std::string figure;              // the thesis figure(s) it reproduces (set by the suite)
+  std::string oracle;              // what the simulation is compared with, and the error metric
+  double tolerance = 0.0;          // the metric's limit
+  double error = 0.0;              // the measured metric
+  bool pass = false;               // error <= tolerance (and any extra condition in `oracle`)
+  std::string note;                // extra measured numbers, for the report
+  std::vector<std::string> plots;  // CSV stems written to the output folder (one PNG each)
+  double seconds = 0.0;            // wall time of the case
 };
 
 struct CaseSpec {
   std::string name;
-  std::string figure;                // thesis figure(s), also reported when the case stops early
-  bool quick = false;                // part of `mpdem validate --quick`
+  std::string figure;  // thesis figure(s), also reported when the case stops early
+  bool quick = false;  // part of `mpdem validate --quick`
   std::function<CaseResult(const CaseContext&)> run;
 };
 

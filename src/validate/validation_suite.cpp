@@ -104,7 +104,8 @@ void write_report(const SuiteOptions& o, const SuiteResult& r) {
 }  // namespace
 
 std::string result_table(const std::vector<CaseResult>& results) {
-  std::string t = "| case | thesis figure | oracle | tolerance | measured error | result |\n|---|---|---|---|---|---|\n";
+  std::string t =
+      "| case | thesis figure | oracle | tolerance | measured error | result |\n|---|---|---|---|---|---|\n";
   for (const CaseResult& c : results)
     t += fmt::format("| {} | {} | {} | {} | {} | {} |\n", c.name, c.figure, escape(c.oracle), number(c.tolerance),
                      number(c.error), c.pass ? "PASS" : "FAIL");

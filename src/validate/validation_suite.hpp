@@ -20,7 +20,7 @@ struct SuiteOptions {
 
 struct SuiteResult {
   std::vector<CaseResult> cases;
-  bool plots_ok = true;               // the plot script ran and every PNG exists
+  bool plots_ok = true;  // the plot script ran and every PNG exists
   bool all_pass() const;
 };
 

@@ -70,8 +70,8 @@ TEST(Cli, MissingFile) {
 }
 
 TEST(Cli, MalformedCsvRow) {
-  expect_bad_input("row", scene_text("[time]\nduration = 0.01\ndt = 1e-5\n"), "id,x,y,z,radius\n1,0,0,0.01,0.001\n2,0,zero,0,0.001\n",
-                   "p.csv:3", "'y'");
+  expect_bad_input("row", scene_text("[time]\nduration = 0.01\ndt = 1e-5\n"),
+                   "id,x,y,z,radius\n1,0,0,0.01,0.001\n2,0,zero,0,0.001\n", "p.csv:3", "'y'");
   expect_bad_input("fields", scene_text("[time]\nduration = 0.01\ndt = 1e-5\n"), "id,x,y,z,radius\n1,0,0,0.01\n",
                    "p.csv:2", "");
 }

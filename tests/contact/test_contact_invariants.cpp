@@ -48,7 +48,10 @@ Scene cluster(Integrator integ, double dt, const std::vector<int>& order, const 
   c.tangential_damping = 0.3;
   std::mt19937_64 rng(12345);
   std::uniform_real_distribution<double> U(-1.0, 1.0);
-  struct Init { double R; Vec3 x, v, w; };
+  struct Init {
+    double R;
+    Vec3 x, v, w;
+  };
   std::vector<Init> init;
   for (int k = 0; k < 18; ++k) {
     const int i = k % 3, j = (k / 3) % 3, l = k / 9;

@@ -52,10 +52,8 @@ TEST(HertzLaw, EvaluatorEqualsTheSingleLawOracle) {
     const double d_t = params.tangential_damping > 0.0
                            ? tangential_damping_coefficient(params.tangential_damping, m, tangential_stiffness(G, r, d))
                            : 0.0;
-    if (d_t > 0.0)
-      EXPECT_LT(rel(-dashpot.ft.y / c.vt.y, d_t), 1e-14);
-    else
-      EXPECT_EQ(dashpot.ft.y, 0.0);
+    if (d_t > 0.0) EXPECT_LT(rel(-dashpot.ft.y / c.vt.y, d_t), 1e-14);
+    else EXPECT_EQ(dashpot.ft.y, 0.0);
   }
 }
 
@@ -74,7 +72,7 @@ TEST(LinearLaw, TangentialSpringIsCappedAtCoulomb) {
   c.increment = {1e-6, 0.0, 0.0};
   const ContactResult stick = evaluate_contact<LinearLaw>(law, c);
   EXPECT_FALSE(stick.slipped);
-  EXPECT_DOUBLE_EQ(stick.fn, 1.0);     // k_n delta
+  EXPECT_DOUBLE_EQ(stick.fn, 1.0);      // k_n delta
   EXPECT_DOUBLE_EQ(stick.ft.x, -3e-3);  // -k_t ds
   EXPECT_DOUBLE_EQ(stick.energy, 0.5 * 1e4 * 1e-8 + 0.5 * 3e3 * 1e-12);
   c.increment = {1e-3, 0.0, 0.0};  // k_t ds = 3 N > mu_s f_n
@@ -135,8 +133,7 @@ Collision collide(bool barrier, double v, double e, double dt) {
     if (prev <= 0.0 && ov > 0.0 && start < 0.0) start = t - dt * ov / (ov - prev);
     if (prev > 0.0 && ov <= 0.0) {
       c.t_c = t - dt * (-ov) / (prev - ov) - start;
-      c.e = barrier ? p.v[0].z / v
-                    : (p.v[test::index_of(p, 2)].x - p.v[test::index_of(p, 1)].x) / v;
+      c.e = barrier ? p.v[0].z / v : (p.v[test::index_of(p, 2)].x - p.v[test::index_of(p, 1)].x) / v;
       break;
     }
     prev = ov;

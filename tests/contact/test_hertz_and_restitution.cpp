@@ -28,8 +28,7 @@ struct Pair {
   double E_star, r_star, m_star;
 };
 Pair make_pair(const Sphere& a, const Sphere& b) {
-  return {effective_modulus(a.E, a.nu, b.E, b.nu), effective_radius(a.R, b.R),
-          effective_mass(a.mass(), b.mass())};
+  return {effective_modulus(a.E, a.nu, b.E, b.nu), effective_radius(a.R, b.R), effective_mass(a.mass(), b.mass())};
 }
 Pair make_wall(const Sphere& a) { return {effective_modulus_rigid(a.E, a.nu), a.R, a.mass()}; }
 
@@ -56,8 +55,7 @@ struct CollisionResult {
   double e, max_overlap, max_force, duration;
 };
 
-CollisionResult collide(const Sphere& a, const Sphere* b, double v, double xi, bool clamp,
-                        int steps_per_contact) {
+CollisionResult collide(const Sphere& a, const Sphere* b, double v, double xi, bool clamp, int steps_per_contact) {
   const Pair p = b ? make_pair(a, *b) : make_wall(a);
   const double ma = a.mass(), mb = b ? b->mass() : 0.0;
   const double Rb = b ? b->R : 0.0;
@@ -157,10 +155,10 @@ TEST(Hertz, UndampedHeadOnCollisionMatchesClosedForms) {
     const Pair p = make_pair(kGlass, kGlass);
     const double dmax = hertz_delta_max(p, v);
     const double fmax = 4.0 / 3.0 * p.E_star * std::sqrt(p.r_star) * std::pow(dmax, 1.5);
-    EXPECT_NEAR(r.max_overlap / dmax, 1.0, 1e-3) << "v=" << v;            // 0.1 %
-    EXPECT_NEAR(r.max_force / fmax, 1.0, 1e-3) << "v=" << v;              // 0.1 %
+    EXPECT_NEAR(r.max_overlap / dmax, 1.0, 1e-3) << "v=" << v;               // 0.1 %
+    EXPECT_NEAR(r.max_force / fmax, 1.0, 1e-3) << "v=" << v;                 // 0.1 %
     EXPECT_NEAR(r.duration / hertz_duration(p, v), 1.0, 5e-3) << "v=" << v;  // 0.5 %
-    EXPECT_NEAR(r.e, 1.0, 1e-6) << "v=" << v;  // conservative law: rebound at full speed
+    EXPECT_NEAR(r.e, 1.0, 1e-6) << "v=" << v;                                // conservative law: rebound at full speed
     // Energy at the turning point is all elastic: 8/15 E* sqrt(r*) dmax^(5/2) = 1/2 m* v^2.
     EXPECT_NEAR(hertz_elastic_energy(p.E_star, p.r_star, dmax) / (0.5 * p.m_star * v * v), 1.0, 1e-12);
   }
@@ -245,7 +243,6 @@ TEST(Restitution, ThesisFormulaMissesTheRequestedRestitution) {
   EXPECT_LT(unclamped.e, e - 0.01);
   const CollisionResult clamped = collide(kGlass, &kGlass, 1.0, xi55, true, 20000);
   EXPECT_GT(std::abs(clamped.e - e), 0.01);
-  const CollisionResult calibrated =
-      collide(kGlass, &kGlass, 1.0, damping_ratio_for_restitution(e), true, 20000);
+  const CollisionResult calibrated = collide(kGlass, &kGlass, 1.0, damping_ratio_for_restitution(e), true, 20000);
   EXPECT_NEAR(calibrated.e, e, 0.002);
 }

@@ -90,8 +90,8 @@ TEST(RollingOnBarrier, RollingResistanceStoppingDistance) {
         break;
       }
     }
-    std::printf("[%s] stop at t %.6f (exp %.6f, err %.2e), distance %.6f (exp %.6f, err %.2e)\n", name(integ),
-                t_stop, t_exp, t_stop / t_exp - 1, s_stop, s_exp, s_stop / s_exp - 1);
+    std::printf("[%s] stop at t %.6f (exp %.6f, err %.2e), distance %.6f (exp %.6f, err %.2e)\n", name(integ), t_stop,
+                t_exp, t_stop / t_exp - 1, s_stop, s_exp, s_stop / s_exp - 1);
     EXPECT_NEAR(t_stop / t_exp, 1.0, 0.02);
     EXPECT_NEAR(s_stop / s_exp, 1.0, 0.02);
   }

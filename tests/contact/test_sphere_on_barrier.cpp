@@ -31,10 +31,8 @@ Impact barrier_impact(Integrator integ, double v, double e, double Eb, double st
   const double dt = 2.943275 * dmax / v / steps_per_tc;
   Scene s = base_scene(integ, dt, {});
   test::add_flat_square(s.barriers, "floor", {}, 0.1, 8, Eb, kNu);
-  if (e < 1.0)
-    s.model.params.contact.particle_barrier.restitution = e;
-  else
-    s.model.params.contact.particle_barrier.damping_ratio = 0.0;
+  if (e < 1.0) s.model.params.contact.particle_barrier.restitution = e;
+  else s.model.params.contact.particle_barrier.damping_ratio = 0.0;
   const double gap = 3.3 * v * dt;
   test::add_particle(s, 1, kR, {0.0031, -0.0042, kR + gap}, {0.0, 0.0, -v});
   Simulation sim(std::move(s), RunOptions{{}, false, false});
@@ -47,7 +45,8 @@ Impact barrier_impact(Integrator integ, double v, double e, double Eb, double st
     if (ov > 0.0) {
       r.F_max = std::max(r.F_max, norm(p.force[0]));
       r.delta_max = std::max(r.delta_max, ov);
-      r.third_law = std::max(r.third_law, norm(p.force[0] + test::group_force(sim.barriers(), "floor")) / norm(p.force[0]));
+      r.third_law = std::max(r.third_law,
+                             norm(p.force[0] + test::group_force(sim.barriers(), "floor")) / norm(p.force[0]));
     }
     if (ov_prev <= 0.0 && ov > 0.0 && t_start < 0.0) t_start = t - dt * ov / (ov - ov_prev);
     if (ov_prev > 0.0 && ov <= 0.0) {
@@ -126,8 +125,8 @@ TEST(Hole, SmallSphereFallsThroughLargeOneRestsOnRim) {
     test::add_plate_with_hole(s.barriers, "plate", 0.0, hole, kE, kNu);
     ContactLawParams& c = s.model.params.contact.particle_barrier;
     c.restitution = 0.1;
-    c.mu_static = 0.0;  // frictionless: the rest height is then unique (with friction the springs
-    c.mu_dynamic = 0.0; // keep whatever load the settling left, and the height depends on history)
+    c.mu_static = 0.0;   // frictionless: the rest height is then unique (with friction the springs
+    c.mu_dynamic = 0.0;  // keep whatever load the settling left, and the height depends on history)
     s.model.params.tolerance = ToleranceParams{};
     const double h = 0.5 * hole;
     test::add_particle(s, 1, R, {0.0, 0.0, std::sqrt(R * R - h * h) + 1e-5});
@@ -143,7 +142,8 @@ TEST(Hole, SmallSphereFallsThroughLargeOneRestsOnRim) {
     }
     const double z_exp = std::sqrt((R - delta) * (R - delta) - h * h);
     std::printf("[%s] rim: contacts %zu, floor force / weight - 1 = %.2e, |v| %.1e, z err / delta %.2e\n", name(integ),
-                sim.interactions().stats().contacts_pb, -F.z / (m * kG) - 1.0, norm(p.v[0]), (p.x[0].z - z_exp) / delta);
+                sim.interactions().stats().contacts_pb, -F.z / (m * kG) - 1.0, norm(p.v[0]),
+                (p.x[0].z - z_exp) / delta);
     EXPECT_EQ(sim.interactions().stats().contacts_pb, 4u);
     EXPECT_NEAR(-F.z / (m * kG), 1.0, 1e-6);
     EXPECT_LT(norm(p.v[0]), 1e-6);

@@ -38,10 +38,10 @@ HertzClosedForm hertz_closed_form(double m_star, double E_star, double r_star, d
 double pair_E_star() { return kE / (2.0 * (1.0 - kNu * kNu)); }
 
 struct ImpactResult {
-  double F_max = 0.0;      // N, largest |force| on sphere 1 during contact
-  double delta_max = 0.0;  // m
-  double t_c = 0.0;        // s, from the interpolated zero crossings of the overlap
-  double v1 = 0.0, v2 = 0.0;  // m/s, x-velocities after separation
+  double F_max = 0.0;           // N, largest |force| on sphere 1 during contact
+  double delta_max = 0.0;       // m
+  double t_c = 0.0;             // s, from the interpolated zero crossings of the overlap
+  double v1 = 0.0, v2 = 0.0;    // m/s, x-velocities after separation
   double momentum_error = 0.0;  // |P_end - P_0| / (m v)
 };
 
@@ -53,10 +53,8 @@ ImpactResult head_on(Integrator integ, double v, double e, double steps_per_tc, 
   const HertzClosedForm h = hertz_closed_form(0.5 * m, E_star, 0.5 * kR, v);
   const double dt = h.t_c / steps_per_tc;
   Scene s = base_scene(integ, dt, {});  // no gravity
-  if (e < 1.0)
-    s.model.params.contact.particle_particle.restitution = e;
-  else
-    s.model.params.contact.particle_particle.damping_ratio = 0.0;
+  if (e < 1.0) s.model.params.contact.particle_particle.restitution = e;
+  else s.model.params.contact.particle_particle.damping_ratio = 0.0;
   const double gap = 3.3 * v * dt;  // contact starts within a few steps
   test::add_particle(s, 1, kR, {-kR - 0.5 * gap, 0.0, 0.0}, {0.5 * v, 0.0, 0.0});
   const std::size_t second = test::add_particle(s, 2, kR, {kR + 0.5 * gap, 0.0, 0.0}, {-0.5 * v, 0.0, 0.0});
@@ -110,7 +108,8 @@ ChainResult five_chain(Integrator integ, double E, double steps_per_tc) {
   Particles& p = sim.particles();
   auto energy = [&] {
     double K = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i) K += 0.5 * p.mass[i] * norm2(p.v[i]) + 0.5 * p.inertia[i] * norm2(p.w[i]);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      K += 0.5 * p.mass[i] * norm2(p.v[i]) + 0.5 * p.inertia[i] * norm2(p.w[i]);
     return K + sim.interactions().stats().elastic_energy;
   };
   const Vec3 P0 = test::momentum(p);
@@ -149,8 +148,8 @@ TEST(HeadOnImpact, MatchesHertzClosedForms) {
       const double eF = r.F_max / h.F_max - 1.0, eD = r.delta_max / h.delta_max - 1.0, eT = r.t_c / h.t_c - 1.0;
       RecordProperty(std::string("rel_err_") + name(integ) + "_v" + std::to_string(v),
                      std::to_string(eF) + " " + std::to_string(eD) + " " + std::to_string(eT));
-      std::printf("[%s v=%g] F_max err %.2e, delta_max err %.2e, t_c err %.2e, v1 %.6f v2 %.6f\n", name(integ), v,
-                  eF, eD, eT, r.v1, r.v2);
+      std::printf("[%s v=%g] F_max err %.2e, delta_max err %.2e, t_c err %.2e, v1 %.6f v2 %.6f\n", name(integ), v, eF,
+                  eD, eT, r.v1, r.v2);
       EXPECT_LT(std::abs(eF), 0.005) << name(integ);
       EXPECT_LT(std::abs(eD), 0.005) << name(integ);
       EXPECT_LT(std::abs(eT), 0.01) << name(integ);
@@ -215,7 +214,8 @@ TEST(FiveSphereChain, ConservationAndWaveTimeScaling) {
       ly.push_back(std::log(r.travel));
     }
     const double n = static_cast<double>(lx.size());
-    const double mx = std::accumulate(lx.begin(), lx.end(), 0.0) / n, my = std::accumulate(ly.begin(), ly.end(), 0.0) / n;
+    const double mx = std::accumulate(lx.begin(), lx.end(), 0.0) / n,
+                 my = std::accumulate(ly.begin(), ly.end(), 0.0) / n;
     double sxy = 0.0, sxx = 0.0;
     for (std::size_t k = 0; k < lx.size(); ++k) {
       sxy += (lx[k] - mx) * (ly[k] - my);

@@ -80,9 +80,9 @@ TEST(Tangential, ProjectionKeepsLengthAndRemovesNormalPart) {
     Vec3 n{g(rng), g(rng), g(rng)};
     n = n / norm(n);
     const Vec3 p = project_spring(s, n);
-    EXPECT_NEAR(norm(p) / norm(s), 1.0, 1e-12);       // length kept, 1e-12 rel
-    EXPECT_NEAR(dot(p, n), 0.0, 1e-12 * norm(s));      // in the tangent plane
-    EXPECT_GT(dot(p, s), 0.0);                         // same side as before
+    EXPECT_NEAR(norm(p) / norm(s), 1.0, 1e-12);    // length kept, 1e-12 rel
+    EXPECT_NEAR(dot(p, n), 0.0, 1e-12 * norm(s));  // in the tangent plane
+    EXPECT_GT(dot(p, s), 0.0);                     // same side as before
   }
   EXPECT_EQ(norm(project_spring({0, 0, 2e-6}, {0, 0, 1})), 0.0);  // no tangential direction
   EXPECT_EQ(norm(project_spring({}, {0, 0, 1})), 0.0);

@@ -80,7 +80,7 @@ TEST(Rodrigues, RotationVectorConversion) {
 TEST(Rotation, ConstantSpinTenTurns) {
   for (Integrator integ : {Integrator::Trapezoidal, Integrator::Verlet}) {
     const Vec3 axis = Vec3{1.0, 2.0, 2.0} / 3.0;
-    const double omega = 7.0;  // rad/s
+    const double omega = 7.0;                                          // rad/s
     const double t_end = 10.0 * 2.0 * std::numbers::pi / omega + 0.3;  // 10 turns and a bit
     const int steps = 2000;
     Scene s = test::make_scene(t_end / steps, t_end);
@@ -91,7 +91,8 @@ TEST(Rotation, ConstantSpinTenTurns) {
     for (int k = 0; k < steps; ++k) sim.advance(t_end / steps);
     const double a = omega * sim.time();
     const Vec3 body{0.3, -0.5, 0.8};
-    const Vec3 expected = body * std::cos(a) + cross(axis, body) * std::sin(a) + axis * (dot(axis, body) * (1 - std::cos(a)));
+    const Vec3 expected = body * std::cos(a) + cross(axis, body) * std::sin(a) +
+                          axis * (dot(axis, body) * (1 - std::cos(a)));
     const Vec3 got = mat_apply(quat_matrix(sim.particles().q[0]), body);
     EXPECT_LT(norm(got - expected), 1e-9) << (integ == Integrator::Verlet ? "verlet" : "trapezoidal");
     EXPECT_DOUBLE_EQ(norm(sim.particles().w[0] - omega * axis), 0.0);

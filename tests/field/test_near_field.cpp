@@ -88,7 +88,8 @@ TEST(NearFieldForces, MatchesBruteForceWithCutoffAndMaterialPairs) {
       const double d = norm(dx);
       if (d >= 7e-3) continue;
       const EmpiricalLaw c = coeffs(p.material[i], p.material[j]);
-      const double fs = kc * p.charge[i] * p.charge[j] / (d * d) + c.a1 * std::pow(d, -c.b1) - c.a2 * std::pow(d, -c.b2);
+      const double fs = kc * p.charge[i] * p.charge[j] / (d * d) + c.a1 * std::pow(d, -c.b1) -
+                        c.a2 * std::pow(d, -c.b2);
       f += (fs / d) * dx;
       if (j > i) {
         ++in_range;
@@ -166,14 +167,19 @@ Oscillation oscillate(Integrator integ, int steps_per_period, double periods) {
 }  // namespace
 
 TEST(NearFieldPair, SmallOscillationFrequencyAndEnergy) {
-  struct Case { Integrator integ; int steps_per_period; const char* name; };
+  struct Case {
+    Integrator integ;
+    int steps_per_period;
+    const char* name;
+  };
   for (const Case c : {Case{Integrator::Trapezoidal, 200, "trapezoidal"}, Case{Integrator::Verlet, 600, "verlet"}}) {
     const Oscillation r = oscillate(c.integ, c.steps_per_period, 5.2);
     EXPECT_GE(r.crossings, 5) << c.name;
     EXPECT_LT(r.period_error, 0.01) << c.name;
     EXPECT_LT(r.energy_error, 1e-4) << c.name;
-    std::printf("near-field pair (%s, %d steps/period): period error %.3g, energy error %.3g of the oscillation energy\n",
-                c.name, c.steps_per_period, r.period_error, r.energy_error);
+    std::printf(
+        "near-field pair (%s, %d steps/period): period error %.3g, energy error %.3g of the oscillation energy\n",
+        c.name, c.steps_per_period, r.period_error, r.energy_error);
   }
 }
 

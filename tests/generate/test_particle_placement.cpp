@@ -103,7 +103,7 @@ TEST(Generator, MeshRegionWithCavity) {
   // A unit box with a closed cubic cavity [0.3, 0.7]^3: a non-convex region of volume 1 - 0.064.
   TempDir dir("mpdem_gen");
   TriangleMesh outer = make_box(1, 1, 1, true);
-  outer.flip();  // normals out of the solid
+  outer.flip();                                        // normals out of the solid
   TriangleMesh inner = make_box(0.4, 0.4, 0.4, true);  // normals into the cavity = out of the solid
   transform_mesh(inner, 1.0, {}, {0, 0, 0.3});
   outer.append(inner);
@@ -126,8 +126,8 @@ TEST(Generator, MeshRegionWithCavity) {
       }
   EXPECT_EQ(wrong, 0);
   // Points exactly in line with edges and vertices of the mesh (ray through shared features).
-  EXPECT_TRUE(solid.contains({0.2, 0.5, 0.5}));   // ray along +x through the cavity's faces
-  EXPECT_TRUE(solid.contains({0.2, 0.3, 0.3}));   // ray grazing the cavity's edge
+  EXPECT_TRUE(solid.contains({0.2, 0.5, 0.5}));  // ray along +x through the cavity's faces
+  EXPECT_TRUE(solid.contains({0.2, 0.3, 0.3}));  // ray grazing the cavity's edge
   EXPECT_TRUE(solid.contains({0.1, 0.5, 0.5}));
   EXPECT_FALSE(solid.contains({0.5, 0.5, 0.5}));  // in the cavity
   EXPECT_TRUE(solid.contains({0.5, 0.5, 0.15}));  // below it, on the diagonals' plane x = y
@@ -196,7 +196,8 @@ TEST(Generator, SolidFractionTargetMetWithinOnePercent) {
     GenerateSpec s = box_spec(0.04, 0, 0.001);  // ~6100 equal spheres
     s.solid_fraction = 0.3;
     const GenerateResult r = generate_particles(s);
-    std::printf("  monodisperse: solid fraction %.5f (%zu particles)\n", volume_fraction(r.particles, 0.04 * 0.04 * 0.04), r.particles.size());
+    std::printf("  monodisperse: solid fraction %.5f (%zu particles)\n",
+                volume_fraction(r.particles, 0.04 * 0.04 * 0.04), r.particles.size());
     EXPECT_NEAR(volume_fraction(r.particles, 0.04 * 0.04 * 0.04) / 0.3, 1.0, 0.01);
     EXPECT_NEAR(r.solid_fraction / 0.3, 1.0, 0.01);
   }
@@ -207,7 +208,8 @@ TEST(Generator, SolidFractionTargetMetWithinOnePercent) {
     s.radius.max = 0.0016;
     s.solid_fraction = 0.3;
     const GenerateResult r = generate_particles(s);
-    std::printf("  polydisperse: solid fraction %.5f (%zu particles)\n", volume_fraction(r.particles, 0.05 * 0.05 * 0.05), r.particles.size());
+    std::printf("  polydisperse: solid fraction %.5f (%zu particles)\n",
+                volume_fraction(r.particles, 0.05 * 0.05 * 0.05), r.particles.size());
     EXPECT_NEAR(volume_fraction(r.particles, 0.05 * 0.05 * 0.05) / 0.3, 1.0, 0.01);
     EXPECT_GE(min_surface_gap(r.particles), -1e-12);
   }
@@ -285,7 +287,8 @@ generate = { region = "cylinder", base = [1, 0, 0], axis = [0, 0, 0.1], cylinder
   // Errors name file, line and key.
   const auto error_of = [&](const std::string& gen) -> std::string {
     const fs::path p = dir.write("bad.toml", "[time]\nduration = 1.0\ndt = 1e-5\n[[material]]\nname = \"glass\"\n"
-                                             "[[particles]]\ngenerate = " + gen + "\n");
+                                             "[[particles]]\ngenerate = " +
+                                                 gen + "\n");
     try {
       load_scene(p);
     } catch (const InputError& e) {
@@ -296,14 +299,19 @@ generate = { region = "cylinder", base = [1, 0, 0], axis = [0, 0, 0.1], cylinder
   std::string e = error_of(R"({ region = "box", min = [0,0,0], max = [1,1,1], count = 5, radius = 0.1, colour = 1 })");
   EXPECT_NE(e.find("bad.toml:7: 'particles.generate.colour': unknown key"), std::string::npos) << e;
   e = error_of(R"({ region = "box", min = [0,0,0], max = [1,1,1], count = 5, solid_fraction = 0.1, radius = 0.1 })");
-  EXPECT_NE(e.find("'particles.generate.solid_fraction': give exactly one of count and solid_fraction"), std::string::npos) << e;
+  EXPECT_NE(e.find("'particles.generate.solid_fraction': give exactly one of count and solid_fraction"),
+            std::string::npos)
+      << e;
   e = error_of(R"({ region = "sphere", count = 5, radius = 0.1 })");
   EXPECT_NE(e.find("'particles.generate.region': expected \"box\", \"cylinder\" or \"mesh\""), std::string::npos) << e;
-  e = error_of(R"({ region = "box", min = [0,0,0], max = [1,1,1], count = 5, radius = { distribution = "uniform", min = 0.2, max = 0.1 } })");
+  e = error_of(
+      R"({ region = "box", min = [0,0,0], max = [1,1,1], count = 5, radius = { distribution = "uniform", min = 0.2, max = 0.1 } })");
   EXPECT_NE(e.find("'particles.generate.radius"), std::string::npos) << e;
   EXPECT_NE(e.find("expected 0 < min <= max"), std::string::npos) << e;
-  e = error_of(R"({ region = "box", min = [0,0,0], max = [1,1,1], count = 5, radius = { distribution = "uniform", value = 0.1 } })");
-  EXPECT_NE(e.find("'particles.generate.radius.value': does not apply to distribution \"uniform\""), std::string::npos) << e;
+  e = error_of(
+      R"({ region = "box", min = [0,0,0], max = [1,1,1], count = 5, radius = { distribution = "uniform", value = 0.1 } })");
+  EXPECT_NE(e.find("'particles.generate.radius.value': does not apply to distribution \"uniform\""), std::string::npos)
+      << e;
   e = error_of(R"({ region = "box", min = [0,0,0], max = [1,1,1], count = 5, radius = 0.1, material = "gold" })");
   EXPECT_NE(e.find("unknown material 'gold'"), std::string::npos) << e;
 }
@@ -323,8 +331,10 @@ TEST(Generator, CommandLine) {
   EXPECT_EQ(slurp(dir.path / "a.csv"), slurp(dir.path / "b.csv"));
   EXPECT_NE(slurp(dir.path / "a.csv").find(",glass\n"), std::string::npos);
   // An unreachable target: exit status 2 and a message saying why.
-  EXPECT_EQ(run("-o \"" + (dir.path / "c.csv").string() + "\" --min 0 0 0 --max 0.01 0.01 0.01 -r 0.001 -f 0.7 "
-                "--max-attempts 500"), 2);
+  EXPECT_EQ(run("-o \"" + (dir.path / "c.csv").string() +
+                "\" --min 0 0 0 --max 0.01 0.01 0.01 -r 0.001 -f 0.7 "
+                "--max-attempts 500"),
+            2);
   EXPECT_NE(slurp(dir.path / "err.txt").find("could not place particle"), std::string::npos);
   EXPECT_FALSE(fs::exists(dir.path / "c.csv"));
 }

@@ -72,7 +72,8 @@ TEST(Generator, RadiusMomentsMatchDistributions) {
     const double a = -1.0, b = 1.6, Z = normal_cdf(b) - normal_cdf(a);
     const double mean = 0.002 + 0.0005 * (normal_pdf(a) - normal_pdf(b)) / Z;
     const double var = 0.0005 * 0.0005 *
-                       (1 + (a * normal_pdf(a) - b * normal_pdf(b)) / Z - std::pow((normal_pdf(a) - normal_pdf(b)) / Z, 2));
+                       (1 + (a * normal_pdf(a) - b * normal_pdf(b)) / Z -
+                        std::pow((normal_pdf(a) - normal_pdf(b)) / Z, 2));
     const Moments m = moments(sample_radii(d, 0.002));
     report("truncated normal", m, mean, std::sqrt(var));
     EXPECT_NEAR(m.mean / mean, 1.0, tol);
@@ -89,7 +90,8 @@ TEST(Generator, RadiusMomentsMatchDistributions) {
     const double a = 2.0, b = 3.0, Z = normal_cdf(b) - normal_cdf(a);
     const double mean = 0.001 + 0.0002 * (normal_pdf(a) - normal_pdf(b)) / Z;
     const double var = 0.0002 * 0.0002 *
-                       (1 + (a * normal_pdf(a) - b * normal_pdf(b)) / Z - std::pow((normal_pdf(a) - normal_pdf(b)) / Z, 2));
+                       (1 + (a * normal_pdf(a) - b * normal_pdf(b)) / Z -
+                        std::pow((normal_pdf(a) - normal_pdf(b)) / Z, 2));
     const Moments m = moments(sample_radii(d, 0.0015));
     report("normal far tail", m, mean, std::sqrt(var));
     EXPECT_NEAR(m.mean / mean, 1.0, tol);
@@ -163,7 +165,8 @@ TEST(Generator, SamplerMomentsLargeSample) {
   const double a = -1.0, b = 1.6, Z = normal_cdf(b) - normal_cdf(a);
   const double mean = 0.002 + 0.0005 * (normal_pdf(a) - normal_pdf(b)) / Z;
   const double var = 0.0005 * 0.0005 *
-                     (1 + (a * normal_pdf(a) - b * normal_pdf(b)) / Z - std::pow((normal_pdf(a) - normal_pdf(b)) / Z, 2));
+                     (1 + (a * normal_pdf(a) - b * normal_pdf(b)) / Z -
+                      std::pow((normal_pdf(a) - normal_pdf(b)) / Z, 2));
   check(nt, mean, std::sqrt(var));
   RadiusDistribution un;
   un.law = RadiusLaw::Uniform;

@@ -64,10 +64,8 @@ Outcome run(double dt, bool adaptive, double tol = 1e-6) {
   Simulation sim(std::move(s), RunOptions{{}, false, false});
   const double end = sim.model().params.time.duration;
   while (sim.time() < end - 1e-15) {
-    if (adaptive)
-      sim.advance_adaptive(end - sim.time());
-    else
-      sim.advance(std::min(dt, end - sim.time()));
+    if (adaptive) sim.advance_adaptive(end - sim.time());
+    else sim.advance(std::min(dt, end - sim.time()));
   }
   return {sim.particles().x, sim.particles().v, sim.evaluations(), sim.redone_steps()};
 }

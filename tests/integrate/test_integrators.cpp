@@ -41,7 +41,7 @@ TEST(FreeFall, FirstOrderForPhiZeroAndOne) {
   for (double phi : {0.0, 1.0}) {
     const double e1 = norm(free_fall_error(Integrator::Trapezoidal, phi, 2e-3, 500));
     const double e2 = norm(free_fall_error(Integrator::Trapezoidal, phi, 1e-3, 1000));
-    EXPECT_GT(e1, 1e-4);  // a real, first-order error
+    EXPECT_GT(e1, 1e-4);                                // a real, first-order error
     EXPECT_NEAR(e1 / e2, 2.0, 0.1) << "phi = " << phi;  // halving dt halves the error (5%)
     // and the error is g t dt / 2 in size, pointing along -g (phi = 0) or +g (phi = 1)
     const Vec3 err = free_fall_error(Integrator::Trapezoidal, phi, 1e-3, 1000);

@@ -62,10 +62,8 @@ Scene granular_scene(bool adaptive) {
 
 void advance(Simulation& sim, bool adaptive, int steps) {
   for (int k = 0; k < steps; ++k) {
-    if (adaptive)
-      sim.advance_adaptive(1.0);
-    else
-      sim.advance(sim.model().params.time.dt);
+    if (adaptive) sim.advance_adaptive(1.0);
+    else sim.advance(sim.model().params.time.dt);
   }
 }
 
@@ -196,7 +194,7 @@ TEST(Checkpoint, KilledBetweenWriteAndRenameLeavesNoTruncatedFile) {
     write_file_atomically(target, [](std::ostream& os) {
       os << "<?xml version=\"1.0\"?><VTKFile";  // half a file ...
       os.flush();
-      raise(SIGKILL);                           // ... and the process dies before the rename
+      raise(SIGKILL);  // ... and the process dies before the rename
     });
     _exit(0);
   }
@@ -219,13 +217,12 @@ TEST(Checkpoint, SigtermThenResumeMatchesAnUninterruptedRun) {
   for (int k = 0; k < 4; ++k)
     for (int j = 0; j < 4; ++j)
       for (int i = 0; i < 4; ++i)
-        csv += std::to_string(id++) + "," + std::to_string(0.002 + 0.0042 * i) + "," + std::to_string(0.002 + 0.0042 * j) +
-               "," + std::to_string(0.002 + 0.0042 * k) + "," + std::to_string(0.01 * (i - j)) + "," +
-               std::to_string(0.01 * (k - i)) + ",0.0009\n";
+        csv += std::to_string(id++) + "," + std::to_string(0.002 + 0.0042 * i) + "," +
+               std::to_string(0.002 + 0.0042 * j) + "," + std::to_string(0.002 + 0.0042 * k) + "," +
+               std::to_string(0.01 * (i - j)) + "," + std::to_string(0.01 * (k - i)) + ",0.0009\n";
   test::write_text(dir / "p.csv", csv);
-  test::write_text(dir / "box.csv",
-                   "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n1,-0.01,-0.01,0,0.03,-0.01,0,0.03,0.03,0\n"
-                   "2,-0.01,-0.01,0,0.03,0.03,0,-0.01,0.03,0\n");
+  test::write_text(dir / "box.csv", "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n1,-0.01,-0.01,0,0.03,-0.01,0,0.03,0.03,0\n"
+                                    "2,-0.01,-0.01,0,0.03,0.03,0,-0.01,0.03,0\n");
   const std::string scene =
       "[time]\nduration = 0.4\ndt = 2e-5\nintegrator = \"verlet\"\n"
       "[contact.particle_particle]\nrestitution = 0.5\nmu_static = 0.5\nmu_dynamic = 0.4\n"
@@ -258,7 +255,8 @@ TEST(Checkpoint, SigtermThenResumeMatchesAnUninterruptedRun) {
   const std::string err = test::slurp(dir / "int_stderr.txt");
   EXPECT_NE(err.find("stopped by signal 15"), std::string::npos) << err;
   EXPECT_NE(err.find("--resume"), std::string::npos) << err;
-  const test::CommandResult res = test::run_mpdem("run scene.toml --quiet --threads 1 --output int --resume int/checkpoint.bin", dir);
+  const test::CommandResult res = test::run_mpdem(
+      "run scene.toml --quiet --threads 1 --output int --resume int/checkpoint.bin", dir);
   ASSERT_EQ(res.status, 0) << res.err;
   // The final snapshots (t = 0.4 s, 17 significant digits) are identical.
   const std::string a = test::slurp(dir / "ref" / "particles_csv" / "particles_000004.csv");

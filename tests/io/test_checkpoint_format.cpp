@@ -22,7 +22,10 @@ TEST(Crc32, StandardCheckValueAndContinuation) {
 
 std::vector<char> sample() {
   CheckpointWriter w;
-  w.section("run", [](BinaryWriter& b) { b.value(1.5); b.value<std::uint64_t>(7); });
+  w.section("run", [](BinaryWriter& b) {
+    b.value(1.5);
+    b.value<std::uint64_t>(7);
+  });
   w.section("particles/x", [](BinaryWriter& b) { b.vector(std::vector<double>{1.0, 2.0, 3.0}); });
   return w.bytes();
 }

@@ -12,18 +12,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kHead =
-    "[time]\nduration = 1.0\ndt = 1e-5\n"                                     // 1-3
-    "[[material]]\nname = \"glass\"\n[[material]]\nname = \"steel\"\n";       // 4-7
+const std::string kHead = "[time]\nduration = 1.0\ndt = 1e-5\n"                                // 1-3
+                          "[[material]]\nname = \"glass\"\n[[material]]\nname = \"steel\"\n";  // 4-7
 
 TEST(ContactReader, LawsAndPairEntries) {
   TempDir d("mpdem_contact");
-  const fs::path scene = d.write("scene.toml", kHead +
-      "[contact.particle_particle]\nrestitution = 0.7\n"
-      "[contact.particle_barrier]\nlaw = \"linear\"\nstiffness_normal = 1e4\n"
-      "[[contact.pair]]\nmaterials = [\"glass\", \"steel\"]\nmu_static = 0.3\nmu_dynamic = 0.2\n"
-      "[[contact.pair]]\nmaterials = [\"steel\", \"steel\"]\nkind = \"particle_particle\"\nlaw = \"linear\"\n"
-      "stiffness_normal = 2e4\nstiffness_tangential = 5e3\nrestitution = 0.5\n");
+  const fs::path scene = d.write(
+      "scene.toml",
+      kHead + "[contact.particle_particle]\nrestitution = 0.7\n"
+              "[contact.particle_barrier]\nlaw = \"linear\"\nstiffness_normal = 1e4\n"
+              "[[contact.pair]]\nmaterials = [\"glass\", \"steel\"]\nmu_static = 0.3\nmu_dynamic = 0.2\n"
+              "[[contact.pair]]\nmaterials = [\"steel\", \"steel\"]\nkind = \"particle_particle\"\nlaw = \"linear\"\n"
+              "stiffness_normal = 2e4\nstiffness_tangential = 5e3\nrestitution = 0.5\n");
   const Scene s = parse_scene_file(scene);
   const ContactParams& c = s.model.params.contact;
   EXPECT_EQ(c.particle_particle.law, ContactLawKind::Hertz);
@@ -48,7 +48,8 @@ TEST(ContactReader, BadValuesNameFileLineAndKey) {
     std::string key, expect;
   };
   const std::vector<Case> cases = {
-      {"[contact.particle_particle]\nlaw = \"hooke\"\n", 9, "contact.particle_particle.law", "expected \"hertz\" or \"linear\""},
+      {"[contact.particle_particle]\nlaw = \"hooke\"\n", 9, "contact.particle_particle.law",
+       "expected \"hertz\" or \"linear\""},
       {"[contact.particle_particle]\nlaw = \"linear\"\n", 9, "contact.particle_particle.law", "needs stiffness_normal"},
       {"[[contact.pair]]\nmaterials = [\"glass\", \"wood\"]\n", 9, "contact.pair.materials", "unknown material 'wood'"},
       {"[[contact.pair]]\nmaterials = [\"glass\"]\n", 9, "contact.pair.materials", "expected an array of 2 strings"},

@@ -20,10 +20,9 @@ using mpdem::test::make_particles;
 
 TEST_F(OutputTest, CsvLogHeaderAndRowsRoundTrip) {
   const fs::path file = dir / "log.csv";
-  const std::vector<std::vector<double>> rows = {
-      {0.1, 3.0, 1.0 / 3.0},
-      {1e-300, 9007199254740991.0, 9007199254740992.0},  // 2^53 - 1 and 2^53
-      {-2.5, 1e20, -0.0}};
+  const std::vector<std::vector<double>> rows = {{0.1, 3.0, 1.0 / 3.0},
+                                                 {1e-300, 9007199254740991.0, 9007199254740992.0},  // 2^53 - 1 and 2^53
+                                                 {-2.5, 1e20, -0.0}};
   {
     CsvLog log(file, {"time", "step", "energy"});
     EXPECT_EQ(slurp(file), "time,step,energy\n");  // header at once
@@ -79,10 +78,9 @@ TEST_F(OutputTest, ParticleCsvSnapshotRoundTrips) {
   for (std::size_t i = 0; i < p.size(); ++i) {
     const auto f = split(lines[i + 1], ',');
     ASSERT_EQ(f.size(), 18u) << lines[i + 1];
-    const double expected[18] = {time,         0.0,          p.x[i].x,   p.x[i].y,     p.x[i].z,
-                                 p.v[i].x,     p.v[i].y,     p.v[i].z,   p.w[i].x,     p.w[i].y,
-                                 p.w[i].z,     p.radius[i],  0.0,        p.T[i],       p.charge[i],
-                                 p.force[i].x, p.force[i].y, p.force[i].z};
+    const double expected[18] = {time,     0.0,      p.x[i].x,    p.x[i].y,     p.x[i].z,     p.v[i].x,
+                                 p.v[i].y, p.v[i].z, p.w[i].x,    p.w[i].y,     p.w[i].z,     p.radius[i],
+                                 0.0,      p.T[i],   p.charge[i], p.force[i].x, p.force[i].y, p.force[i].z};
     for (std::size_t c = 0; c < 18; ++c) {
       if (c == 1) EXPECT_EQ(std::stoll(f[c]), p.id[i]);
       else if (c == 12) EXPECT_EQ(std::stoll(f[c]), p.material[i]);

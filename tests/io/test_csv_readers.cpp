@@ -26,8 +26,6 @@ using mpdem::test::expect_contains;
 namespace {
 
 
-
-
 // The material of particle i (the constants are looked up through it).
 const Material& material_of(const Model& model, const Particles& p, std::size_t i) {
   return model.materials[static_cast<std::size_t>(p.material[i])];
@@ -170,8 +168,8 @@ TEST(ParticleCsv, MassInertiaAndClearedState) {
   const double r[2] = {0.0035, 2.5}, rho[2] = {1234.5, 3000.0};
   for (std::size_t i = 0; i < 2; ++i) {
     const double m = 4.0 / 3.0 * std::numbers::pi * r[i] * r[i] * r[i] * rho[i];
-    EXPECT_DOUBLE_EQ(p.mass[i], m);                        // to 4 ulp
-    EXPECT_DOUBLE_EQ(p.inertia[i], 0.4 * m * r[i] * r[i]); // (32), to 4 ulp
+    EXPECT_DOUBLE_EQ(p.mass[i], m);                         // to 4 ulp
+    EXPECT_DOUBLE_EQ(p.inertia[i], 0.4 * m * r[i] * r[i]);  // (32), to 4 ulp
     EXPECT_EQ(p.q[i].w, 1.0);
     EXPECT_EQ(p.q[i].x, 0.0);
     EXPECT_EQ(p.q[i].y, 0.0);
@@ -189,7 +187,8 @@ TEST(ParticleCsv, IdsContinueAfterTheLargestSeen) {
   read_particle_csv(d.write("a.csv", "x,y,z,radius\n0,0,0,1\n0,0,0,1\n"), model, 0, p);  // 0, 1
   read_particle_csv(d.write("b.csv", "id,x,y,z,radius\n,0,0,0,1\n10,0,0,0,1\n,0,0,0,1\n"), model, 0, p);
   EXPECT_EQ(p.id, (std::vector<std::int64_t>{0, 1, 2, 10, 11}));
-  const std::string msg = error_of([&] { read_particle_csv(d.write("c.csv", "id,x,y,z,radius\n10,0,0,0,1\n"), model, 0, p); });
+  const std::string msg = error_of(
+      [&] { read_particle_csv(d.write("c.csv", "id,x,y,z,radius\n10,0,0,0,1\n"), model, 0, p); });
   expect_contains(msg, {"c.csv:2: 'id': duplicate particle id 10", "earlier particle file"});
 }
 
@@ -197,7 +196,7 @@ TEST(ParticleCsv, ErrorsNameFileLineAndColumn) {
   struct Case {
     const char* what;
     std::string csv;
-    std::string where;            // "file:line: 'column': " or "file:line: "
+    std::string where;  // "file:line: 'column': " or "file:line: "
     std::vector<std::string> expect;
   };
   const std::vector<Case> cases = {
@@ -205,7 +204,9 @@ TEST(ParticleCsv, ErrorsNameFileLineAndColumn) {
       {"unknown column, suggestion", "x,y,z,radius,densty\n", ":1: 'densty': ", {"did you mean 'density'"}},
       {"duplicate column", "x,y,z,radius,x\n", ":1: 'x': ", {"duplicate column"}},
       {"missing column", "# particles\nx,y,radius\n", ":2: 'z': ", {"missing required column"}},
-      {"duplicate id", "id,x,y,z,radius\n1,0,0,0,1\n# c\n1,0,0,0,1\n", ":4: 'id': ",
+      {"duplicate id",
+       "id,x,y,z,radius\n1,0,0,0,1\n# c\n1,0,0,0,1\n",
+       ":4: 'id': ",
        {"duplicate particle id 1", "first on line 2"}},
       {"field count", "x,y,z,radius\n0,0,0,1\n0,0,0\n", ":3: ", {"expected 4 fields", "got 3"}},
       {"non-numeric", "x,y,z,radius\n0,abc,0,1\n", ":2: 'y': ", {"expected a number, got 'abc'"}},
@@ -213,13 +214,20 @@ TEST(ParticleCsv, ErrorsNameFileLineAndColumn) {
       {"zero radius", "x,y,z,radius\n0,0,0,0\n", ":2: 'radius': ", {"expected a radius > 0, got 0"}},
       {"negative radius", "x,y,z,radius\n\n0,0,0,-1e-3\n", ":3: 'radius': ", {"expected a radius > 0, got -1e-3"}},
       {"zero density", "x,y,z,radius,density\n0,0,0,1,0\n", ":2: 'density': ", {"expected a density > 0, got 0"}},
-      {"poisson 0.5", "x,y,z,radius,poisson\n0,0,0,1,0.5\n", ":2: 'poisson': ",
+      {"poisson 0.5",
+       "x,y,z,radius,poisson\n0,0,0,1,0.5\n",
+       ":2: 'poisson': ",
        {"expected a Poisson ratio in [0, 0.5), got 0.5"}},
       {"negative poisson", "x,y,z,radius,poisson\n0,0,0,1,-0.1\n", ":2: 'poisson': ", {"in [0, 0.5), got -0.1"}},
       {"emissivity", "x,y,z,radius,emissivity\n0,0,0,1,1.5\n", ":2: 'emissivity': ", {"in [0, 1], got 1.5"}},
-      {"unknown material", "x,y,z,radius,material\n0,0,0,1,wood\n", ":2: 'material': ",
+      {"unknown material",
+       "x,y,z,radius,material\n0,0,0,1,wood\n",
+       ":2: 'material': ",
        {"unknown material 'wood'", "glass, steel"}},
-      {"material index out of range", "x,y,z,radius,material\n0,0,0,1,2\n", ":2: 'material': ", {"unknown material '2'"}},
+      {"material index out of range",
+       "x,y,z,radius,material\n0,0,0,1,2\n",
+       ":2: 'material': ",
+       {"unknown material '2'"}},
       {"non-integer id", "id,x,y,z,radius\n1.5,0,0,0,1\n", ":2: 'id': ", {"expected an integer, got '1.5'"}},
       {"empty file", "# nothing\n\n", ": ", {"empty file: expected a header row"}},
   };
@@ -253,10 +261,9 @@ TEST(BarrierCsv, GeometryDefaultsAndMotionOverrides) {
   src.thickness = 0.004;
   src.motion.a = {1.0, 2.0, 3.0};
   src.motion.w1 = 5.0;
-  const fs::path f = d.write("ramp.csv",
-                             "x1,y1,z1,x2,y2,z2,x3,y3,z3,ay,w1,Bz,group,young\n"
-                             "0,0,0,2,0,0,0,3,0,,,,,\n"
-                             "0,0,1,0,1,1,1,0,1,-7,9,0.5,lid,1e8\n");
+  const fs::path f = d.write("ramp.csv", "x1,y1,z1,x2,y2,z2,x3,y3,z3,ay,w1,Bz,group,young\n"
+                                         "0,0,0,2,0,0,0,3,0,,,,,\n"
+                                         "0,0,1,0,1,1,1,0,1,-7,9,0.5,lid,1e8\n");
   Barriers b;
   read_barrier_csv(f, src, model, b);
   ASSERT_EQ(b.size(), 2u);
@@ -268,11 +275,11 @@ TEST(BarrierCsv, GeometryDefaultsAndMotionOverrides) {
   EXPECT_EQ(b.normal[1], (Vec3{0.0, 0.0, -1.0}));
   EXPECT_EQ(b.group_names[b.group[0]], "ramp");  // no group anywhere: the file stem
   EXPECT_EQ(b.group_names[b.group[1]], "lid");
-  EXPECT_EQ(b.young[0], 2e11);                   // source material steel
+  EXPECT_EQ(b.young[0], 2e11);  // source material steel
   EXPECT_EQ(b.young[1], 1e8);
   EXPECT_EQ(b.poisson[1], 0.29);
   EXPECT_EQ(b.thickness[1], 0.004);
-  EXPECT_TRUE(std::isnan(b.temperature[0]));     // insulated
+  EXPECT_TRUE(std::isnan(b.temperature[0]));  // insulated
   EXPECT_EQ(b.motion[0].a, (Vec3{1.0, 2.0, 3.0}));
   EXPECT_EQ(b.motion[0].w1, 5.0);
   EXPECT_EQ(b.motion[1].a, (Vec3{1.0, -7.0, 3.0}));  // only ay overridden
@@ -288,13 +295,14 @@ TEST(BarrierCsv, SourceGroupTemperatureAndFirstMaterial) {
   BarrierSource src;
   src.group = "walls";
   src.temperature = 400.0;
-  const fs::path f = d.write("w.csv", "z3,y3,x3,z2,y2,x2,z1,y1,x1,id,temperature\n0,1,0,0,0,1,0,0,0,5,\n0,1,0,0,0,1,0,0,0,,250\n");
+  const fs::path f = d.write(
+      "w.csv", "z3,y3,x3,z2,y2,x2,z1,y1,x1,id,temperature\n0,1,0,0,0,1,0,0,0,5,\n0,1,0,0,0,1,0,0,0,,250\n");
   Barriers b;
   read_barrier_csv(f, src, model, b);
   ASSERT_EQ(b.size(), 2u);
   EXPECT_EQ(b.id, (std::vector<std::int64_t>{5, 6}));
   EXPECT_EQ(b.group_names, (std::vector<std::string>{"walls"}));
-  EXPECT_EQ(b.young[0], 6e10);   // no source material: the first material (glass)
+  EXPECT_EQ(b.young[0], 6e10);  // no source material: the first material (glass)
   EXPECT_EQ(b.poisson[0], 0.22);
   EXPECT_EQ(b.temperature[0], 400.0);
   EXPECT_EQ(b.temperature[1], 250.0);
@@ -320,7 +328,10 @@ TEST(BarrierCsv, ErrorsNameFileLineAndColumn) {
       {"field count", head + "\n0,0,0,1,0,0,0,1,0,7\n", ":2: ", {"expected 9 fields", "got 10"}},
       {"poisson", head + ",poisson\n0,0,0,1,0,0,0,1,0,0.7\n", ":2: 'poisson': ", {"in [0, 0.5), got 0.7"}},
       {"young", head + ",young\n0,0,0,1,0,0,0,1,0,-5\n", ":2: 'young': ", {"expected a Young's modulus > 0, got -5"}},
-      {"duplicate id", head + ",id\n0,0,0,1,0,0,0,1,0,4\n0,0,0,1,0,0,0,1,0,4\n", ":3: 'id': ", {"duplicate barrier id 4"}},
+      {"duplicate id",
+       head + ",id\n0,0,0,1,0,0,0,1,0,4\n0,0,0,1,0,0,0,1,0,4\n",
+       ":3: 'id': ",
+       {"duplicate barrier id 4"}},
   };
   const Model model = two_materials();
   for (const Case& c : cases) {

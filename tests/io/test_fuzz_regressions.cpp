@@ -137,8 +137,8 @@ TEST(FuzzRegressions, BarrierIdAtInt64MaxIsRejected) {
   const fs::path f = d.write("b.csv", "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n9223372036854775807,0,0,0,1,0,0,0,1,0\n");
   Barriers out;
   expect_input_error([&] { read_barrier_csv(f, src, model, out); }, f, "barrier id INT64_MAX");
-  const fs::path g = d.write("b2.csv",
-                             "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n9223372036854775806,0,0,0,1,0,0,0,1,0\n,0,0,0,1,0,0,0,1,0\n");
+  const fs::path g = d.write(
+      "b2.csv", "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n9223372036854775806,0,0,0,1,0,0,0,1,0\n,0,0,0,1,0,0,0,1,0\n");
   Barriers out2;
   expect_input_error([&] { read_barrier_csv(g, src, model, out2); }, g, "implicit barrier id INT64_MAX");
 }

@@ -20,10 +20,9 @@ const std::string kHeader =
 
 TEST(LammpsData, ReadsHeaderAndAtomsInFileOrder) {
   TempDir dir("lammps");
-  const auto file = dir.write("bed.data", kHeader +
-                                              "7 1 0.002 2500 0.001 0.002 0.003\n"
-                                              "3 1 0.004 2600 1e-3 2e-3 3e-3 0 0 1\n"  // image flags ignored
-                                              "5 1 0.002 2500 -0.1 0.02 0.01\n");
+  const auto file = dir.write("bed.data", kHeader + "7 1 0.002 2500 0.001 0.002 0.003\n"
+                                                    "3 1 0.004 2600 1e-3 2e-3 3e-3 0 0 1\n"  // image flags ignored
+                                                    "5 1 0.002 2500 -0.1 0.02 0.01\n");
   const LammpsData d = read_lammps_data(file);
   EXPECT_EQ(d.atom_types, 1u);
   EXPECT_EQ(d.lo.x, -0.5);

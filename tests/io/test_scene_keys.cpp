@@ -304,7 +304,8 @@ TEST(SceneReader, DtBoundsDefaultAroundAGivenDt) {
 
 TEST(SceneReader, DomainTableMeansBounded) {
   TempDir d("mpdem_scene");
-  const Scene s = parse_scene_file(d.write("scene.toml", std::string(kTime) + "[domain]\nmin = [0,0,0]\nmax = [1,1,1]\n"));
+  const Scene s = parse_scene_file(
+      d.write("scene.toml", std::string(kTime) + "[domain]\nmin = [0,0,0]\nmax = [1,1,1]\n"));
   EXPECT_TRUE(s.model.params.domain.bounded);
   EXPECT_EQ(s.model.params.domain.on_exit, ExitPolicy::Stop);
 }

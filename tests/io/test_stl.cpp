@@ -125,7 +125,9 @@ TEST(Stl, MalformedFilesNameFileAndProblem) {
   const fs::path trunc = dir.write("trunc.stl", bin.substr(0, bin.size() - 10));
   InputError e = stl_error(trunc);
   expect_contains(e.what(), trunc.string());
-  expect_contains(e.what(), "truncated or malformed binary STL: the header announces 12 triangles (684 bytes) but the file has 674 bytes");
+  expect_contains(
+      e.what(),
+      "truncated or malformed binary STL: the header announces 12 triangles (684 bytes) but the file has 674 bytes");
   e = stl_error(dir.write("short.stl", bin.substr(0, 50)));
   expect_contains(e.what(), "less than the 84-byte header");
 
@@ -231,7 +233,9 @@ TEST(Stl, MeshCommandWritesCsvAndStl) {
   };
   const std::string out = dir.path.string();
   ASSERT_EQ(run("cylinder --radius 0.05 --height 0.1 --segments 12 --closed -o \"" + out + "/c.stl\""), 0);
-  ASSERT_EQ(run("cylinder --radius 0.05 --height 0.1 --segments 12 --closed --format stl-ascii -o \"" + out + "/c_ascii.stl\""), 0);
+  ASSERT_EQ(run("cylinder --radius 0.05 --height 0.1 --segments 12 --closed --format stl-ascii -o \"" + out +
+                "/c_ascii.stl\""),
+            0);
   ASSERT_EQ(run("cylinder --radius 0.05 --height 0.1 --segments 12 --closed --group drum -o \"" + out + "/c.csv\""), 0);
   const StlMesh b = read_stl(dir.path / "c.stl"), a = read_stl(dir.path / "c_ascii.stl");
   EXPECT_TRUE(b.binary);
@@ -248,7 +252,9 @@ TEST(Stl, MeshCommandWritesCsvAndStl) {
       EXPECT_EQ(v, a.triangles[t][k]);  // CSV and ASCII STL both keep doubles exactly
     }
   ASSERT_EQ(run("chute --length 1 --angle 30 --transition-radius 0.2 --runout 0.5 --width 0.1 --wall-height 0.05 "
-                "--rotate-deg 0 0 0 -o \"" + out + "/chute.csv\""), 0);
+                "--rotate-deg 0 0 0 -o \"" +
+                out + "/chute.csv\""),
+            0);
   ASSERT_EQ(run("plate --size 0.2 0.2 --hole-radius 0.03 -o \"" + out + "/plate.stl\""), 0);
   ASSERT_EQ(run("funnel --top-radius 0.1 --outlet-radius 0.02 --height 0.1 -o \"" + out + "/f.stl\""), 0);
   // Bad input: exit status 2.

@@ -31,8 +31,8 @@ namespace {
 
 // Runs the independent reader; fails the test if it exits non-zero.
 std::string run_reader(const fs::path& file, const std::string& option = "") {
-  const std::string cmd = std::string("/usr/bin/python3 '") + MPDEM_SOURCE_DIR + "/tests/read_vtu.py' " +
-                          option + " '" + file.string() + "' 2>&1";
+  const std::string cmd = std::string("/usr/bin/python3 '") + MPDEM_SOURCE_DIR + "/tests/read_vtu.py' " + option +
+                          " '" + file.string() + "' 2>&1";
   FILE* pipe = ::popen(cmd.c_str(), "r");
   if (!pipe) throw std::runtime_error("popen failed");
   std::string out;
@@ -106,9 +106,9 @@ TEST_F(OutputTest, ParticleVtuRoundTripsThroughMeshio) {
   std::vector<std::string> keys;
   for (const auto& [k, a] : r) keys.push_back(k);
   const std::vector<std::string> expected_keys = {
-      "cells/vertex", "field_data/TimeValue", "point_data/angular_velocity", "point_data/charge",
-      "point_data/force", "point_data/id", "point_data/material", "point_data/orientation",
-      "point_data/radius", "point_data/temperature", "point_data/velocity", "points/Points"};
+      "cells/vertex",      "field_data/TimeValue",   "point_data/angular_velocity", "point_data/charge",
+      "point_data/force",  "point_data/id",          "point_data/material",         "point_data/orientation",
+      "point_data/radius", "point_data/temperature", "point_data/velocity",         "points/Points"};
   ASSERT_EQ(keys, expected_keys);  // std::map keeps them sorted
 
   ASSERT_EQ(r.at("field_data/TimeValue").tokens.size(), 1u);
@@ -185,9 +185,8 @@ TEST_F(OutputTest, BarrierVtuHasMovedTrianglesAndLoads) {
   std::vector<std::string> keys;
   for (const auto& [k, a] : r) keys.push_back(k);
   const std::vector<std::string> expected_keys = {
-      "cell_data/force",    "cell_data/group",  "cell_data/id",       "cell_data/moment",
-      "cell_data/normal",   "cell_data/pressure", "cell_data/velocity", "cells/triangle",
-      "field_data/TimeValue", "points/Points"};
+      "cell_data/force",    "cell_data/group",    "cell_data/id",   "cell_data/moment",     "cell_data/normal",
+      "cell_data/pressure", "cell_data/velocity", "cells/triangle", "field_data/TimeValue", "points/Points"};
   ASSERT_EQ(keys, expected_keys);
   EXPECT_EQ(r.at("field_data/TimeValue").d(0, 0), time);
 

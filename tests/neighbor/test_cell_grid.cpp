@@ -65,8 +65,7 @@ TEST(SpatialOrder, IsAPermutationAndPreservesThePairSet) {
   before.build(p.x, p.radius, skin);
   std::set<std::pair<std::int64_t, std::int64_t>> ids_before, ids_after;
   for (std::uint32_t i = 0; i < p.size(); ++i)
-    for (std::uint32_t j : before.neighbors(i))
-      ids_before.insert(std::minmax(p.id[i], p.id[j]));
+    for (std::uint32_t j : before.neighbors(i)) ids_before.insert(std::minmax(p.id[i], p.id[j]));
 
   const std::vector<std::uint32_t> order = spatial_order(p.x, 2 * 5 * kR0 + skin);
   ASSERT_EQ(order.size(), p.size());
@@ -89,8 +88,7 @@ TEST(SpatialOrder, IsAPermutationAndPreservesThePairSet) {
   VerletList after;
   after.build(p.x, p.radius, skin);
   for (std::uint32_t i = 0; i < p.size(); ++i)
-    for (std::uint32_t j : after.neighbors(i))
-      ids_after.insert(std::minmax(p.id[i], p.id[j]));
+    for (std::uint32_t j : after.neighbors(i)) ids_after.insert(std::minmax(p.id[i], p.id[j]));
   EXPECT_GT(ids_before.size(), 100u);
   EXPECT_EQ(ids_after, ids_before);
 }

@@ -79,7 +79,8 @@ Scene random_cloud(std::size_t n, double r0, double L, unsigned seed) {
   set_contact_law(s, 0.5);
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, L), ur(r0, 5.0 * r0);
-  for (std::size_t i = 0; i < n; ++i) add_particle(s, static_cast<std::int64_t>(7 * i + 1), ur(rng), {u(rng), u(rng), u(rng)});
+  for (std::size_t i = 0; i < n; ++i)
+    add_particle(s, static_cast<std::int64_t>(7 * i + 1), ur(rng), {u(rng), u(rng), u(rng)});
   std::int64_t next = 1;
   add_rect(s, next, {-L, -L, 0.1 * L}, {2 * L, -L, 0.1 * L}, {2 * L, 2 * L, 0.1 * L}, {-L, 2 * L, 0.1 * L});
   add_rect(s, next, {0.5 * L, -L, -L}, {0.5 * L, 2 * L, -L}, {0.5 * L, 2 * L, 2 * L}, {0.5 * L, -L, 2 * L});

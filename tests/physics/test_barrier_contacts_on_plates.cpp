@@ -28,18 +28,18 @@ TEST(BarrierContacts, PlateCount) {
 
 TEST(BarrierContacts, SphereOverVertexEdgeAndFaceOfPlate) {
   Plate p;
-  const double R = 0.05, z = 0.043;  // analytic overlap R - z
+  const double R = 0.05, z = 0.043;   // analytic overlap R - z
   const Vec3 v = gv(p.o, p.h, 3, 4);  // interior vertex, 6 triangles
   const Vec3 w = gv(p.o, p.h, 4, 4), u = gv(p.o, p.h, 4, 5);
   const Vec3 spots[] = {
-      v,                                             // vertex
-      (v + w) * 0.5,                                 // horizontal edge
-      (v + u) * 0.5,                                 // diagonal edge
-      (w + u) * 0.5,                                 // vertical edge
-      v + Vec3{0.03, 0.01, 0},                       // face interior
-      v + Vec3{1e-9, 2e-9, 0},                       // face, next to a vertex
-      (v + w) * 0.5 + Vec3{0, 1e-10, 0},             // face, next to an edge
-      (v + u) * 0.5 + Vec3{1e-13, -1e-13, 0},        // a rounding-level distance from an edge
+      v,                                       // vertex
+      (v + w) * 0.5,                           // horizontal edge
+      (v + u) * 0.5,                           // diagonal edge
+      (w + u) * 0.5,                           // vertical edge
+      v + Vec3{0.03, 0.01, 0},                 // face interior
+      v + Vec3{1e-9, 2e-9, 0},                 // face, next to a vertex
+      (v + w) * 0.5 + Vec3{0, 1e-10, 0},       // face, next to an edge
+      (v + u) * 0.5 + Vec3{1e-13, -1e-13, 0},  // a rounding-level distance from an edge
   };
   for (const Vec3& s : spots) {
     const Vec3 x{s.x, s.y, z};
@@ -93,11 +93,11 @@ TEST(BarrierContacts, SweepsAcrossPlateFeelOneContact) {
   Plate p;
   const double R = 0.05, z = 0.041;
   const Vec3 v11 = gv(p.o, p.h, 1, 1), v77 = gv(p.o, p.h, 7, 7), v17 = gv(p.o, p.h, 1, 7), v71 = gv(p.o, p.h, 7, 1);
-  sweep(p, v11, v77, z, R);                                   // along diagonal edges through vertices
-  sweep(p, v17, v71, z, R);                                   // across diagonals, through vertices
-  sweep(p, gv(p.o, p.h, 0, 3), gv(p.o, p.h, 8, 3), z, R);     // along a row of horizontal edges
-  sweep(p, {-0.37, -0.31, 0}, {0.33, 0.29, 0}, z, R);         // generic
-  sweep(p, {-0.3, -0.35, 0}, {-0.3, 0.35, 0}, -z, R);         // along vertical edges, from below
+  sweep(p, v11, v77, z, R);                                // along diagonal edges through vertices
+  sweep(p, v17, v71, z, R);                                // across diagonals, through vertices
+  sweep(p, gv(p.o, p.h, 0, 3), gv(p.o, p.h, 8, 3), z, R);  // along a row of horizontal edges
+  sweep(p, {-0.37, -0.31, 0}, {0.33, 0.29, 0}, z, R);      // generic
+  sweep(p, {-0.3, -0.35, 0}, {-0.3, 0.35, 0}, -z, R);      // along vertical edges, from below
   Plate thick(0.01);
   sweep(thick, v11, v77, z, R);
 }
@@ -148,7 +148,8 @@ TEST(BarrierContacts, TiltedPlateFeelsOneContact) {
   const Vec3 o{-0.4, -0.4, 0};
   for (int i = 0; i < 8; ++i)
     for (int j = 0; j < 8; ++j)
-      m.quad(rot(gv(o, 0.1, i, j)), rot(gv(o, 0.1, i + 1, j)), rot(gv(o, 0.1, i + 1, j + 1)), rot(gv(o, 0.1, i, j + 1)));
+      m.quad(rot(gv(o, 0.1, i, j)), rot(gv(o, 0.1, i + 1, j)), rot(gv(o, 0.1, i + 1, j + 1)),
+             rot(gv(o, 0.1, i, j + 1)));
   const BarrierTopology t = BarrierTopology::build(m.b);
   ASSERT_EQ(t.num_vertices(), 81u);
   const Vec3 nrm = rot({0, 0, 1});
@@ -169,7 +170,7 @@ TEST(BarrierContacts, TiltedPlateFeelsOneContact) {
   for (int i = 1; i < 8; ++i)
     for (int j = 1; j < 8; ++j)
       for (int rep = 0; rep < 30; ++rep) {
-        const Vec3 base = rep % 3 == 0 ? gv(o, 0.1, i, j)
+        const Vec3 base = rep % 3 == 0   ? gv(o, 0.1, i, j)
                           : rep % 3 == 1 ? (gv(o, 0.1, i, j) + gv(o, 0.1, i + 1, j + 1)) * 0.5
                                          : (gv(o, 0.1, i, j) + gv(o, 0.1, i, j + 1)) * 0.5;
         const double r = std::pow(10.0, E(rng));

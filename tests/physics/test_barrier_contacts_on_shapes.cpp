@@ -90,9 +90,9 @@ TEST(BarrierContacts, ConvexEdgeAndCornerOfBox) {
     ASSERT_EQ(out.size(), 1u) << s;
     double dist;
     Vec3 n;
-    if (th < 0) dist = rho * std::cos(th), n = {0, 0, 1};                 // over the top face
-    else if (th > M_PI / 2) dist = rho * std::sin(th), n = {1, 0, 0};     // beside the side face
-    else dist = rho, n = {std::sin(th), 0, std::cos(th)};                 // the edge
+    if (th < 0) dist = rho * std::cos(th), n = {0, 0, 1};              // over the top face
+    else if (th > M_PI / 2) dist = rho * std::sin(th), n = {1, 0, 0};  // beside the side face
+    else dist = rho, n = {std::sin(th), 0, std::cos(th)};              // the edge
     ASSERT_NEAR(out[0].overlap, R - dist, kTol) << s;
     ASSERT_NEAR(norm(out[0].normal - n), 0.0, kTol) << s;
   }
@@ -166,8 +166,8 @@ TEST(BarrierContacts, LargeSphereRestsOnHoleRim) {
 // exactly one contact, whose overlap is R minus the distance to the nearest triangle (brute force).
 Mesh geodesic_sphere() {
   const double g = (1 + std::sqrt(5.0)) / 2;
-  std::vector<Vec3> v = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                         {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<Vec3> v = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                         {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
   std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                                        {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
                                        {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
@@ -214,10 +214,10 @@ TEST(BarrierContacts, OutsideConvexPolyhedronOneContact) {
     Vec3 dir;
     const int k = s % 4;
     const std::size_t e = static_cast<std::size_t>(s / 4) % m.b.size();
-    if (k == 0) dir = m.b.p0[e];                                   // over a vertex
-    else if (k == 1) dir = (m.b.p0[e] + m.b.p1[e]) * 0.5;          // over an edge midpoint
-    else if (k == 2) dir = m.b.centre(e);                          // over a face centre
-    else dir = {U(rng), U(rng), U(rng)};                           // anywhere
+    if (k == 0) dir = m.b.p0[e];                           // over a vertex
+    else if (k == 1) dir = (m.b.p0[e] + m.b.p1[e]) * 0.5;  // over an edge midpoint
+    else if (k == 2) dir = m.b.centre(e);                  // over a face centre
+    else dir = {U(rng), U(rng), U(rng)};                   // anywhere
     const Vec3 x = dir * (Rad(rng) / norm(dir));
     double dmin = std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < m.b.size(); ++j)
@@ -289,7 +289,7 @@ TEST(BarrierContacts, InsideBoxTouchesAllSixFaces) {
   Vec3 sum{};
   for (const auto& k : c) {
     EXPECT_EQ(k.kind, Feature::Face);
-    sum += k.normal * (0.6 - k.overlap);   // normal * distance = x - p
+    sum += k.normal * (0.6 - k.overlap);  // normal * distance = x - p
   }
   // Sum of (x - p) over opposite face pairs: (x - 0) + (x - 1) per axis.
   expect_vec_near(sum, {2 * 0.45 - 1, 2 * 0.47 - 1, 2 * 0.52 - 1}, kTol);
@@ -318,8 +318,8 @@ TEST(BarrierContacts, PrecomputedTrianglesGiveIdenticalContacts) {
     for (int s = 0; s < 5000; ++s) {
       const std::size_t e = static_cast<std::size_t>(s) % m->b.size();
       // Over a vertex, an edge midpoint, a face centre of the moved mesh, or anywhere.
-      const Vec3 at[4] = {m->b.vertex(e, 0), (m->b.vertex(e, 0) + m->b.vertex(e, 1)) * 0.5, m->b.centre(e),
-                          {U(rng), U(rng), U(rng)}};
+      const Vec3 at[4] = {
+          m->b.vertex(e, 0), (m->b.vertex(e, 0) + m->b.vertex(e, 1)) * 0.5, m->b.centre(e), {U(rng), U(rng), U(rng)}};
       const Vec3 x = at[s % 4] + Vec3{U(rng), U(rng), U(rng)} * 0.1;
       const double R = Rad(rng);
       detect_barrier_contacts(m->b, t, x, R, cand, ref);

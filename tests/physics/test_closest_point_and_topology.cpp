@@ -27,10 +27,10 @@ TEST(TriangleClosestPoint, RegionsOfRightTriangle) {
     int index;
   };
   const Case cases[] = {
-      {{0.2, 0.2, 0.5}, {0.2, 0.2, 0}, Feature::Face, 0},    {{0.5, -1, 0.3}, {0.5, 0, 0}, Feature::Edge, 0},
-      {{1, 1, 0.2}, {0.5, 0.5, 0}, Feature::Edge, 1},        {{-1, 0.5, -2}, {0, 0.5, 0}, Feature::Edge, 2},
-      {{-1, -1, 2}, {0, 0, 0}, Feature::Vertex, 0},          {{2, -0.5, 0}, {1, 0, 0}, Feature::Vertex, 1},
-      {{-0.1, 2, 0.1}, {0, 1, 0}, Feature::Vertex, 2},       {{0.5, 0, 1}, {0.5, 0, 0}, Feature::Edge, 0},
+      {{0.2, 0.2, 0.5}, {0.2, 0.2, 0}, Feature::Face, 0}, {{0.5, -1, 0.3}, {0.5, 0, 0}, Feature::Edge, 0},
+      {{1, 1, 0.2}, {0.5, 0.5, 0}, Feature::Edge, 1},     {{-1, 0.5, -2}, {0, 0.5, 0}, Feature::Edge, 2},
+      {{-1, -1, 2}, {0, 0, 0}, Feature::Vertex, 0},       {{2, -0.5, 0}, {1, 0, 0}, Feature::Vertex, 1},
+      {{-0.1, 2, 0.1}, {0, 1, 0}, Feature::Vertex, 2},    {{0.5, 0, 1}, {0.5, 0, 0}, Feature::Edge, 0},
   };
   for (const Case& k : cases) {
     const TriangleClosestPoint r = closest_point_on_triangle(k.x, a, b, c);
@@ -98,7 +98,8 @@ TEST(BarrierTopology, GridCountsAndAdjacency) {
     EXPECT_TRUE(std::is_sorted(el.begin(), el.end()));
     for (const auto e : el) {  // the edge's ends are vertices of each adjacent element
       const auto* ev = &t.elem_vertex[3 * static_cast<std::size_t>(e)];
-      EXPECT_TRUE(std::count(ev, ev + 3, t.edge_vertex[2 * g]) == 1 && std::count(ev, ev + 3, t.edge_vertex[2 * g + 1]) == 1);
+      EXPECT_TRUE(std::count(ev, ev + 3, t.edge_vertex[2 * g]) == 1 &&
+                  std::count(ev, ev + 3, t.edge_vertex[2 * g + 1]) == 1);
     }
   }
   EXPECT_EQ(boundary_edges, static_cast<std::size_t>(4 * n));

@@ -41,7 +41,7 @@ TEST(Instability, EnergyJumpFromATooLargeStep) {
     // Two spheres colliding head-on with a step of about half the Hertz contact time (1.8e-4 s).
     Scene s = test::make_scene(1e-4, 1.0);
     s.model.params.time.integrator = integ;
-    s.model.params.time.phi = 0.0;  // explicit: no convergence failure to hide the blow-up
+    s.model.params.time.phi = 0.0;            // explicit: no convergence failure to hide the blow-up
     s.model.params.checks.max_overlap = 0.0;  // this test is about the energy check alone
     s.model.params.fields.gravity = {};
     test::add_particle(s, 5, 0.001, {0, 0, 0}, {1.0, 0, 0});

@@ -1,6 +1,7 @@
 #pragma once
-// Common setup of the contact mechanics tests (particle-particle and particle-barrier): the particles' material and size, gravity, the
-// sphere mass and E* against a barrier, and a base scene (integrator, time step, gravity, tolerances).
+// Common setup of the contact mechanics tests (particle-particle and particle-barrier): the particles' material and
+// size, gravity, the sphere mass and E* against a barrier, and a base scene (integrator, time step, gravity,
+// tolerances).
 #include <cmath>
 
 #include "contact_scenes.hpp"

@@ -28,12 +28,10 @@ inline void set_material(Scene& s, double density, double young, double poisson)
 // neighbouring cells share bit-identical coordinates (a conforming mesh). Normals point along
 // u x v. `skip(i, j)` leaves cell (i, j) out (a hole). Returns the number of triangles added.
 inline int add_grid(Barriers& b, const std::string& group, const Vec3& origin, const Vec3& u, const Vec3& v, int nu,
-                    int nv, double young, double poisson,
-                    const std::function<bool(int, int)>& skip = nullptr, double thickness = 0.0) {
+                    int nv, double young, double poisson, const std::function<bool(int, int)>& skip = nullptr,
+                    double thickness = 0.0) {
   const int g = b.group_index(group);
-  auto P = [&](int i, int j) {
-    return origin + u * (static_cast<double>(i) / nu) + v * (static_cast<double>(j) / nv);
-  };
+  auto P = [&](int i, int j) { return origin + u * (static_cast<double>(i) / nu) + v * (static_cast<double>(j) / nv); };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   int added = 0;
   for (int j = 0; j < nv; ++j)
@@ -66,8 +64,8 @@ inline int add_incline(Barriers& b, const std::string& group, double angle, doub
 // grid of cells of side `hole` without the centre cell (16 triangles).
 inline int add_plate_with_hole(Barriers& b, const std::string& group, double z0, double hole, double young,
                                double poisson) {
-  return add_grid(b, group, Vec3{-1.5 * hole, -1.5 * hole, z0}, {3.0 * hole, 0.0, 0.0}, {0.0, 3.0 * hole, 0.0}, 3,
-                  3, young, poisson, [](int i, int j) { return i == 1 && j == 1; });
+  return add_grid(b, group, Vec3{-1.5 * hole, -1.5 * hole, z0}, {3.0 * hole, 0.0, 0.0}, {0.0, 3.0 * hole, 0.0}, 3, 3,
+                  young, poisson, [](int i, int j) { return i == 1 && j == 1; });
 }
 
 // Open box [0, W] x [0, W] x [0, H]: a floor in group `bottom` (n x n cells, normal +z) and four

@@ -30,8 +30,7 @@ inline double hertz_elastic_energy(double E_star, double r_star, double overlap)
 // Normal damping coefficient d* = 2 xi_n sqrt(2 m* E* sqrt(r* |delta|)) = 2 xi_n sqrt(m* k_n)  (50)
 // [N s/m]. xi_n: the damping ratio, either given by the user or from
 // damping_ratio_for_restitution(e) (physics/restitution.hpp, the Departure of section 5).
-inline double normal_damping_coefficient(double xi_n, double m_star, double E_star, double r_star,
-                                         double overlap) {
+inline double normal_damping_coefficient(double xi_n, double m_star, double E_star, double r_star, double overlap) {
   return 2.0 * xi_n * std::sqrt(m_star * hertz_stiffness(E_star, r_star, overlap));
 }
 
@@ -46,10 +45,10 @@ inline double tangential_damping_coefficient(double xi_t, double m_star, double 
 }
 
 struct NormalForce {
-  double magnitude = 0.0;          // N, f_n >= 0; force on i = magnitude * n_ij, on j the opposite
-  double elastic = 0.0;            // N, Hertz part 4/3 E* sqrt(r*) |delta|^(3/2)
-  double dissipated_power = 0.0;   // W, rate of mechanical energy removed (>= 0)
-  bool clamped = false;            // true when the damped force would have been attractive
+  double magnitude = 0.0;         // N, f_n >= 0; force on i = magnitude * n_ij, on j the opposite
+  double elastic = 0.0;           // N, Hertz part 4/3 E* sqrt(r*) |delta|^(3/2)
+  double dissipated_power = 0.0;  // W, rate of mechanical energy removed (>= 0)
+  bool clamped = false;           // true when the damped force would have been attractive
 };
 
 // Net normal force (49) with the damping (50), clamped at zero so it is never attractive.
@@ -69,8 +68,8 @@ inline NormalForce damped_normal_force(double f_el, double d_star, double normal
   return out;
 }
 
-inline NormalForce normal_contact_force(double E_star, double r_star, double m_star, double xi_n,
-                                        double overlap, double normal_rate) {
+inline NormalForce normal_contact_force(double E_star, double r_star, double m_star, double xi_n, double overlap,
+                                        double normal_rate) {
   if (overlap <= 0.0) return NormalForce{};
   return damped_normal_force(hertz_elastic_force(E_star, r_star, overlap),
                              normal_damping_coefficient(xi_n, m_star, E_star, r_star, overlap), normal_rate);

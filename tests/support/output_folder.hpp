@@ -17,8 +17,7 @@ class OutputTest : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir = std::filesystem::temp_directory_path() /
-          ("mpdem_output_" + std::to_string(::getpid()) + "_" + info->name());
+    dir = std::filesystem::temp_directory_path() / ("mpdem_output_" + std::to_string(::getpid()) + "_" + info->name());
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
   }

@@ -13,9 +13,9 @@
 namespace mpdem::test {
 
 struct CommandResult {
-  int status = -1;       // exit status
-  std::string out;       // stdout
-  std::string err;       // stderr
+  int status = -1;  // exit status
+  std::string out;  // stdout
+  std::string err;  // stderr
 };
 
 inline std::string slurp(const std::filesystem::path& f) {
@@ -45,8 +45,6 @@ inline std::filesystem::path fresh_dir(const std::string& name) {
   return d;
 }
 
-inline void write_text(const std::filesystem::path& f, const std::string& text) {
-  std::ofstream(f) << text;
-}
+inline void write_text(const std::filesystem::path& f, const std::string& text) { std::ofstream(f) << text; }
 
 }  // namespace mpdem::test

@@ -116,7 +116,9 @@ void two_particle_relaxation(Integrator integ, double lambda_dt, double lambda_t
     sim.advance(dt);
     const double exact = 100.0 * std::exp(-lambda * sim.time());
     worst = std::max(worst, std::abs((p.T[i1] - p.T[i2]) / exact - 1.0));
-    const auto c = [&](std::size_t i) { return sim.model().materials[static_cast<std::size_t>(p.material[i])].heat_capacity; };
+    const auto c = [&](std::size_t i) {
+      return sim.model().materials[static_cast<std::size_t>(p.material[i])].heat_capacity;
+    };
     const double E = p.mass[i1] * c(i1) * p.T[i1] + p.mass[i2] * c(i2) * p.T[i2];
     worst_energy = std::max(worst_energy, std::abs(E / E0 - 1.0));
     ASSERT_GT(p.T[i1], Tmean);  // monotone approach from above ...
@@ -183,8 +185,8 @@ TEST(Convection, LumpedExponentialAtSeveralAirSpeeds) {
     const CoolingResult r = convective_cooling(move_air ? 0.0 : v, move_air ? -v : 0.0, h_fit(v));
     EXPECT_LT(r.worst, 1e-3) << "v = " << v;
     EXPECT_LT(r.balance, 1e-12) << "v = " << v;  // heat_convected balances the stored energy
-    std::printf("convection v = %4.1f m/s: h = %.6g W/m2K, max rel. error %.3g, balance %.3g\n", v, h_fit(v),
-                r.worst, r.balance);
+    std::printf("convection v = %4.1f m/s: h = %.6g W/m2K, max rel. error %.3g, balance %.3g\n", v, h_fit(v), r.worst,
+                r.balance);
   }
 }
 
@@ -241,7 +243,9 @@ TEST(Radiation, ClosedFormCooling) {
     const double exact = 0.5 * (lo + hi);
     worst = std::max(worst, std::abs((T - Te) / (exact - Te) - 1.0));  // relative to the excess over Te
     worst_t = std::max(worst_t, std::abs(radiation_time(T, T0, Te, scale) / sim.time() - 1.0));
-    balance = std::max(balance, std::abs((thermal_energy(sim.model(), sim.particles()) + sim.interactions().stats().heat_radiated) / E0 - 1.0));
+    balance = std::max(
+        balance,
+        std::abs((thermal_energy(sim.model(), sim.particles()) + sim.interactions().stats().heat_radiated) / E0 - 1.0));
   }
   EXPECT_LT(worst, 1e-3);
   EXPECT_LT(worst_t, 1e-3);
@@ -286,8 +290,10 @@ TEST(Conduction, ParticleOnFixedTemperatureBarrier) {
     sim.advance(dt);
     const double exact = (T0 - Tb) * std::exp(-lambda * sim.time());
     worst = std::max(worst, std::abs((sim.particles().T[0] - Tb) / exact - 1.0));
-    balance = std::max(balance,
-                       std::abs((thermal_energy(sim.model(), sim.particles()) + sim.interactions().stats().heat_to_barriers) / E0 - 1.0));
+    balance = std::max(
+        balance,
+        std::abs((thermal_energy(sim.model(), sim.particles()) + sim.interactions().stats().heat_to_barriers) / E0 -
+                 1.0));
   }
   EXPECT_EQ(sim.interactions().stats().contacts_pb, 1u);
   EXPECT_LT(worst, 1e-3);
@@ -343,7 +349,8 @@ TEST(NoHeatFromNothing, UniformTemperatureStaysUniformAndMechanicsUnchanged) {
     for (int k = 0; k < 1200; ++k) {
       const StepReport ra = a.advance(5e-6), rb = b.advance(5e-6);
       ASSERT_EQ(ra.iterations, rb.iterations) << "step " << k;
-      max_contacts = std::max(max_contacts, a.interactions().stats().contacts_pp + a.interactions().stats().contacts_pb);
+      max_contacts = std::max(max_contacts,
+                              a.interactions().stats().contacts_pp + a.interactions().stats().contacts_pb);
     }
     EXPECT_GT(max_contacts, 9u);  // the scene really has contacts that conduct
     std::printf("uniform temperature (%s): up to %zu contacts, mechanics bitwise equal, T exactly uniform\n",

@@ -22,7 +22,8 @@ Vec3 centroid(const TriangleMesh& m, std::size_t t) { return (m.corner(t, 0) + m
 
 // Every normal points towards `inside` (convex shapes: the normal side holds their interior).
 void expect_normals_towards(const TriangleMesh& m, const Vec3& inside) {
-  for (std::size_t t = 0; t < m.size(); ++t) EXPECT_GT(dot(m.normal(t), inside - centroid(m, t)), 0.0) << "triangle " << t;
+  for (std::size_t t = 0; t < m.size(); ++t)
+    EXPECT_GT(dot(m.normal(t), inside - centroid(m, t)), 0.0) << "triangle " << t;
 }
 
 void expect_watertight(const TriangleMesh& m) {
@@ -41,7 +42,8 @@ std::vector<std::pair<int, int>> boundary_edges(const TriangleMesh& m) {
   std::vector<std::pair<int, int>> out;
   for (const auto& t : m.triangles)
     for (int k = 0; k < 3; ++k)
-      if (uses[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}] == 1) out.push_back({t[k], t[(k + 1) % 3]});
+      if (uses[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}] == 1)
+        out.push_back({t[k], t[(k + 1) % 3]});
   return out;
 }
 

@@ -53,7 +53,8 @@ TEST(Validate, QuickSetPassesWithReportAndPlots) {
   for (const validate::CaseSpec& c : quick)
     EXPECT_NE(report.find("![" + c.name), std::string::npos) << c.name << " has no plot in the report";
   EXPECT_GE(images, quick.size());
-  EXPECT_NE(r.out.find("validation: " + std::to_string(quick.size()) + " passed, 0 failed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("validation: " + std::to_string(quick.size()) + " passed, 0 failed"), std::string::npos)
+      << r.out;
   fs::remove_all(dir);
 }
 

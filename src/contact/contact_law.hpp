@@ -90,32 +90,64 @@ struct ContactResult {
   double friction = 0.0;  // W, dissipated by sliding
 };
 
+// The normal half of a contact: what the tangential half and the sums need of it.
+struct NormalContact {
+  double fn = 0.0;        // N, net normal force (ContactResult::fn)
+  double fn_limit = 0.0;  // N, max(fn, 0)
+  double k_t = 0.0;       // N/m, tangential stiffness
+  double d_t = 0.0;       // N s/m, tangential damping
+  double energy = 0.0;    // J, elastic energy of the normal spring
+  double damping = 0.0;   // W, dissipated by the normal dashpot
+};
+
 // Damping d_n = 2 xi_n sqrt(m* k_n) (50) and d_t = 2 xi_t sqrt(m* k_t) (67), which shares the
 // root: sqrt(m* k_t) = sqrt(m* k_n) sqrt(k_t / k_n), and k_t / k_n is constant for both laws
 // (c.shear_root). The net normal force f = f_el - d_n rate (49); the power removed
 // (f_el - f_n) rate (tests/support/hertz_oracle.hpp's damped_normal_force explains the clamped case).
 template <class Law>
-inline ContactResult evaluate_contact(const PairLaw& c, const ContactState& s) {
-  ContactResult out;
-  const Stiffness k = Law::stiffness(c, s.r_star, s.overlap);
-  const double mass_root = std::sqrt(s.m_star * k.k_n);  // sqrt(kg N/m)
+inline NormalContact normal_contact(const PairLaw& c, double r_star, double m_star, double overlap,
+                                    double normal_rate) {
+  NormalContact out;
+  const Stiffness k = Law::stiffness(c, r_star, overlap);
+  const double mass_root = std::sqrt(m_star * k.k_n);  // sqrt(kg N/m)
   const double d_n = 2.0 * c.xi_n * mass_root;
-  const double d_t = 2.0 * c.xi_t * mass_root * c.shear_root;
-  const double f = k.f_el - d_n * s.normal_rate;
+  out.d_t = 2.0 * c.xi_t * mass_root * c.shear_root;
+  const double f = k.f_el - d_n * normal_rate;
   out.fn = (k.clamp & (f < 0.0)) ? 0.0 : f;
-  const double normal_power = (k.f_el - out.fn) * s.normal_rate;
+  out.damping = (k.f_el - out.fn) * normal_rate;
   out.fn_limit = out.fn > 0.0 ? out.fn : 0.0;
-  const TangentialResult t = tangential_force(project_spring(s.spring, s.normal), s.increment, s.vt, k.k_t, d_t, c.mu_s,
-                                              c.mu_d, out.fn_limit, s.decide);
+  out.k_t = k.k_t;
+  out.energy = k.energy;
+  return out;
+}
+
+// The tangential half (57)-(70): the stored spring projected onto the tangent plane (59), plus
+// the increment, Coulomb stick or slip against mu_s, mu_d and the normal force.
+inline ContactResult tangential_contact(double mu_s, double mu_d, const NormalContact& n, const Vec3& spring,
+                                        const Vec3& normal, const Vec3& increment, const Vec3& vt,
+                                        SlipDecision decide) {
+  ContactResult out;
+  out.fn = n.fn;
+  out.fn_limit = n.fn_limit;
+  const TangentialResult t = tangential_force(project_spring(spring, normal), increment, vt, n.k_t, n.d_t, mu_s, mu_d,
+                                              n.fn_limit, decide);
   // Component by component: a whole-Vec3 copy between the two result records keeps GCC from
   // splitting them into scalars, and the kernels' loops would not vectorise.
   out.ft.x = t.force.x, out.ft.y = t.force.y, out.ft.z = t.force.z;
   out.spring.x = t.spring.x, out.spring.y = t.spring.y, out.spring.z = t.spring.z;
   out.slipped = t.slipped;
-  out.energy = k.energy + 0.5 * k.k_t * norm2(t.spring);
-  out.damping = normal_power + (t.slipped ? 0.0 : t.dissipated_power);
+  out.energy = n.energy + 0.5 * n.k_t * norm2(t.spring);
+  out.damping = n.damping + (t.slipped ? 0.0 : t.dissipated_power);
   out.friction = t.slipped ? t.dissipated_power : 0.0;
   return out;
+}
+
+// One contact: the normal half, then the tangential half. The pair kernel runs the halves in two
+// loops over a batch (fewer live values per loop); everything else calls this.
+template <class Law>
+inline ContactResult evaluate_contact(const PairLaw& c, const ContactState& s) {
+  return tangential_contact(c.mu_s, c.mu_d, normal_contact<Law>(c, s.r_star, s.m_star, s.overlap, s.normal_rate),
+                            s.spring, s.normal, s.increment, s.vt, s.decide);
 }
 
 }  // namespace mpdem

@@ -70,52 +70,64 @@ MPDEM_SCALAR_LOOPS void gather_history(const PairPass& q, Batch& b) {
   }
 }
 
-// Stages 1 and 2: geometry and kinematics (60)-(62), the spring increment (64) (Verlet: phi = 1)
-// and the contact law (evaluate_contact, contact_law.hpp), over contiguous arrays (vectorised;
-// an apart candidate, overlap 0, gets finite values that apply() skips). One loop: the
-// intermediate values stay in registers.
-template <bool kUniform, class Law, bool kStepStart>
-void contact_stage(const PairPass& q, Batch& b) {
+// Stage 1: geometry and kinematics (60)-(62) and the normal half of the law (normal_contact,
+// contact_law.hpp), over contiguous arrays (vectorised; an apart candidate, overlap 0, gets finite
+// values that apply() skips). One loop: the intermediate values stay in registers.
+template <bool kUniform, class Law>
+void geometry_normal(const PairPass& q, Batch& b) {
   gather_members<kUniform>(q, b);
-  gather_history<kStepStart>(q, b);
-  const double dt = q.dt, phi = q.phi, dt_phi = q.dt * q.phi;
   const PairLaw u = q.uniform_law;
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const Vec3 d{b.dx[t], b.dy[t], b.dz[t]};
     const double dist = std::sqrt(norm2(d));
     const double ov = b.reach[t] - dist;
-    ContactState c;
-    c.overlap = ov > 0.0 ? ov : 0.0;
+    const double overlap = ov > 0.0 ? ov : 0.0;
     // Coincident centres get +z, so nothing becomes NaN.
     const double inv = 1.0 / (dist > 0.0 ? dist : 1.0);
     const Vec3 nrm = dist > 0.0 ? d * inv : Vec3{0.0, 0.0, 1.0};
-    c.normal = nrm;
     // r* = R_i R_j / (R_i + R_j) (52) and m* = 1 / sm (53) from one division.
     const double inv_rm = 1.0 / (b.reach[t] * b.sm[t]);
-    c.r_star = b.rr[t] * b.sm[t] * inv_rm;
-    c.m_star = b.reach[t] * inv_rm;
+    const double r = b.rr[t] * b.sm[t] * inv_rm, m = b.reach[t] * inv_rm;
     // (60) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
     const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
-    c.normal_rate = dot(vrel, nrm);
-    c.vt = vrel - c.normal_rate * nrm;  // (61)
-    c.spring = {b.s0x[t], b.s0y[t], b.s0z[t]};
-    if constexpr (kStepStart) {
-      c.increment = dt * ((1.0 - phi) * Vec3{b.v0x[t], b.v0y[t], b.v0z[t]} + phi * c.vt);
-      c.decide = b.decide[t];
-    } else {
-      c.increment = dt_phi * c.vt;
-    }
+    const double vn = dot(vrel, nrm);
+    const Vec3 vt = vrel - vn * nrm;  // (61)
     const PairLaw law = kUniform ? u : PairLaw{b.law[t], b.cn[t],  b.ct[t],  b.sr[t], b.xin[t],
                                                b.xit[t], b.mus[t], b.mud[t], b.mur[t]};
-    const ContactResult r = evaluate_contact<Law>(law, c);
-    b.overlap[t] = c.overlap;
+    const NormalContact n = normal_contact<Law>(law, r, m, overlap, vn);
+    b.overlap[t] = overlap;
     b.nx[t] = nrm.x, b.ny[t] = nrm.y, b.nz[t] = nrm.z;
-    b.vtx[t] = c.vt.x, b.vty[t] = c.vt.y, b.vtz[t] = c.vt.z;
-    b.r[t] = c.r_star;
-    b.fn[t] = r.fn_limit;
+    b.vtx[t] = vt.x, b.vty[t] = vt.y, b.vtz[t] = vt.z;
+    b.r[t] = r;
+    b.fnet[t] = n.fn, b.fn[t] = n.fn_limit, b.kt[t] = n.k_t, b.dtc[t] = n.d_t, b.en[t] = n.energy;
+    b.pn[t] = n.damping;
+  }
+}
+
+// Stage 2: the tangential half of the law (tangential_contact) with the spring increment (64)
+// (Verlet: phi = 1), and the contact's force, torque arm and energy terms (vectorised).
+template <bool kUniform, bool kStepStart>
+void tangential_stage(const PairPass& q, Batch& b) {
+  gather_history<kStepStart>(q, b);
+  const double dt = q.dt, phi = q.phi, dt_phi = q.dt * q.phi;
+  const double mu_s_u = q.uniform_law.mu_s, mu_d_u = q.uniform_law.mu_d;
+  for (std::size_t t = 0; t < b.lanes(); ++t) {
+    const Vec3 nrm = b.normal(t), vt = b.vt(t);
+    Vec3 increment;
+    SlipDecision decide = SlipDecision::Free;
+    if constexpr (kStepStart) {
+      increment = dt * ((1.0 - phi) * Vec3{b.v0x[t], b.v0y[t], b.v0z[t]} + phi * vt);
+      decide = b.decide[t];
+    } else {
+      increment = dt_phi * vt;
+    }
+    NormalContact n;
+    n.fn = b.fnet[t], n.fn_limit = b.fn[t], n.k_t = b.kt[t], n.d_t = b.dtc[t], n.energy = b.en[t];
+    n.damping = b.pn[t];
+    const ContactResult r = tangential_contact(kUniform ? mu_s_u : b.mus[t], kUniform ? mu_d_u : b.mud[t], n,
+                                               {b.s0x[t], b.s0y[t], b.s0z[t]}, nrm, increment, vt, decide);
     b.sx[t] = r.spring.x, b.sy[t] = r.spring.y, b.sz[t] = r.spring.z;
     b.slip[t] = r.slipped ? 1 : 0;
-    // The contact's force, torque arm and energy terms.
     const Vec3 f = r.fn * nrm + r.ft;
     const Vec3 arm = cross(nrm, r.ft);  // torque r_P x f_t = -R n x f_t on both members (62)
     b.fx[t] = f.x, b.fy[t] = f.y, b.fz[t] = f.z;
@@ -188,7 +200,8 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
 
 template <bool kUniform, class Law, bool kStepStart>
 void run(const PairPass& q, Batch& b, PairBlockSums& out) {
-  contact_stage<kUniform, Law, kStepStart>(q, b);
+  geometry_normal<kUniform, Law>(q, b);
+  tangential_stage<kUniform, kStepStart>(q, b);
   apply<kUniform>(q, b, out);
   b.count = 0;
 }

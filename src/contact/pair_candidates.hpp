@@ -48,12 +48,16 @@ struct Batch {
   double nx[kBatch], ny[kBatch], nz[kBatch];     // -, n_ij, from j to i
   double vtx[kBatch], vty[kBatch], vtz[kBatch];  // m/s, tangential relative velocity (61)
   double r[kBatch];                              // m, r* (52)
+  // Stage 1: the normal half of the law.
+  double fn[kBatch];               // N, positive part of the net normal force (rolling resistance)
+  double fnet[kBatch];             // N, net normal force
+  double kt[kBatch], dtc[kBatch];  // N/m, N s/m: tangential stiffness and damping
+  double en[kBatch], pn[kBatch];   // J, W: normal spring energy, normal damping power
   // Stage 2a: history.
   double s0x[kBatch], s0y[kBatch], s0z[kBatch];  // m, stored spring
   double v0x[kBatch], v0y[kBatch], v0z[kBatch];  // m/s, step-start tangential velocity (kStepStart)
   SlipDecision decide[kBatch];
-  // Stage 2: the law.
-  double fn[kBatch];                          // N, positive part of the net normal force (rolling resistance)
+  // Stage 2: the tangential half.
   double sx[kBatch], sy[kBatch], sz[kBatch];  // m, spring for the next step
   std::int64_t slip[kBatch];                  // 1 when sliding (8 bytes, like SlipDecision)
   // Stage 4a: results.

@@ -88,7 +88,9 @@ for bed in "${BEDS[@]}"; do
       echo "  liggghts np=$th run $r: ${secs} s timed, contacts/particle ${CONT[liggghts,$th]}"
 
       for integ in verlet trapezoidal; do
-        for which in new old; do
+        # Alternate which binary runs first after LIGGGHTS (whose MPI job may still be winding down).
+        order="new old"; [ $((r % 2)) -eq 0 ] && order="old new"
+        for which in $order; do
           exe=$MPDEM; code=$integ
           if [ "$which" = old ]; then [ -n "${MPDEM_OLD:-}" ] || continue; exe=$MPDEM_OLD; code=old_$integ; fi
           log="$WORK/mpdem_${bed}_${code}_t${th}_r$r"

@@ -73,7 +73,7 @@ struct ContactState {
   double m_star = 0.0;       // kg, (53) (barrier: m)
   Vec3 normal;               // -, unit, towards the body the force acts on
   double normal_rate = 0.0;  // m/s, v_rel . n (negative approaching)
-  Vec3 vt;                   // m/s, tangential relative velocity (61)
+  Vec3 vt;                   // m/s, tangential relative velocity (60)
   Vec3 spring;               // m, stored spring (any plane; projected here (59))
   Vec3 increment;            // m, spring increment of the step (64)
   SlipDecision decide = SlipDecision::Free;

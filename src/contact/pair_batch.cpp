@@ -88,10 +88,10 @@ void geometry_normal(const PairPass& q, Batch& b) {
     // r* = R_i R_j / (R_i + R_j) (52) and m* = 1 / sm (53) from one division.
     const double inv_rm = 1.0 / (b.reach[t] * b.sm[t]);
     const double r = b.rr[t] * b.sm[t] * inv_rm, m = b.reach[t] * inv_rm;
-    // (60) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
+    // (61) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
     const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
     const double vn = dot(vrel, nrm);
-    const Vec3 vt = vrel - vn * nrm;  // (61)
+    const Vec3 vt = vrel - vn * nrm;  // (60)
     const PairLaw law = kUniform ? u : PairLaw{b.law[t], b.cn[t],  b.ct[t],  b.sr[t], b.xin[t],
                                                b.xit[t], b.mus[t], b.mud[t], b.mur[t]};
     const NormalContact n = normal_contact<Law>(law, r, m, overlap, vn);

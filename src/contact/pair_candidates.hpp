@@ -46,7 +46,7 @@ struct Batch {
   // Stage 1: geometry and kinematics.
   double overlap[kBatch];                        // m, 0 when apart
   double nx[kBatch], ny[kBatch], nz[kBatch];     // -, n_ij, from j to i
-  double vtx[kBatch], vty[kBatch], vtz[kBatch];  // m/s, tangential relative velocity (61)
+  double vtx[kBatch], vty[kBatch], vtz[kBatch];  // m/s, tangential relative velocity (60)
   double r[kBatch];                              // m, r* (52)
   // Stage 1: the normal half of the law.
   double fn[kBatch];               // N, positive part of the net normal force (rolling resistance)

@@ -30,7 +30,7 @@ inline PairGeometry pair_geometry(const Vec3& x_i, double R_i, const Vec3& x_j, 
   return g;
 }
 
-// Velocity of i relative to j at the contact point                                 (60)
+// Velocity of i relative to j at the contact point                                 (61)
 // v_rel = (v_i + w_i x r_Pi) - (v_j + w_j x r_Pj)   (m/s; w in rad/s, r in m)
 inline Vec3 contact_relative_velocity(const Vec3& v_i, const Vec3& w_i, const Vec3& r_Pi, const Vec3& v_j,
                                       const Vec3& w_j, const Vec3& r_Pj) {
@@ -45,7 +45,7 @@ inline Vec3 contact_relative_velocity_barrier(const Vec3& v_i, const Vec3& w_i, 
 // Normal rate d(delta)/dt = v_rel . n (negative while approaching), used by (49)-(50).
 inline double normal_rate(const Vec3& v_rel, const Vec3& n) { return dot(v_rel, n); }
 
-// Tangential part v_t = v_rel - (v_rel . n) n                                    (61)
+// Tangential part v_t = v_rel - (v_rel . n) n                                    (60)
 inline Vec3 tangential_part(const Vec3& v, const Vec3& n) { return v - dot(v, n) * n; }
 
 }  // namespace mpdem

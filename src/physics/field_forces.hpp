@@ -4,8 +4,8 @@
 
 namespace mpdem {
 
-inline Vec3 gravity_force(double mass, const Vec3& g) { return mass * g; }                                // (39)
-inline Vec3 electric_force(double charge, const Vec3& E) { return charge * E; }                           // (41)
-inline Vec3 magnetic_force(double charge, const Vec3& v, const Vec3& B) { return charge * cross(v, B); }  // (42)
+inline Vec3 gravity_force(double mass, const Vec3& g) { return mass * g; }                                // (40)
+inline Vec3 electric_force(double charge, const Vec3& E) { return charge * E; }                           // (42)
+inline Vec3 magnetic_force(double charge, const Vec3& v, const Vec3& B) { return charge * cross(v, B); }  // (43)
 
 }  // namespace mpdem

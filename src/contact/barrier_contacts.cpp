@@ -61,10 +61,10 @@ double element_pressure(const Barriers& b, std::size_t e) { return -dot(b.force[
 
 }  // namespace
 
-BarrierContacts::BarrierContacts(const Model& model, const Barriers& b)
-    : model_(model), topo_(BarrierTopology::build(b)) {
+BarrierContacts::BarrierContacts(const ContactTable& table, const Barriers& b)
+    : table_(table), topo_(BarrierTopology::build(b)) {
   for (std::size_t e = 0; e < b.size(); ++e)
-    if (b.material.size() != b.size() || b.material[e] < 0 || b.material[e] >= static_cast<int>(model.materials.size()))
+    if (b.material.size() != b.size() || b.material[e] < 0 || b.material[e] >= static_cast<int>(table.materials()))
       throw std::logic_error("barrier contacts: an element without a material (resolve_material_variants)");
 }
 
@@ -75,7 +75,6 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
   if (broad.size() != n || broad.num_elements() != b.size())
     throw std::logic_error("barrier contacts: the candidate lists do not match the scene");
   if (store_.stale(broad)) store_.relayout(broad);
-  table_.build(model_);
 
   // The elements translate rigidly: their triangles (normals, edge directions) once per
   // evaluation, not per candidate.

@@ -38,8 +38,9 @@ class BarrierContacts {
  public:
   static constexpr int kSlots = BarrierContactStore::kSlots;  // simultaneous barrier contacts per particle
 
-  // The laws come from the model's materials and [contact] tables, looked up at every evaluation.
-  BarrierContacts(const Model& model, const Barriers& b);
+  // The laws come from `table` (its owner, Interactions, rebuilds it from the model at every
+  // evaluation), by the particles' and elements' materials.
+  BarrierContacts(const ContactTable& table, const Barriers& b);
 
   // Adds contact forces/torques to the particles and loads to the barriers.
   PairStats evaluate(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req);
@@ -64,8 +65,7 @@ class BarrierContacts {
   void flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch, std::array<double, 5>& acc);
   void element_loads(Barriers& b);  // sums the loads of the last evaluation onto the elements, in particle order
 
-  const Model& model_;
-  ContactTable table_;  // rebuilt from model_ at every evaluation
+  const ContactTable& table_;
   BarrierTopology topo_;
   BarrierContactStore store_;
   std::vector<std::array<double, 5>> partial_;  // [groups] sums of one evaluation, per group

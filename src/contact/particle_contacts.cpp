@@ -17,10 +17,13 @@ bool ParticleContacts::holds_history(std::size_t k) const {
 }
 
 void ParticleContacts::ensure_history(std::size_t pairs) {
+  const bool rolling = step_start_ && table_.any_rolling();
+  // Rolling resistance switched on between steps needs the step-start rotations from then on.
+  if (rolling && spring_.size() == pairs && wr0_.size() != pairs) wr0_.assign(pairs, Vec3{});
   if (spring_.size() == pairs) return;  // first use: no history yet
   spring_.assign(pairs, Vec3{});
   vt0_.assign(step_start_ ? pairs : 0, Vec3{});
-  wr0_.assign(step_start_ && table_.any_rolling() ? pairs : 0, Vec3{});
+  wr0_.assign(rolling ? pairs : 0, Vec3{});
   slipped_.assign(step_start_ ? pairs : 0, 0);
 }
 
@@ -32,7 +35,7 @@ void ParticleContacts::refresh_terms(const Particles& p, std::uint64_t generatio
   terms_generation_ = generation;
   // Which materials the particles have changes only with the particles themselves (a rebuild);
   // the laws' values are looked up afresh at every evaluation.
-  const int materials = static_cast<int>(model_.materials.size());
+  const int materials = static_cast<int>(table_.materials());
   for (std::size_t i = 0; i < n; ++i)
     if (p.material[i] < 0 || p.material[i] >= materials)
       throw std::logic_error("particle contacts: a particle without a material (resolve_material_variants)");
@@ -46,9 +49,6 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   const VerletList& list = search.pairs();
   const PairBlocks& blocks = search.blocks();
   const std::size_t n = p.size();
-  table_.build(model_);
-  // Rolling resistance switched on between steps needs the step-start rotations.
-  if (step_start_ && table_.any_rolling() && wr0_.size() != list.num_pairs()) wr0_.assign(list.num_pairs(), Vec3{});
   ensure_history(list.num_pairs());
   slipped_.resize(step_start_ ? list.num_pairs() : 0);
   cross_force_.resize(blocks.num_cross());
@@ -198,9 +198,6 @@ void ParticleContacts::restore_history(const NeighborSearch& search, CarriedHist
                                        const std::vector<std::uint32_t>& old_index) {
   const VerletList& list = search.pairs();
   spring_.clear();
-  table_.build(model_);
-  // Rolling resistance switched on between steps needs the step-start rotations.
-  if (step_start_ && table_.any_rolling() && wr0_.size() != list.num_pairs()) wr0_.assign(list.num_pairs(), Vec3{});
   ensure_history(list.num_pairs());
   if (h.second.empty()) return;
   const auto& off = list.offsets();
@@ -250,9 +247,6 @@ std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, co
 void ParticleContacts::import_history(const Particles& p, const NeighborSearch& search, std::vector<PairHistory> h) {
   const VerletList& list = search.pairs();
   spring_.clear();
-  table_.build(model_);
-  // Rolling resistance switched on between steps needs the step-start rotations.
-  if (step_start_ && table_.any_rolling() && wr0_.size() != list.num_pairs()) wr0_.assign(list.num_pairs(), Vec3{});
   ensure_history(list.num_pairs());
   if (h.empty()) return;
   const bool vt = !vt0_.empty(), wr = !wr0_.empty();

@@ -46,8 +46,9 @@ class ParticleContacts {
   // resistance) of the step start and the first iteration's stick/slip decisions - what the
   // trapezoidal rule's increment (64) needs. Velocity Verlet (phi = 1, one evaluation a step)
   // needs only the spring.
-  // The laws come from the model's materials and [contact] tables, looked up at every evaluation.
-  ParticleContacts(const Model& model, bool step_start) : model_(model), step_start_(step_start) {}
+  // The laws come from `table` (its owner, Interactions, rebuilds it from the model at every
+  // evaluation), by the particles' materials.
+  ParticleContacts(const ContactTable& table, bool step_start) : table_(table), step_start_(step_start) {}
 
   // Adds contact forces and torques to p.force / p.torque; list must be current for p.x.
   PairStats evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req);
@@ -84,12 +85,11 @@ class ParticleContacts {
   using Terms = ContactTerms;  // per-particle values of the kernel, sim/pair_batch.hpp
 
  private:
-  void ensure_history(std::size_t pairs);
+  void ensure_history(std::size_t pairs);   // sized for the list; table_ must be current (rolling)
   bool holds_history(std::size_t k) const;  // slot k has a spring, vt0 or wr0 to keep
   void refresh_terms(const Particles& p, std::uint64_t generation);
 
-  const Model& model_;
-  ContactTable table_;  // rebuilt from model_ at every evaluation
+  const ContactTable& table_;
   bool step_start_;
   // Per pair slot [pairs]; the committed history is updated in place by commit evaluations.
   std::vector<Vec3> spring_;           // m, committed tangential spring of the slot's first member

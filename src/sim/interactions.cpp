@@ -15,6 +15,12 @@
 namespace mpdem {
 
 namespace {
+ContactTable table_for(const Model& model) {
+  ContactTable t;
+  t.build(model);
+  return t;
+}
+
 // True when some particle i in [lo, hi) has |x_i - x_build_i| + t |v_i| > limit (> 0). Only a
 // particle with one of the two terms above limit/2 can, and only those pay for the square roots
 // (measured: a vectorised loop over all of them was slower).
@@ -38,12 +44,12 @@ double default_skin(const Model& model, const Particles& p) {
 }
 
 Interactions::Interactions(const Model& model, const Particles& p, const Barriers& b, const StepPolicy& policy)
-    : model_(model), policy_(policy),
+    : model_(model), policy_(policy), table_(table_for(model)),
       // The list reaches beyond contact by the near-field cutoff (0 when the near field is off).
       search_(
           std::make_unique<NeighborSearch>(default_skin(model, p), near_field_extra_range(model.params.near_field, p))),
-      pp_(std::make_unique<ParticleContacts>(model, policy.step_start)),
-      pb_(std::make_unique<BarrierContacts>(model, b)) {
+      pp_(std::make_unique<ParticleContacts>(table_, policy.step_start)),
+      pb_(std::make_unique<BarrierContacts>(table_, b)) {
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
   if (model.params.analysis.thermal) heat_ = std::make_unique<HeatTransfer>(model, b);
   search_->set_incoming_index(near_ || heat_);
@@ -117,6 +123,7 @@ void Interactions::remove_particles(Particles& p, const Barriers& b, const std::
 
 void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   b.move_to(req.time);
+  table_.build(model_);  // a material or [contact] value edited between steps acts now
   std::fill(b.force.begin(), b.force.end(), Vec3{});
   std::fill(b.moment.begin(), b.moment.end(), Vec3{});
   std::fill(b.pressure.begin(), b.pressure.end(), 0.0);

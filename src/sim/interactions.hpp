@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "contact/contact_table.hpp"
 #include "integrate/step_policy.hpp"
 #include "io/binary_stream.hpp"
 #include "io/checkpoint_format.hpp"
@@ -108,6 +109,7 @@ class Interactions {
 
   const Model& model_;
   StepPolicy policy_;
+  ContactTable table_;  // the contact laws by pair of materials, rebuilt from model_ at every evaluation
   InteractionStats stats_;
   PhaseTimes times_;
   std::uint64_t mid_step_rebuilds_ = 0;

@@ -13,6 +13,10 @@ struct StepPolicy {
   // -, weight of the end-of-step heat flows when the step's heat is booked (the start flows
   // weigh 1 - heat_weight), matching how the integrator advances the temperatures.
   double heat_weight = 0.0;
+  // The step evaluates the interactions once, at x + dt (v + dt/2 F/m) with the step-start
+  // x, v, F (velocity Verlet's drift), so prepare_step can check the neighbour lists against those
+  // very positions and that evaluation need not scan the particles again.
+  bool drift_known = false;
 };
 
 }  // namespace mpdem

@@ -15,6 +15,8 @@
 namespace mpdem {
 
 namespace {
+constexpr double kDriftMargin2 = 1.0 + 1e-6;  // -, squared safety factor on predicted drifts
+
 ContactTable table_for(const Model& model) {
   ContactTable t;
   t.build(model);
@@ -33,6 +35,20 @@ bool some_reach(const Vec3* __restrict x, const Vec3* __restrict x_build, const 
     out = out || ((d2 > quarter2 || r2 > quarter2) && std::sqrt(d2) + std::sqrt(r2) > limit);
   }
   return out;
+}
+// How many particles i in [lo, hi) end velocity Verlet's drift dx = dt (v + dt/2 F/m) farther
+// than sqrt(lim2) from x_ref. The arithmetic and its order are VerletIntegrator's (no
+// contraction), so the evaluation sees these very positions; kDriftMargin2 covers any last bit.
+std::size_t drift_beyond(const Vec3* __restrict x, const Vec3* __restrict x_ref, const Vec3* __restrict v,
+                         const Vec3* __restrict f, const double* __restrict m, std::size_t lo, std::size_t hi,
+                         double dt, double lim2) {
+  const double half = 0.5 * dt;
+  std::size_t beyond = 0;
+  for (std::size_t i = lo; i < hi; ++i) {
+    const Vec3 x1 = x[i] + dt * (v[i] + (half / m[i]) * f[i]);
+    beyond += norm2(x1 - x_ref[i]) > lim2 ? 1 : 0;
+  }
+  return beyond;
 }
 }  // namespace
 
@@ -77,25 +93,59 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
 
 void Interactions::prepare_step(Particles& p, const Barriers& b, double dt) {
   ScopedTimer timer(times_.search);
+  predicted_displacement_ = -1.0;
+  if (policy_.drift_known && dt > 0.0 && !stale(p, b)) {
+    // Every particle's displacement since the build at the step's evaluation within `limit`
+    // leaves the barriers their allowance (checked again at that evaluation).
+    const double limit = 0.5 * search_->skin() - barrier_reach(b, dt);  // m
+    if (limit > 0.0 && drift_within(p, dt, limit, true)) {
+      predicted_displacement_ = limit;
+      return;
+    }
+    rebuild(p, b, true);
+    if (limit > 0.0 && drift_within(p, dt, limit, false)) predicted_displacement_ = limit;
+    return;
+  }
   if (rebuild_due(p, b, dt)) rebuild(p, b, true);
+}
+
+bool Interactions::stale(const Particles& p, const Barriers& b) const {
+  return p.size() == 0 || search_->pairs().size() != p.size() ||
+         search_->barrier_candidates().num_elements() != b.size();
+}
+
+double Interactions::barrier_reach(const Barriers& b, double dt) const {
+  if (b.size() == 0) return 0.0;
+  // Barrier motion is analytic but may accelerate: twice dt x the current fastest speed.
+  constexpr double kReachFactor = 2.0;
+  double speed2 = 0.0;
+  for (const Vec3& u : b.velocity) speed2 = std::max(speed2, norm2(u));
+  return search_->barrier_candidates().max_barrier_displacement(b) + kReachFactor * dt * std::sqrt(speed2);
+}
+
+bool Interactions::drift_within(const Particles& p, double dt, double limit, bool since_build) const {
+  const std::size_t n = p.size();
+  const double lim2 = limit * limit / kDriftMargin2;  // m^2
+  constexpr std::size_t kChunk = 1024;                // particles per call
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  std::size_t beyond = 0;
+#pragma omp parallel for schedule(static) reduction(+ : beyond) if (n > kParallelThreshold)
+  for (std::size_t c = 0; c < chunks; ++c)
+    beyond += drift_beyond(p.x.data(), since_build ? search_->pairs().build_positions().data() : p.x.data(), p.v.data(),
+                           p.force.data(), p.mass.data(), c * kChunk, std::min(n, (c + 1) * kChunk), dt, lim2);
+  return beyond == 0;
 }
 
 bool Interactions::rebuild_due(const Particles& p, const Barriers& b, double dt) const {
   const VerletList& list = search_->pairs();
   const std::size_t n = p.size();
   // Never built, or particles or elements added or removed: NeighborSearch's own check says so.
-  if (n == 0 || list.size() != n || search_->barrier_candidates().num_elements() != b.size())
-    return search_->needs_rebuild(p, b);
+  if (stale(p, b)) return search_->needs_rebuild(p, b);
   // The lists hold while a particle's displacement + the barriers' displacement since the build
   // stays within skin/2. The coming step adds about dt x the current speeds; twice that, since
   // the speeds change within the step, keeps evaluate()'s own rebuilds practically absent.
   constexpr double kReachFactor = 2.0;
-  double limit = 0.5 * search_->skin();  // m, left for the particles
-  if (b.size() > 0) {
-    double speed2 = 0.0;
-    for (const Vec3& u : b.velocity) speed2 = std::max(speed2, norm2(u));
-    limit -= search_->barrier_candidates().max_barrier_displacement(b) + kReachFactor * dt * std::sqrt(speed2);
-  }
+  const double limit = 0.5 * search_->skin() - barrier_reach(b, dt);  // m, left for the particles
   if (!(limit > 0.0)) return true;
   constexpr std::size_t kChunk = 1024;  // particles per call
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
@@ -131,7 +181,15 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     // The safety net behind prepare_step. No reordering within a step: the integrators hold
     // their step-start state by particle index.
     ScopedTimer timer(times_.search);
-    if (search_->needs_rebuild(p, b)) {
+    // prepare_step checked the particles at the positions this evaluation sees (StepPolicy::
+    // drift_known); the barriers, cheap to check, are checked at the evaluation's time.
+    const double known = predicted_displacement_;
+    predicted_displacement_ = -1.0;
+    const bool due = known >= 0.0 && !stale(p, b)
+                         ? known > 0.5 * search_->skin() ||
+                               (b.size() > 0 && search_->barrier_candidates().needs_rebuild(b, known))
+                         : search_->needs_rebuild(p, b);
+    if (due) {
       rebuild(p, b, false);
       ++mid_step_rebuilds_;
     }

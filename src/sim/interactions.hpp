@@ -106,6 +106,13 @@ class Interactions {
   void commit_heat(const HeatFlows& h, const EvalRequest& req);
   void rebuild(Particles& p, const Barriers& b, bool reorder);
   bool rebuild_due(const Particles& p, const Barriers& b, double dt) const;
+  // Lists never built, or particles or barrier elements added or removed since.
+  bool stale(const Particles& p, const Barriers& b) const;
+  // m, an allowance for the barriers' displacement since the build, to the end of a step of dt.
+  double barrier_reach(const Barriers& b, double dt) const;
+  // Whether velocity Verlet's drift dx = dt (v + dt/2 F/m) leaves every particle within limit (m)
+  // of its position at the last build (since_build) or of its present position.
+  bool drift_within(const Particles& p, double dt, double limit, bool since_build) const;
 
   const Model& model_;
   StepPolicy policy_;
@@ -113,6 +120,9 @@ class Interactions {
   InteractionStats stats_;
   PhaseTimes times_;
   std::uint64_t mid_step_rebuilds_ = 0;
+  // m, bound on the particles' displacement since the build at the next evaluation, set by
+  // prepare_step when the step's drift is known (StepPolicy::drift_known); -1: unknown.
+  double predicted_displacement_ = -1.0;
   std::unique_ptr<NeighborSearch> search_;
   std::unique_ptr<ParticleContacts> pp_;
   std::unique_ptr<BarrierContacts> pb_;

@@ -4,16 +4,12 @@
 
 #include <algorithm>
 #include <limits>
+#include <string>
 
+#include "physics/barrier_moduli.hpp"
 #include "physics/time_step_estimate.hpp"
 
 namespace mpdem::cli {
-
-namespace {
-double effective_young(double E1, double nu1, double E2, double nu2) {  // (51)
-  return E1 * E2 / (E2 * (1.0 - nu1 * nu1) + E1 * (1.0 - nu2 * nu2));
-}
-}  // namespace
 
 TimeStepAdvice time_step_advice(const Scene& scene) {
   const Particles& p = scene.particles;
@@ -35,10 +31,11 @@ TimeStepAdvice time_step_advice(const Scene& scene) {
   for (std::size_t i = 0; i < p.size(); ++i) {
     const Material& m = scene.model.materials[static_cast<std::size_t>(p.material[i])];
     a.rayleigh = std::min(a.rayleigh, rayleigh_time(p.radius[i], m.density, m.young, m.poisson));
-    const double Epp = effective_young(m.young, m.poisson, m.young, m.poisson);
+    const double Epp = effective_modulus(m.young, m.poisson, m.young, m.poisson);
     a.hertz_pp = std::min(a.hertz_pp, hertz_contact_time(0.5 * p.mass[i], Epp, 0.5 * p.radius[i], a.reference_speed));
     if (stiffest_barrier > 0.0) {
-      const double Epb = effective_young(m.young, m.poisson, stiffest_barrier, stiffest_nu);
+      // A rigid barrier (E = +inf) is the stiffest; E* is then the particle's E/(1 - nu^2).
+      const double Epb = barrier_effective_modulus(m.young, m.poisson, stiffest_barrier, stiffest_nu);
       hertz_pb = std::min(hertz_pb, hertz_contact_time(p.mass[i], Epb, p.radius[i], a.reference_speed));
     }
   }
@@ -67,17 +64,20 @@ void print_summary(const Scene& scene) {
              p.size() ? rmin : 0.0, rmax, q);
   fmt::print("materials: {}\n", scene.model.materials.size());
   for (const Material& m : scene.model.materials)
-    fmt::print("  {:<16} density {:.6g} kg/m^3  E {:.6g} Pa  nu {:.4g}\n", m.name, m.density, m.young, m.poisson);
+    fmt::print("  {:<16} density {:.6g} kg/m^3  E {}  nu {:.4g}\n", m.name, m.density,
+               is_rigid(m) ? std::string("rigid") : fmt::format("{:.6g} Pa", m.young), m.poisson);
   fmt::print("barriers: {} triangles in {} groups\n", b.size(), b.group_names.size());
   for (std::size_t g = 0; g < b.group_names.size(); ++g) {
-    std::size_t n = 0;
+    std::size_t n = 0, rigid = 0;
     double area = 0.0;
     for (std::size_t e = 0; e < b.size(); ++e)
       if (b.group[e] == static_cast<int>(g)) {
         ++n;
+        rigid += std::isinf(b.young[e]) ? 1 : 0;
         area += b.area[e];
       }
-    fmt::print("  {:<16} {} triangles, area {:.6g} m^2\n", b.group_names[g], n, area);
+    fmt::print("  {:<16} {} triangles{}, area {:.6g} m^2\n", b.group_names[g], n,
+               rigid == 0 ? "" : (rigid == n ? " (rigid)" : " (" + std::to_string(rigid) + " rigid)"), area);
   }
   fmt::print("integrator: {}  phi {}  dt {:.4g} s  duration {:.6g} s  ({:.0f} steps)\n",
              prm.time.integrator == Integrator::Verlet ? "verlet" : "trapezoidal", prm.time.phi, prm.time.dt,

@@ -52,7 +52,9 @@ void contact_law_lanes(const EvalRequest& req, BarrierBatch& b) {
     b.fn[t] = r.fn_limit;
     b.energy[t] = r.energy;
     b.damping[t] = r.damping;
-    b.friction[t] = r.friction;
+    b.eb[t] = r.spring_energy_before;
+    b.ea[t] = r.spring_energy;
+    b.tl[t] = r.tangential_loss;
     b.slip[t] = r.slipped ? 1 : 0;
   }
 }

@@ -41,6 +41,7 @@ struct BarrierBatch {
   double vt0x[kContacts], vt0y[kContacts], vt0z[kContacts];  // m/s, stored tangential velocity
   // the pair's law (contact_table.hpp's PairLaw, by field)
   ContactLawKind law[kContacts];
+  TangentialSpring form[kContacts];
   double cn[kContacts], ct[kContacts], sr[kContacts];                                     // PairLaw::cn, ct, shear_root
   double xin[kContacts], xit[kContacts], mus[kContacts], mud[kContacts], mur[kContacts];  // -
   double r[kContacts], m[kContacts];                                                      // m, kg: r* = R, m* = m
@@ -51,8 +52,10 @@ struct BarrierBatch {
   double vtx[kContacts], vty[kContacts], vtz[kContacts];  // m/s, tangential velocity
   double fn[kContacts];                                   // N, positive part of the net normal force
   double energy[kContacts];                               // J, elastic energy
-  double damping[kContacts];                              // W, dashpot power
-  double friction[kContacts];                             // W, sliding power
+  double damping[kContacts];                              // W, normal dashpot power
+  double eb[kContacts];                                   // J, stored spring at this step's stiffness
+  double ea[kContacts];                                   // J, the new spring's energy
+  double tl[kContacts];                                   // J, tangential loss (ContactResult)
   std::int64_t slip[kContacts];                           // 1 when sliding (8 bytes, like SlipDecision)
 
   // Room for one more particle with all its contacts.
@@ -61,10 +64,12 @@ struct BarrierBatch {
   std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }
 
   void set_law(std::size_t t, const PairLaw& c) {
-    law[t] = c.law, cn[t] = c.cn, ct[t] = c.ct, sr[t] = c.shear_root;
+    law[t] = c.law, form[t] = c.spring, cn[t] = c.cn, ct[t] = c.ct, sr[t] = c.shear_root;
     xin[t] = c.xi_n, xit[t] = c.xi_t, mus[t] = c.mu_s, mud[t] = c.mu_d, mur[t] = c.mu_r;
   }
-  PairLaw law_of(std::size_t t) const { return {law[t], cn[t], ct[t], sr[t], xin[t], xit[t], mus[t], mud[t], mur[t]}; }
+  PairLaw law_of(std::size_t t) const {
+    return {law[t], cn[t], ct[t], sr[t], xin[t], xit[t], mus[t], mud[t], mur[t], form[t]};
+  }
 };
 
 // The contact law (contact_law.hpp; physics.md sections 5-7, 13) of every contact of the batch

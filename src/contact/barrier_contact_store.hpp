@@ -15,6 +15,7 @@
 // (O(active + candidates), plus O(N) for the renumbering itself). Committed history and the
 // first-iteration decisions are carried (a rebuild may happen between two iterations of a step);
 // tentative history and loads belong to one evaluation and are not.
+#include <type_traits>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -33,6 +34,9 @@ struct BarrierSlot {          // history of one contact (no padding: checkpoints
   Vec3 normal;                // -, contact normal (towards the particle)
   Vec3 wr0;                   // rad/s, the particle's rotation (start of the next step, rolling law)
 };
+// Checkpoints hold these records byte for byte: a layout change is a format change.
+static_assert(sizeof(BarrierSlot) == 104 && std::is_trivially_copyable_v<BarrierSlot>,
+              "BarrierSlot changed: bump kCheckpointFormat (io/checkpoint_format.hpp) and this size");
 
 struct BarrierLoad {          // one contact's action on its element
   Vec3 force;                 // N, on the element

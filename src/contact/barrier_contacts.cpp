@@ -110,7 +110,7 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
     const auto active_before = [&](std::size_t g) { return store_.group_begin(g); };
     const std::size_t g1 = balanced_split(r + 1, threads, groups, active_before);
     for (std::size_t g = balanced_split(r, threads, groups, active_before); g < g1; ++g) {
-      std::array<double, 5> acc{};
+      BarrierSums acc{};
       for (std::size_t k = store_.group_begin(g); k < store_.group_begin(g + 1); ++k) {
         // Prefetch only (no effect on the results): particle data kAhead ahead, and the candidate
         // list of the particle half-way, whose offsets were prefetched kAhead / 2 visits ago.
@@ -129,7 +129,7 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
       partial_[g] = acc;
     }
   }
-  std::array<double, 5> sums{};
+  BarrierSums sums{};
   for (const auto& s : partial_)
     for (std::size_t c = 0; c < sums.size(); ++c) sums[c] += s[c];
   overflows_ += static_cast<std::uint64_t>(sums[4]);
@@ -138,12 +138,12 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
     for (std::size_t e = 0; e < m; ++e) b.pressure[e] = element_pressure(b, e);
   else element_loads(b);
   if (req.commit) store_.commit();
-  return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3]};
+  return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3], sums[5], sums[6], sums[7], sums[8]};
 }
 
 void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers& b, const BarrierBroadphase& broad,
                               const EvalRequest& req, std::vector<BarrierContact>& found, BarrierBatch& batch,
-                              std::array<double, 5>& acc) {
+                              BarrierSums& acc) {
   const std::size_t i = store_.particle(k);
   const auto cand = broad.candidates(i);
   if (cand.empty()) {  // kept only for its records: no contact now (and no force to add)
@@ -225,7 +225,7 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
 }
 
 void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch,
-                            std::array<double, 5>& acc) {
+                            BarrierSums& acc) {
   if (batch.particles == 0) return;
   if (batch.count > 0) barrier_contact_law(table_.barrier_mix(), req, batch);
   // In particle order, each particle's contacts in order: the original per-particle sums.
@@ -233,7 +233,8 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
   const double dt = req.dt;
   // The sums in registers: acc could alias the records written below, as far as the compiler
   // knows, and every += would wait on the previous store.
-  double sum0 = acc[0], sum1 = acc[1], sum2 = acc[2], sum3 = acc[3];
+  double sum0 = acc[0], sum1 = acc[1], sum2 = acc[2], sum3 = acc[3], sum5 = acc[5], sum6 = acc[6], sum7 = acc[7],
+         sum8 = acc[8];
   std::size_t t = 0;
   for (std::size_t q = 0; q < batch.particles; ++q) {
     const std::size_t k = batch.k[q];
@@ -278,12 +279,16 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
       sum0 += 1.0;
       sum1 += batch.energy[t];
       sum2 += batch.damping[t];
-      sum3 += batch.friction[t] - dot(roll, w);
+      sum3 -= dot(roll, w);
+      (slipped ? sum6 : sum5) += batch.tl[t];
+      sum7 += batch.eb[t];
+      sum8 += batch.ea[t];
     }
     p.force[i] += force;
     p.torque[i] += torque;
   }
-  acc[0] = sum0, acc[1] = sum1, acc[2] = sum2, acc[3] = sum3;
+  acc[0] = sum0, acc[1] = sum1, acc[2] = sum2, acc[3] = sum3, acc[5] = sum5, acc[6] = sum6, acc[7] = sum7,
+  acc[8] = sum8;
   batch.particles = 0;
   batch.count = 0;
 }

@@ -54,23 +54,26 @@ class BarrierContacts {
   std::size_t memory_bytes() const { return store_.bytes(); }  // B, held by the contact records
 
  private:
+  // {contacts, elastic energy J, normal damping power W, rolling friction power W, dropped
+  // contacts, tangential loss J of the sticking and of the sliding contacts, stored springs'
+  // energy J at this step's stiffness and of the new springs (ContactResult)}
+  using BarrierSums = std::array<double, 9>;
   // Contacts of active particle k, stage 1: detects them, finds their history, sets its record
   // counts and appends the contacts with the particle's values to the batch (acc[4]: dropped).
   void collect(std::size_t k, const Particles& p, const Barriers& b, const BarrierBroadphase& broad,
-               const EvalRequest& req, std::vector<BarrierContact>& found, BarrierBatch& batch,
-               std::array<double, 5>& acc);
+               const EvalRequest& req, std::vector<BarrierContact>& found, BarrierBatch& batch, BarrierSums& acc);
   // The law over the batch, then in particle and contact order: the tentative history and loads,
-  // the particles' force and torque, and acc = {contacts, elastic energy J, damping power W,
-  // friction power W}; with loads_to, also each load onto its element. Empties the batch.
-  void flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch, std::array<double, 5>& acc);
+  // the particles' force and torque, and the sums acc; with loads_to, also each load onto its element. Empties the
+  // batch.
+  void flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch, BarrierSums& acc);
   void element_loads(Barriers& b);  // sums the loads of the last evaluation onto the elements, in particle order
 
   const ContactTable& table_;
   BarrierTopology topo_;
   BarrierContactStore store_;
-  std::vector<std::array<double, 5>> partial_;  // [groups] sums of one evaluation, per group
-  std::vector<CurrentTriangle> tris_;           // [M] the elements at this evaluation's offsets
-  std::vector<Vec3> centres_;                   // [M] m, their centroids (Barriers::centre), moment arms
+  std::vector<BarrierSums> partial_;   // [groups] sums of one evaluation, per group
+  std::vector<CurrentTriangle> tris_;  // [M] the elements at this evaluation's offsets
+  std::vector<Vec3> centres_;          // [M] m, their centroids (Barriers::centre), moment arms
   std::uint64_t overflows_ = 0;
 };
 

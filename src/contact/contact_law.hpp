@@ -74,7 +74,7 @@ struct ContactState {
   Vec3 normal;               // -, unit, towards the body the force acts on
   double normal_rate = 0.0;  // m/s, v_rel . n (negative approaching)
   Vec3 vt;                   // m/s, tangential relative velocity (60)
-  Vec3 spring;               // m, stored spring (any plane; projected here (59))
+  Vec3 spring;               // m (N: incremental form), stored spring (any plane; projected here (59))
   Vec3 increment;            // m, spring increment of the step (64)
   SlipDecision decide = SlipDecision::Free;
 };
@@ -83,11 +83,20 @@ struct ContactResult {
   double fn = 0.0;        // N, net normal force along n, >= 0 where the law clamps
   double fn_limit = 0.0;  // N, max(fn, 0): what Coulomb's limit and rolling resistance scale with
   Vec3 ft;                // N, tangential force
-  Vec3 spring;            // m, spring for the next step
+  Vec3 spring;            // m (N: incremental form, k_t s), spring for the next step
   bool slipped = false;
-  double energy = 0.0;    // J, elastic energy stored (normal + tangential spring)
-  double damping = 0.0;   // W, dissipated by the normal and (sticking) tangential dashpots
-  double friction = 0.0;  // W, dissipated by sliding
+  double energy = 0.0;   // J, elastic energy stored (normal + tangential spring)
+  double damping = 0.0;  // W, dissipated by the normal dashpot
+  // J, removed by the tangential spring-dashpot in the step at this step's stiffness: the work
+  // the contact's tangential force took from the bodies, -f_t . ds, less what the spring gained,
+  // 1/2 k_t (|s_new|^2 - |s|^2) (s: the stored spring). Sliding, that is the friction work plus
+  // the spring energy cut at the limit (at a stick-to-slip transition: the drop from the static
+  // to the dynamic limit); sticking, the dashpot's work. What the change of k_t(delta) since the
+  // last step does to the stored energy is booked by the caller, for all contacts at once
+  // (Interactions::evaluate), from spring_energy_before.
+  double tangential_loss = 0.0;
+  double spring_energy_before = 0.0;  // J, 1/2 k_t |s|^2: the stored spring at this step's stiffness
+  double spring_energy = 0.0;         // J, 1/2 k_t |s_new|^2: the spring for the next step (in energy)
 };
 
 // The normal half of a contact: what the tangential half and the sums need of it.
@@ -123,22 +132,32 @@ inline NormalContact normal_contact(const PairLaw& c, double r_star, double m_st
 
 // The tangential half (57)-(70): the stored spring projected onto the tangent plane (59), plus
 // the increment, Coulomb stick or slip against mu_s, mu_d and the normal force.
-inline ContactResult tangential_contact(double mu_s, double mu_d, const NormalContact& n, const Vec3& spring,
-                                        const Vec3& normal, const Vec3& increment, const Vec3& vt,
+// The total spring (thesis (57)-(58)) stores s (m): f_t = -k_t(delta) (s + ds). The incremental
+// one (Mindlin; physics.md section 6) stores k_t s (N), the elastic force of the last step,
+// and this step's stiffness scales only the increment: f_t = -(k_t' s' + k_t ds) (a select: one
+// law, either form, no branch).
+inline ContactResult tangential_contact(double mu_s, double mu_d, TangentialSpring form, const NormalContact& n,
+                                        const Vec3& spring, const Vec3& normal, const Vec3& increment, const Vec3& vt,
                                         SlipDecision decide) {
   ContactResult out;
   out.fn = n.fn;
   out.fn_limit = n.fn_limit;
-  const TangentialResult t = tangential_force(project_spring(spring, normal), increment, vt, n.k_t, n.d_t, mu_s, mu_d,
-                                              n.fn_limit, decide);
+  const bool positive = n.k_t > 0.0;
+  const double inv_k_t = positive ? 1.0 / (positive ? n.k_t : 1.0) : 0.0;  // m/N
+  const bool scaled = (form == TangentialSpring::Incremental) & positive;
+  const double kept = scaled ? n.k_t : 1.0;                                  // stored = kept s
+  const Vec3 s = project_spring(spring, normal) * (scaled ? inv_k_t : 1.0);  // m
+  const TangentialResult t = tangential_force(s, increment, vt, n.k_t, inv_k_t, n.d_t, mu_s, mu_d, n.fn_limit, decide);
   // Component by component: a whole-Vec3 copy between the two result records keeps GCC from
   // splitting them into scalars, and the kernels' loops would not vectorise.
   out.ft.x = t.force.x, out.ft.y = t.force.y, out.ft.z = t.force.z;
-  out.spring.x = t.spring.x, out.spring.y = t.spring.y, out.spring.z = t.spring.z;
+  out.spring.x = kept * t.spring.x, out.spring.y = kept * t.spring.y, out.spring.z = kept * t.spring.z;
   out.slipped = t.slipped;
-  out.energy = n.energy + 0.5 * n.k_t * norm2(t.spring);
-  out.damping = n.damping + (t.slipped ? 0.0 : t.dissipated_power);
-  out.friction = t.slipped ? t.dissipated_power : 0.0;
+  out.spring_energy = 0.5 * n.k_t * norm2(t.spring);
+  out.spring_energy_before = 0.5 * n.k_t * norm2(s);
+  out.energy = n.energy + out.spring_energy;
+  out.damping = n.damping;
+  out.tangential_loss = -dot(t.force, increment) - (out.spring_energy - out.spring_energy_before);
   return out;
 }
 
@@ -146,8 +165,9 @@ inline ContactResult tangential_contact(double mu_s, double mu_d, const NormalCo
 // loops over a batch (fewer live values per loop); everything else calls this.
 template <class Law>
 inline ContactResult evaluate_contact(const PairLaw& c, const ContactState& s) {
-  return tangential_contact(c.mu_s, c.mu_d, normal_contact<Law>(c, s.r_star, s.m_star, s.overlap, s.normal_rate),
-                            s.spring, s.normal, s.increment, s.vt, s.decide);
+  return tangential_contact(c.mu_s, c.mu_d, c.spring,
+                            normal_contact<Law>(c, s.r_star, s.m_star, s.overlap, s.normal_rate), s.spring, s.normal,
+                            s.increment, s.vt, s.decide);
 }
 
 }  // namespace mpdem

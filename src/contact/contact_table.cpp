@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "physics/barrier_moduli.hpp"
 #include "physics/hertz.hpp"
 #include "physics/restitution.hpp"
 #include "physics/tangential.hpp"
@@ -25,6 +26,7 @@ ContactLawParams pair_params(const Model& model, const ContactLawParams& default
                        (named(a, e.material_b) && named(b, e.material_a));
     if (!match) continue;
     if (e.law) p.law = *e.law;
+    if (e.tangential_spring) p.tangential_spring = *e.tangential_spring;
     if (e.restitution || e.damping_ratio) {
       p.restitution = e.restitution;
       p.damping_ratio = e.damping_ratio;
@@ -32,7 +34,7 @@ ContactLawParams pair_params(const Model& model, const ContactLawParams& default
     if (e.mu_static) p.mu_static = *e.mu_static;
     if (e.mu_dynamic) p.mu_dynamic = *e.mu_dynamic;
     if (e.mu_rolling) p.mu_rolling = *e.mu_rolling;
-    if (e.tangential_damping) p.tangential_damping = *e.tangential_damping;
+    if (e.tangential_damping) p.tangential_damping = e.tangential_damping;
     if (e.stiffness_normal) p.stiffness_normal = *e.stiffness_normal;
     if (e.stiffness_tangential) p.stiffness_tangential = *e.stiffness_tangential;
   }
@@ -64,10 +66,14 @@ PairLaw resolve_pair_law(const ContactLawParams& p, double E_star, double G_star
   if (p.damping_ratio) l.xi_n = *p.damping_ratio;
   else if (p.restitution)
     l.xi_n = linear ? thesis_damping_ratio(*p.restitution) : damping_ratio_for_restitution(*p.restitution);
-  l.xi_t = p.tangential_damping;
+  // Without its own ratio the tangential dashpot takes the normal one: undamped, a contact that
+  // starts with e < 1 sticks at first touch (the normal dashpot dominates the still tiny
+  // spring force there) and the tangential impulse falls short of Coulomb's mu J_n.
+  l.xi_t = p.tangential_damping.value_or(l.xi_n);
   l.mu_s = p.mu_static;
   l.mu_d = p.mu_dynamic;
   l.mu_r = p.mu_rolling;
+  l.spring = p.tangential_spring;
   return l;
 }
 
@@ -79,20 +85,24 @@ void ContactTable::build(const Model& model) {
   rolling_ = false;
   for (std::size_t a = 0; a < n_; ++a) {
     const Material& ma = mats[a];
+    // Rigid materials (E = +inf) are barrier elements' only: a pair with a rigid particle side is
+    // never looked up and gets zero moduli rather than the NaN of inf/inf.
+    const bool rigid_a = is_rigid(ma);
     const double ca = (1.0 - ma.poisson * ma.poisson) / ma.young;                // (51)
     const double sa = (2.0 - ma.poisson) / shear_modulus(ma.young, ma.poisson);  // Mindlin G*
     for (std::size_t b = 0; b < n_; ++b) {
       const Material& mb = mats[b];
       const double cb = (1.0 - mb.poisson * mb.poisson) / mb.young;
       const double sb = (2.0 - mb.poisson) / shear_modulus(mb.young, mb.poisson);
+      const bool pp_used = !rigid_a && !is_rigid(mb);
       // Particle pairs: E* = 1 / (sum of the members' compliances) (51), G* likewise.
       pp_[a * n_ + b] = resolve_pair_law(pair_params(model, model.params.contact.particle_particle, a, b, true),
-                                         1.0 / (ca + cb), 1.0 / (sa + sb));
-      // A particle against the half-space of the barrier's material (section 7).
-      pb_[a * n_ + b] = resolve_pair_law(pair_params(model, model.params.contact.particle_barrier, a, b, false),
-                                         effective_modulus(ma.young, ma.poisson, mb.young, mb.poisson),
-                                         effective_shear_modulus(shear_modulus(ma.young, ma.poisson), ma.poisson,
-                                                                 shear_modulus(mb.young, mb.poisson), mb.poisson));
+                                         pp_used ? 1.0 / (ca + cb) : 0.0, pp_used ? 1.0 / (sa + sb) : 0.0);
+      // A particle against the half-space of the barrier's material, or a rigid barrier (section 7).
+      pb_[a * n_ + b] = resolve_pair_law(
+          pair_params(model, model.params.contact.particle_barrier, a, b, false),
+          rigid_a ? 0.0 : barrier_effective_modulus(ma.young, ma.poisson, mb.young, mb.poisson),
+          rigid_a ? 0.0 : barrier_effective_shear_modulus(ma.young, ma.poisson, mb.young, mb.poisson));
       rolling_ = rolling_ || pp_[a * n_ + b].mu_r > 0.0 || pb_[a * n_ + b].mu_r > 0.0;
     }
   }

@@ -25,6 +25,9 @@ struct PairLaw {
   double mu_s = 0.0;        // -, static friction (68)
   double mu_d = 0.0;        // -, dynamic friction (69)
   double mu_r = 0.0;        // -, rolling resistance (71)
+  // The spring form; Incremental stores k_t s (N) instead of s (m), so that the next step's
+  // stiffness scales only the increment (contact_law.hpp's tangential_contact).
+  TangentialSpring spring = TangentialSpring::Total;
 };
 
 // Which laws a table holds: the kernels are instantiated for one law, or for a mix.

@@ -46,7 +46,7 @@ MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
     b.wsx[t] = ws.x, b.wsy[t] = ws.y, b.wsz[t] = ws.z;
     if constexpr (!kUniform) {
       const PairLaw& c = q.laws[static_cast<std::size_t>(q.material[i]) * q.materials + q.material[j]];
-      b.law[t] = c.law, b.cn[t] = c.cn, b.ct[t] = c.ct, b.sr[t] = c.shear_root;
+      b.law[t] = c.law, b.form[t] = c.spring, b.cn[t] = c.cn, b.ct[t] = c.ct, b.sr[t] = c.shear_root;
       b.xin[t] = c.xi_n, b.xit[t] = c.xi_t, b.mus[t] = c.mu_s, b.mud[t] = c.mu_d, b.mur[t] = c.mu_r;
     }
     b.rr[t] = ri * rj;
@@ -92,8 +92,8 @@ void geometry_normal(const PairPass& q, Batch& b) {
     const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
     const double vn = dot(vrel, nrm);
     const Vec3 vt = vrel - vn * nrm;  // (60)
-    const PairLaw law = kUniform ? u : PairLaw{b.law[t], b.cn[t],  b.ct[t],  b.sr[t], b.xin[t],
-                                               b.xit[t], b.mus[t], b.mud[t], b.mur[t]};
+    const PairLaw law = kUniform ? u : PairLaw{b.law[t], b.cn[t],  b.ct[t],  b.sr[t],  b.xin[t],
+                                               b.xit[t], b.mus[t], b.mud[t], b.mur[t], b.form[t]};
     const NormalContact n = normal_contact<Law>(law, r, m, overlap, vn);
     b.overlap[t] = overlap;
     b.nx[t] = nrm.x, b.ny[t] = nrm.y, b.nz[t] = nrm.z;
@@ -111,6 +111,7 @@ void tangential_stage(const PairPass& q, Batch& b) {
   gather_history<kStepStart>(q, b);
   const double dt = q.dt, phi = q.phi, dt_phi = q.dt * q.phi;
   const double mu_s_u = q.uniform_law.mu_s, mu_d_u = q.uniform_law.mu_d;
+  const TangentialSpring form_u = q.uniform_law.spring;
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const Vec3 nrm = b.normal(t), vt = b.vt(t);
     Vec3 increment;
@@ -124,8 +125,9 @@ void tangential_stage(const PairPass& q, Batch& b) {
     NormalContact n;
     n.fn = b.fnet[t], n.fn_limit = b.fn[t], n.k_t = b.kt[t], n.d_t = b.dtc[t], n.energy = b.en[t];
     n.damping = b.pn[t];
-    const ContactResult r = tangential_contact(kUniform ? mu_s_u : b.mus[t], kUniform ? mu_d_u : b.mud[t], n,
-                                               {b.s0x[t], b.s0y[t], b.s0z[t]}, nrm, increment, vt, decide);
+    const ContactResult r = tangential_contact(kUniform ? mu_s_u : b.mus[t], kUniform ? mu_d_u : b.mud[t],
+                                               kUniform ? form_u : b.form[t], n, {b.s0x[t], b.s0y[t], b.s0z[t]}, nrm,
+                                               increment, vt, decide);
     b.sx[t] = r.spring.x, b.sy[t] = r.spring.y, b.sz[t] = r.spring.z;
     b.slip[t] = r.slipped ? 1 : 0;
     const Vec3 f = r.fn * nrm + r.ft;
@@ -134,7 +136,9 @@ void tangential_stage(const PairPass& q, Batch& b) {
     b.ax[t] = arm.x, b.ay[t] = arm.y, b.az[t] = arm.z;
     b.energy[t] = r.energy;
     b.damping[t] = r.damping;
-    b.friction[t] = r.friction;
+    b.eb[t] = r.spring_energy_before;
+    b.ea[t] = r.spring_energy;
+    b.tl[t] = r.tangential_loss;
   }
 }
 
@@ -190,7 +194,10 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
     s.contacts += 1.0;
     s.elastic_energy += b.energy[t];
     s.damping_power += b.damping[t];
-    s.friction_power += b.friction[t] - dot(roll, wrel);
+    s.friction_power -= dot(roll, wrel);
+    (b.slip[t] ? s.sliding_loss : s.sticking_loss) += b.tl[t];
+    s.spring_before += b.eb[t];
+    s.spring_after += b.ea[t];
     // Divide only for a contact deeper than the deepest so far.
     const double rmin = std::min(ri, rj);
     if (b.overlap[t] > s.deepest.ratio * rmin) s.deepest = {b.overlap[t] / rmin, q.id[i], q.id[j]};

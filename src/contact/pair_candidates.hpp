@@ -41,6 +41,7 @@ struct Batch {
   double rr[kBatch], sm[kBatch];                 // m^2, 1/kg: R_i R_j, 1/m_i + 1/m_j
   // The pair's law (several materials only; one material: PairPass::uniform_law).
   ContactLawKind law[kBatch];
+  TangentialSpring form[kBatch];
   double cn[kBatch], ct[kBatch], sr[kBatch];                               // PairLaw::cn, ct, shear_root
   double xin[kBatch], xit[kBatch], mus[kBatch], mud[kBatch], mur[kBatch];  // -, damping, friction
   // Stage 1: geometry and kinematics.
@@ -64,8 +65,10 @@ struct Batch {
   double fx[kBatch], fy[kBatch], fz[kBatch];  // N, force on i
   double ax[kBatch], ay[kBatch], az[kBatch];  // N, n x f_t
   double energy[kBatch];                      // J, elastic energy of the contact
-  double damping[kBatch];                     // W, dashpot power
-  double friction[kBatch];                    // W, sliding power
+  double damping[kBatch];                     // W, normal dashpot power
+  double eb[kBatch];                          // J, stored spring at this step's stiffness
+  double ea[kBatch];                          // J, the new spring's energy
+  double tl[kBatch];                          // J, tangential loss of the step (ContactResult)
   // The vector stages run over whole vectors: the lanes past count repeat the last candidate
   // (gather_members, gather_history), so they compute finite values nobody reads.
   std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }

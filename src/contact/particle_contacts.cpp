@@ -145,6 +145,10 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
     st.elastic_energy += s.elastic_energy;
     st.damping_power += s.damping_power;
     st.friction_power += s.friction_power;
+    st.sticking_loss += s.sticking_loss;
+    st.sliding_loss += s.sliding_loss;
+    st.spring_before += s.spring_before;
+    st.spring_after += s.spring_after;
     if (s.deepest.ratio > deepest_.ratio) deepest_ = {s.deepest.ratio, s.deepest.first, s.deepest.second, -1};
   }
   return st;

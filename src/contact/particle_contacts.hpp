@@ -6,6 +6,7 @@
 // tangential velocity at the start of the step vt0 [m/s]); only a commit evaluation updates them,
 // in place. Forces are added block by block in slot order (neighbor/pair_blocks.hpp,
 // sim/pair_batch.hpp), so totals do not depend on the thread count and f_ji = -f_ij exactly.
+#include <type_traits>
 #include <cstdint>
 #include <vector>
 
@@ -24,12 +25,19 @@ struct PairHistory {
   Vec3 vt0;     // m/s
   Vec3 wr0;     // rad/s, relative rotation w_first - w_second at the step start
 };
+// Checkpoints hold these records byte for byte: a layout change is a format change.
+static_assert(sizeof(PairHistory) == 88 && std::is_trivially_copyable_v<PairHistory>,
+              "PairHistory changed: bump kCheckpointFormat (io/checkpoint_format.hpp) and this size");
 
 struct PairStats {
   std::size_t contacts = 0;
   double elastic_energy = 0.0;  // J
-  double damping_power = 0.0;   // W, removed by normal + tangential damping
-  double friction_power = 0.0;  // W, removed by sliding and rolling friction
+  double damping_power = 0.0;   // W, removed by the normal dashpots
+  double friction_power = 0.0;  // W, removed by rolling friction
+  double sticking_loss = 0.0;   // J, tangential loss of the step (ContactResult) of the sticking contacts
+  double sliding_loss = 0.0;    // J, tangential loss of the step of the sliding contacts
+  double spring_before = 0.0;   // J, the stored springs' energy at this step's stiffness (ContactResult)
+  double spring_after = 0.0;    // J, the new springs' energy
 };
 
 // The deepest contact of the last evaluation, relative to the smaller radius.

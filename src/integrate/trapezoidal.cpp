@@ -123,8 +123,14 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
       const Vec3 b1 = predictor ? b0_[i] : p.torque[i] / p.inertia[i];
       const Vec3 w = w0_[i] + dt * ((1.0 - phi) * b0_[i] + phi * b1);
       const Vec3 alpha = dt * ((1.0 - phi) * w0_[i] + phi * w);
-      add(s, kRotation, norm2(alpha - alpha_[i]), norm2(alpha), norm2(alpha - alphap_[i]), norm2(alpha));
-      add(s, kAngularVelocity, norm2(w - p.w[i]), norm2(w - w0_[i]), norm2(w - wp_[i]), norm2(w));
+      // The two-cycle test's magnitudes of the rotational fields count the translational ones in
+      // the same units (displacement / R, velocity / R): a contact that starts at the step's end
+      // alternates on and off (the damped normal force jumps from 0 to d_n |rate| at any
+      // positive overlap), and a sphere without spin then alternates between 0 and a small w.
+      const double inv_r2 = 1.0 / (p.radius[i] * p.radius[i]);  // 1/m^2
+      add(s, kRotation, norm2(alpha - alpha_[i]), norm2(alpha), norm2(alpha - alphap_[i]),
+          norm2(alpha) + norm2(x - x0_[i]) * inv_r2);
+      add(s, kAngularVelocity, norm2(w - p.w[i]), norm2(w - w0_[i]), norm2(w - wp_[i]), norm2(w) + norm2(v) * inv_r2);
       wp_[i] = p.w[i];
       alphap_[i] = alpha_[i];
       p.w[i] = w;

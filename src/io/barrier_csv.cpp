@@ -104,7 +104,11 @@ void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& so
     const Vec3 p2{t.number(row, c[X2]), t.number(row, c[Y2]), t.number(row, c[Z2])};
     const Vec3 p3{t.number(row, c[X3]), t.number(row, c[Y3]), t.number(row, c[Z3])};
     const std::string& group = t.missing(row, c[GROUP]) ? default_group : t.text(row, c[GROUP]);
-    const double E = t.number_or(row, c[YOUNG], mat.young, kPositive, "a Young's modulus");
+    // A rigid element has no elastic constants of its own: a row's value would be ignored.
+    for (const Col k : {YOUNG, POISSON})
+      if (source.rigid && !t.missing(row, c[k]))
+        t.fail(row, c[k], "a rigid barrier ([[barriers]] rigid = true) takes no young or poisson values");
+    const double E = source.rigid ? kRigidYoung : t.number_or(row, c[YOUNG], mat.young, kPositive, "a Young's modulus");
     const double nu = t.number_or(row, c[POISSON], mat.poisson, kPoissonRange, "a Poisson ratio");
     double temp = default_temperature;
     if (!t.missing(row, c[TEMPERATURE])) temp = t.number(row, c[TEMPERATURE], kNonNegative, "a temperature");

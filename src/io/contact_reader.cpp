@@ -1,6 +1,7 @@
 #include "io/contact_reader.hpp"
 
 #include "io/value_range.hpp"
+#include "physics/restitution.hpp"
 
 namespace mpdem {
 
@@ -20,6 +21,27 @@ ContactLawKind read_law_kind(const TomlSection& s) {
   s.fail("law", "expected \"hertz\" or \"linear\", got \"" + name + "\"");
 }
 
+TangentialSpring read_spring_form(const TomlSection& s) {
+  const std::string name = *s.string("tangential_spring");
+  if (name == "total") return TangentialSpring::Total;
+  if (name == "incremental") return TangentialSpring::Incremental;
+  s.fail("tangential_spring", "expected \"total\" or \"incremental\", got \"" + name + "\"");
+}
+
+// e in [kMinRestitution, 1]; a smaller e is refused saying why, since it is a plausible input
+// (a "perfectly plastic" contact) the calibration cannot serve.
+std::optional<double> read_restitution(const TomlSection& s) {
+  constexpr Range kRange{kMinRestitution, 1.0, true, true};
+  const std::optional<double> e = s.number("restitution");
+  if (!e || kRange.contains(*e)) return e;
+  std::string why = "expected a number " + kRange.text() + ", got " + number_text(*e);
+  if (*e < kMinRestitution)
+    why += ": the Hertz damping calibration (physics.md section 5) accepts e >= " + number_text(kMinRestitution) +
+           ", since no finite damping ratio gives e = 0 (strongly damped, e falls like 0.2 / xi^2; xi = 14.3 at "
+           "e = 0.001); for strongly damped contacts give damping_ratio instead";
+  s.fail("restitution", why);
+}
+
 // mu_dynamic <= mu_static, naming the key the user gave (or the default).
 void check_friction_order(const TomlSection& s, double mu_s, double mu_d) {
   if (mu_d > mu_s)
@@ -36,17 +58,19 @@ void check_linear_stiffness(const TomlSection& s, ContactLawKind law, double k_n
 }
 
 void read_contact_law(const TomlSection& contact, std::string_view kind, ContactLawParams& c) {
-  const auto s = contact.table(kind, {"law", "restitution", "damping_ratio", "mu_static", "mu_dynamic", "mu_rolling",
-                                      "tangential_damping", "stiffness_normal", "stiffness_tangential"});
+  const auto s = contact.table(kind,
+                               {"law", "restitution", "damping_ratio", "mu_static", "mu_dynamic", "mu_rolling",
+                                "tangential_damping", "stiffness_normal", "stiffness_tangential", "tangential_spring"});
   if (!s) return;
   if (s->has("law")) c.law = read_law_kind(*s);
-  c.restitution = s->number("restitution", kRestitutionRange);
+  if (s->has("tangential_spring")) c.tangential_spring = read_spring_form(*s);
+  c.restitution = read_restitution(*s);
   c.damping_ratio = s->number("damping_ratio", kNonNegative);
   if (c.restitution && c.damping_ratio) s->fail("damping_ratio", "give either restitution or damping_ratio, not both");
   s->get("mu_static", c.mu_static, kNonNegative);
   s->get("mu_dynamic", c.mu_dynamic, kNonNegative);
   s->get("mu_rolling", c.mu_rolling, kNonNegative);
-  s->get("tangential_damping", c.tangential_damping, kNonNegative);
+  c.tangential_damping = s->number("tangential_damping", kNonNegative);
   s->get("stiffness_normal", c.stiffness_normal, kPositive);
   c.stiffness_tangential = s->number("stiffness_tangential", kNonNegative);
   check_friction_order(*s, c.mu_static, c.mu_dynamic);
@@ -55,9 +79,9 @@ void read_contact_law(const TomlSection& contact, std::string_view kind, Contact
 
 // [[contact.pair]] entries; their materials must exist (materials are read first).
 void read_contact_pairs(const TomlSection& contact, const Model& model, ContactParams& c) {
-  for (const TomlSection& s :
-       contact.tables("pair", {"materials", "kind", "law", "restitution", "damping_ratio", "mu_static", "mu_dynamic",
-                               "mu_rolling", "tangential_damping", "stiffness_normal", "stiffness_tangential"})) {
+  for (const TomlSection& s : contact.tables(
+           "pair", {"materials", "kind", "law", "restitution", "damping_ratio", "mu_static", "mu_dynamic", "mu_rolling",
+                    "tangential_damping", "stiffness_normal", "stiffness_tangential", "tangential_spring"})) {
     ContactPairParams e;
     e.line = s.line();
     const std::vector<std::string> names = s.require(s.strings("materials", 2), "materials");
@@ -71,7 +95,8 @@ void read_contact_pairs(const TomlSection& contact, const Model& model, ContactP
       e.particle_barrier = *k == "particle_barrier";
     }
     if (s.has("law")) e.law = read_law_kind(s);
-    e.restitution = s.number("restitution", kRestitutionRange);
+    if (s.has("tangential_spring")) e.tangential_spring = read_spring_form(s);
+    e.restitution = read_restitution(s);
     e.damping_ratio = s.number("damping_ratio", kNonNegative);
     if (e.restitution && e.damping_ratio) s.fail("damping_ratio", "give either restitution or damping_ratio, not both");
     e.mu_static = s.number("mu_static", kNonNegative);

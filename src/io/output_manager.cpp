@@ -12,6 +12,7 @@
 #include "io/pvd_index.hpp"
 #include "io/vtu_writer.hpp"
 #include "sim/energy.hpp"
+#include "sim/state_scan.hpp"
 #include "thermal/heat_transfer.hpp"
 #include "field/near_field_forces.hpp"
 
@@ -152,9 +153,11 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
 }
 
 void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const InteractionStats& s) {
-  const ParticleEnergy e = particle_energy(p, model_.params.fields.gravity);
+  const StateScan scan = scan_state(p, model_.params.fields, DomainParams{});
+  const ParticleEnergy& e = scan.energy;
+  const double potential = e.potential + scan.electric;  // J, gravitational + electric
   const double nf = near_field_ ? s.near_field_energy : 0.0;
-  const double total = e.kinetic + e.rotational + e.potential + s.elastic_energy + s.damping_dissipated +
+  const double total = e.kinetic + e.rotational + potential + s.elastic_energy + s.damping_dissipated +
                        s.friction_dissipated + nf;
   std::vector<double> row{static_cast<double>(r.step),
                           r.time,
@@ -169,7 +172,7 @@ void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const 
                           static_cast<double>(s.contacts_pb),
                           e.kinetic,
                           e.rotational,
-                          e.potential,
+                          potential,
                           s.elastic_energy,
                           s.damping_dissipated,
                           s.friction_dissipated};

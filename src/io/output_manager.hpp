@@ -3,6 +3,7 @@
 // series with their .pvd indexes, particle CSV snapshots, the global log and the barrier-group
 // log. Intervals are in simulated seconds (the global log: in steps). docs/output.md lists
 // every file and column.
+#include <type_traits>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -55,6 +56,9 @@ class OutputManager {
     double last = 0.0;        // s, time of the last snapshot
     std::uint64_t count = 0;  // snapshots written
   };
+  // Checkpoints hold Series byte for byte: a layout change is a format change.
+  static_assert(sizeof(Series) == 32 && std::is_trivially_copyable_v<Series>,
+                "Series changed: bump kCheckpointFormat (io/checkpoint_format.hpp) and this size");
   static bool due(Series& s, double t, double dt, bool force);
 
   const Model& model_;

@@ -180,8 +180,9 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
     if (!src.material.empty()) check_material(s, "material", src.material, scene.model);
     scene.particle_sources.push_back(src);
   }
-  for (const TomlSection& s : root.tables("barriers", {"file", "stl", "group", "material", "motion", "thickness",
-                                                       "temperature", "scale", "rotate_deg", "translate"})) {
+  for (const TomlSection& s :
+       root.tables("barriers", {"file", "stl", "group", "material", "rigid", "motion", "thickness", "temperature",
+                                "scale", "rotate_deg", "translate"})) {
     BarrierSource src;
     src.line = s.line();
     if (s.has("file") && s.has("stl")) s.fail("stl", "give either file or stl, not both");
@@ -196,6 +197,7 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
     s.get("group", src.group);
     s.get("material", src.material);
     if (!src.material.empty()) check_material(s, "material", src.material, scene.model);
+    s.get("rigid", src.rigid);
     if (const auto m = s.table("motion", {"a", "A", "w1", "B", "w2"})) {
       m->get("a", src.motion.a);
       m->get("A", src.motion.A);

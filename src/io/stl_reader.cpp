@@ -211,7 +211,8 @@ void read_stl_barriers(const BarrierSource& src, const Model& model, Barriers& o
     std::array<Vec3, 3> p;
     for (int k = 0; k < 3; ++k)
       p[k] = (rotate ? rotate_xyz_deg(t[k] * src.scale, src.rotate_deg) : t[k] * src.scale) + src.translate;
-    if (out.add(next_id, p[0], p[1], p[2], g, mat.young, mat.poisson, src.motion, src.thickness, temp)) {
+    if (out.add(next_id, p[0], p[1], p[2], g, src.rigid ? kRigidYoung : mat.young, mat.poisson, src.motion,
+                src.thickness, temp)) {
       out.material.back() = mat_index;
       ++next_id;
     } else ++dropped;  // collapsed by the transform

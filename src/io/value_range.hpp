@@ -34,8 +34,7 @@ struct Range {
 inline constexpr Range kAnyValue{};
 inline constexpr Range kPositive{0.0, std::numeric_limits<double>::infinity(), false, false};
 inline constexpr Range kNonNegative{0.0, std::numeric_limits<double>::infinity(), true, false};
-inline constexpr Range kUnitInterval{0.0, 1.0, true, true};       // [0, 1]
-inline constexpr Range kPoissonRange{0.0, 0.5, true, false};      // [0, 0.5)
-inline constexpr Range kRestitutionRange{0.0, 1.0, false, true};  // (0, 1]
+inline constexpr Range kUnitInterval{0.0, 1.0, true, true};   // [0, 1]
+inline constexpr Range kPoissonRange{0.0, 0.5, true, false};  // [0, 0.5)
 
 }  // namespace mpdem

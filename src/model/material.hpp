@@ -1,6 +1,8 @@
 #pragma once
 // A named material: the defaults a particle (or barrier) takes for every property its input
 // file does not give.
+#include <cmath>
+#include <limits>
 #include <string>
 
 namespace mpdem {
@@ -8,7 +10,7 @@ namespace mpdem {
 struct Material {
   std::string name;
   double density = 2500.0;       // kg/m^3
-  double young = 1e7;            // Pa
+  double young = 1e7;            // Pa (kRigidYoung: a rigid barrier material)
   double poisson = 0.3;          // - in [0, 0.5)
   double conductivity = 1.0;     // W/(m K)
   double heat_capacity = 800.0;  // J/(kg K)
@@ -19,5 +21,12 @@ struct Material {
   // CSV gave (model/material_variants.hpp): its index, or -1 for a material of the scene.
   int variant_of = -1;
 };
+
+// Young's modulus of a rigid barrier ([[barriers]] rigid = true)   [Pa]. An infinitely stiff
+// element adds no compliance to (51), so the particle's E and nu alone set the contact; a
+// material with it is made for barrier elements only (particle moduli are finite).
+inline constexpr double kRigidYoung = std::numeric_limits<double>::infinity();
+
+inline bool is_rigid(const Material& m) { return std::isinf(m.young); }
 
 }  // namespace mpdem

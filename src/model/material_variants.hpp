@@ -35,8 +35,10 @@ class MaterialVariants {
 };
 
 // Points every barrier element at a material whose E and nu are its own (Barriers::young,
-// poisson: the barrier CSV's per-row values or the source's material), adding variants, and
-// checks that every particle has a material of the model (particles get theirs when read).
+// poisson: the barrier CSV's per-row values or the source's material; a rigid source's E is
+// kRigidYoung, so its elements share a rigid variant with the material's other constants),
+// adding variants, and checks that every particle has a material of the model (particles get
+// theirs when read).
 void resolve_material_variants(Model& model, Particles& particles, Barriers& barriers, const std::string& source);
 
 }  // namespace mpdem

@@ -80,19 +80,25 @@ struct NearFieldParams {
 // The force law of a contact (docs/contact_model.md): Hertz-Mindlin (physics.md sections 5-6) or
 // the linear spring-dashpot with a Coulomb-capped tangential spring (section 13).
 enum class ContactLawKind : std::int64_t { Hertz, Linear };
+// How the tangential spring follows a changing stiffness (physics.md section 6): the thesis's total
+// spring f_t = -k_t(delta) s, or Mindlin's incremental df_t = -k_t(delta) ds (Yade, Kratos).
+enum class TangentialSpring : std::int64_t { Total, Incremental };
 
 // Coefficients of one contact kind (particle-particle or particle-barrier): the defaults of
 // every pair of materials.
 struct ContactLawParams {
   ContactLawKind law = ContactLawKind::Hertz;
-  std::optional<double> restitution;           // e in (0, 1]; calibrated damping (physics.md 5 Departure)
-  std::optional<double> damping_ratio;         // xi_n >= 0 used as written in (50); exclusive with e
-  double mu_static = 0.5;                      // -, static Coulomb coefficient
-  double mu_dynamic = 0.4;                     // -, dynamic Coulomb coefficient (<= mu_static)
-  double mu_rolling = 0.0;                     // -, rolling resistance coefficient
-  double tangential_damping = 0.0;             // xi_t, tangential damping ratio (67)
+  std::optional<double> restitution;    // e in [kMinRestitution, 1]; calibrated damping (physics.md 5 Departure)
+  std::optional<double> damping_ratio;  // xi_n >= 0 used as written in (50); exclusive with e
+  double mu_static = 0.5;               // -, static Coulomb coefficient
+  double mu_dynamic = 0.4;              // -, dynamic Coulomb coefficient (<= mu_static)
+  double mu_rolling = 0.0;              // -, rolling resistance coefficient
+  // xi_t, tangential damping ratio (67); unset: the normal ratio xi_n (calibrated from the
+  // restitution, or damping_ratio), as LIGGGHTS and Kratos damp the tangential spring.
+  std::optional<double> tangential_damping;
   double stiffness_normal = 0.0;               // N/m, k_n of the linear law (required for it, > 0)
   std::optional<double> stiffness_tangential;  // N/m, k_t of the linear law (default 2/7 k_n)
+  TangentialSpring tangential_spring = TangentialSpring::Total;
 };
 
 // [[contact.pair]]: overrides of the defaults for the contacts between two materials (a
@@ -104,6 +110,7 @@ struct ContactPairParams {
   std::optional<ContactLawKind> law;
   std::optional<double> restitution, damping_ratio, mu_static, mu_dynamic, mu_rolling, tangential_damping;
   std::optional<double> stiffness_normal, stiffness_tangential;
+  std::optional<TangentialSpring> tangential_spring;
   std::size_t line = 0;  // line of the entry, for messages
 };
 

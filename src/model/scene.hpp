@@ -31,6 +31,7 @@ struct BarrierSource {
   std::filesystem::path stl;          // STL file (absolute), or empty
   std::string group;                  // group name ("" = file stem)
   std::string material;               // material giving young/poisson when the CSV has none
+  bool rigid = false;                 // infinitely stiff: elements get E = kRigidYoung (material.hpp)
   MotionLaw motion;                   // default motion law for elements without motion columns
   double thickness = 0.0;             // m, fictitious thickness t_b
   std::optional<double> temperature;  // K, fixed temperature (none = insulated)

@@ -6,9 +6,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <mutex>
 #include <stdexcept>
-#include <string>
 
 namespace mpdem {
 namespace {
@@ -49,7 +49,7 @@ constexpr double kFirstStep = 1e-12;  // first step
 constexpr double kMinStep = 1e-10;    // resolution of the separation instant: the force is ~0
                                       // there, so x' errs by ~h^2 |dF/dtau|; much finer steps
                                       // drown in rounding where x^(5/4) ~ -c x'
-constexpr double kMaxTime = 1e4;      // guard: far beyond any e >= 1e-3 collision
+constexpr double kMaxTime = 1e4;      // guard: far beyond any e >= kMinRestitution collision
 
 }  // namespace
 
@@ -110,8 +110,14 @@ double solve_damping_ratio(double e) {
 }  // namespace
 
 double damping_ratio_for_restitution(double e) {
-  if (!(e >= 1e-3 && e <= 1.0))
-    throw std::invalid_argument("damping_ratio_for_restitution: e must be in [1e-3, 1], got " + std::to_string(e));
+  if (!(e >= kMinRestitution && e <= 1.0)) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "damping_ratio_for_restitution: e must be in [%g, 1] (no finite damping ratio gives e = 0; "
+                  "give a damping ratio instead), got %.9g",
+                  kMinRestitution, e);
+    throw std::invalid_argument(text);
+  }
   if (e == 1.0) return 0.0;
   // Small cache: a run asks for a handful of distinct e (one per contact class / material pair).
   static std::mutex mutex;

@@ -21,16 +21,22 @@
 
 namespace mpdem {
 
+// Smallest restitution the calibration accepts (the scene reader refuses smaller ones). No
+// finite damping ratio gives e = 0: strongly damped, the pair separates just after the deepest
+// overlap and e -> 5 / (24 xi^2) (xi = 14.35 at e = 1e-3), so e -> 0 needs xi -> infinity; a
+// smaller e would rebound at under 1/1000 of the impact speed, practically not at all.
+inline constexpr double kMinRestitution = 1e-3;
+
 // Rebound restitution of the dimensionless collision above for damping ratio xi >= 0
 // (xi = 0 -> 1). Integrated with RK4 on a graded step (fine near first touch, where x^(1/4) is
 // not smooth) and the clamp instant located by step halving; accuracy ~1e-10.
 double restitution_for_damping_ratio(double xi);
 
 // The damping ratio xi_n that, used in (50) with the zero clamp, rebounds a binary Hertz
-// collision with restitution e (Departure of section 5). e in (0, 1]; e = 1 -> 0.
+// collision with restitution e (Departure of section 5). e in [kMinRestitution, 1]; e = 1 -> 0.
 // Root of restitution_for_damping_ratio(xi) = e by bracketed regula falsi (Illinois) to ~1e-12
 // in e. Results are cached (thread-safe); meant for setup, not per contact.
-// Throws std::invalid_argument for e outside [1e-3, 1].
+// Throws std::invalid_argument for e outside [kMinRestitution, 1].
 double damping_ratio_for_restitution(double e);
 
 }  // namespace mpdem

@@ -69,9 +69,9 @@ enum class SlipDecision : std::int64_t { Free, Stick, Slip };
 // branch).
 inline Vec3 pick(bool c, const Vec3& a, const Vec3& b) { return {c ? a.x : b.x, c ? a.y : b.y, c ? a.z : b.z}; }
 
-inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Vec3& v_t, double k_t, double d_t,
-                                         double mu_s, double mu_d, double f_n,
-                                         SlipDecision decide = SlipDecision::Free) {
+// inv_k_t: 1/k_t (0 for k_t = 0), given by a caller that needs it too.
+inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Vec3& v_t, double k_t, double inv_k_t,
+                                         double d_t, double mu_s, double mu_d, double f_n, SlipDecision decide) {
   TangentialResult out;
   const Vec3 s_tent = s + ds;                        // (58)
   const Vec3 f_trial = -(k_t * s_tent + d_t * v_t);  // (57)
@@ -86,12 +86,19 @@ inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Ve
   const Vec3 t = f_trial * (1.0 / std::sqrt(stick ? 1.0 : ft2));  // (70)
   const double f_slide = mu_d * std::abs(f_n);
   const Vec3 f_slip = f_slide * t;
-  const double s_slip = k_t > 0.0 ? -f_slide / (k_t > 0.0 ? k_t : 1.0) : 0.0;  // (69), dynamic limit
-  out.force = pick(stick, f_trial, f_slip);                                    // stick (68) or slide
+  const double s_slip = -f_slide * inv_k_t;  // (69), dynamic limit
+  out.force = pick(stick, f_trial, f_slip);  // stick (68) or slide
   out.spring = pick(stick, s_tent, s_slip * t);
   out.slipped = !stick;
   out.dissipated_power = stick ? d_t * norm2(v_t) : -dot(f_slip, v_t);
   return out;
+}
+
+inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Vec3& v_t, double k_t, double d_t,
+                                         double mu_s, double mu_d, double f_n,
+                                         SlipDecision decide = SlipDecision::Free) {
+  return tangential_force(s, ds, v_t, k_t, k_t > 0.0 ? 1.0 / (k_t > 0.0 ? k_t : 1.0) : 0.0, d_t, mu_s, mu_d, f_n,
+                          decide);
 }
 
 }  // namespace mpdem

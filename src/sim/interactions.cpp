@@ -221,8 +221,21 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   stats_.contacts_pb = pb.contacts;
   stats_.elastic_energy = pp.elastic_energy + pb.elastic_energy;
   if (req.commit) {
-    stats_.damping_dissipated += req.dt * (pp.damping_power + pb.damping_power);
-    stats_.friction_dissipated += req.dt * (pp.friction_power + pb.friction_power);
+    // The normal dashpots' and rolling resistance's powers by the trapezoid over the step (the
+    // start power is the last commit's), the order of accuracy of both integrators; the
+    // tangential spring-dashpot by what each contact took in the step (ContactResult), under
+    // friction when it slid, under damping when it stuck; and under friction, what the springs'
+    // stored energy lost between the last commit and this step's stiffness k_t(delta), with the
+    // springs of contacts that ended (the total spring keeps s as k_t changes, the incremental
+    // one k_t s: neither keeps 1/2 k_t |s|^2).
+    const double damping = pp.damping_power + pb.damping_power, rolling = pp.friction_power + pb.friction_power;
+    const double restiffened = stats_.spring_energy - (pp.spring_before + pb.spring_before);
+    stats_.damping_dissipated += 0.5 * req.dt * (stats_.damping_power + damping) + pp.sticking_loss + pb.sticking_loss;
+    stats_.friction_dissipated += 0.5 * req.dt * (stats_.rolling_power + rolling) + pp.sliding_loss + pb.sliding_loss +
+                                  restiffened;
+    stats_.damping_power = damping;
+    stats_.rolling_power = rolling;
+    stats_.spring_energy = pp.spring_after + pb.spring_after;
   }
 }
 
@@ -251,6 +264,9 @@ void for_each_stat(S& s, F&& f) {
   f(s.elastic_energy);
   f(s.damping_dissipated);
   f(s.friction_dissipated);
+  f(s.damping_power);
+  f(s.rolling_power);
+  f(s.spring_energy);
   f(s.rebuilds);
   f(s.near_field_energy);
   f(s.heat_to_barriers);
@@ -258,7 +274,7 @@ void for_each_stat(S& s, F&& f) {
   f(s.heat_radiated);
 }
 // A field added to InteractionStats must be added to for_each_stat (and is then a format change).
-static_assert(sizeof(InteractionStats) == 10 * 8, "InteractionStats changed: update for_each_stat");
+static_assert(sizeof(InteractionStats) == 13 * 8, "InteractionStats changed: update for_each_stat");
 // Reads one section with `read(BinaryReader&)`, which must consume it whole.
 template <class F>
 void read_section(CheckpointReader& r, const std::string& name, F&& read) {

@@ -32,7 +32,10 @@ struct InteractionStats {
   std::size_t contacts_pb = 0;       // particle-barrier contacts at the last evaluation
   double elastic_energy = 0.0;       // J, Hertz + tangential springs at the last evaluation
   double damping_dissipated = 0.0;   // J, cumulative over committed steps
-  double friction_dissipated = 0.0;  // J, cumulative over committed steps
+  double friction_dissipated = 0.0;  // J, cumulative over committed steps (sliding and rolling)
+  double damping_power = 0.0;        // W, dashpots, at the last committed evaluation
+  double rolling_power = 0.0;        // W, rolling resistance, at the last committed evaluation
+  double spring_energy = 0.0;        // J, the tangential springs' energy at the last committed evaluation
   std::uint64_t rebuilds = 0;        // neighbour list rebuilds
   double near_field_energy = 0.0;    // J, potential of the near-field pairs within the cutoff
   // Thermal bookkeeping (physics.md section 8), cumulative over committed steps with the

@@ -20,7 +20,7 @@ struct Barriers {
   std::vector<double> area;              // m^2
   std::vector<int> group;                // index into group_names
   std::vector<int> material;             // index into Model::materials (-1 until the scene assigns one)
-  std::vector<double> young;             // Pa, the material's (model/material_variants.hpp)
+  std::vector<double> young;             // Pa, the material's (model/material_variants.hpp); +inf: rigid
   std::vector<double> poisson;           // -, the material's
   std::vector<double> thickness;         // m, fictitious thickness t_b (110)
   std::vector<double> temperature;       // K, fixed temperature; NaN = thermally insulated

@@ -7,6 +7,8 @@
 namespace mpdem::validate {
 
 double effective_modulus(double Ei, double nui, double Ej, double nuj) {
+  // A rigid wall (E = +inf, [[barriers]] rigid = true) adds no compliance; (51) would give inf/inf.
+  if (std::isinf(Ej)) return Ei / (1.0 - nui * nui);
   return Ei * Ej / (Ej * (1.0 - nui * nui) + Ei * (1.0 - nuj * nuj));
 }
 

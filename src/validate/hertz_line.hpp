@@ -20,11 +20,11 @@ struct LineSphere {
 
 struct LineWall {
   double x = 0.0;        // m, wall surface; the first sphere lies above it (x > wall)
-  double young = 0.0;    // Pa
+  double young = 0.0;    // Pa (+inf: rigid)
   double poisson = 0.0;  // -
 };
 
-// E* of two bodies, (51)   [Pa]
+// E* of two bodies, (51); Ej = +inf (a rigid wall) gives the limit Ei/(1 - nui^2)   [Pa]
 double effective_modulus(double Ei, double nui, double Ej, double nuj);
 
 class HertzLine {

@@ -49,9 +49,9 @@ TEST(HertzLaw, EvaluatorEqualsTheSingleLawOracle) {
     c.increment = {};
     c.vt = {0.0, 1e-2, 0.0};
     const ContactResult dashpot = evaluate_contact<HertzLaw>(law, c);
-    const double d_t = params.tangential_damping > 0.0
-                           ? tangential_damping_coefficient(params.tangential_damping, m, tangential_stiffness(G, r, d))
-                           : 0.0;
+    const double d_t = params.tangential_damping > 0.0 ? tangential_damping_coefficient(*params.tangential_damping, m,
+                                                                                        tangential_stiffness(G, r, d))
+                                                       : 0.0;
     if (d_t > 0.0) EXPECT_LT(rel(-dashpot.ft.y / c.vt.y, d_t), 1e-14);
     else EXPECT_EQ(dashpot.ft.y, 0.0);
   }

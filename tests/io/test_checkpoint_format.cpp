@@ -78,10 +78,12 @@ TEST(CheckpointFormat, MessagesNameTheProblem) {
   bad[bad.size() - 8] ^= 1;  // inside the particles/x payload
   EXPECT_NE(refusal(bad).find("section 'particles/x' is damaged"), std::string::npos) << refusal(bad);
   std::vector<char> old = {'M', 'P', 'D', 'E', 'M', 'C', 'K', '2', 0, 0, 0, 0};
-  EXPECT_NE(refusal(old).find("it has checkpoint format 2, this mpdem reads format 3"), std::string::npos);
+  const std::string reads = "this mpdem reads format " + std::to_string(kCheckpointFormat);
+  EXPECT_NE(refusal(old).find("it has checkpoint format 2, " + reads), std::string::npos);
   std::vector<char> newer = sample();
-  newer[8] = 4;
-  EXPECT_NE(refusal(newer).find("it has checkpoint format 4, this mpdem reads format 3"), std::string::npos);
+  newer[8] = static_cast<char>(kCheckpointFormat + 1);
+  EXPECT_NE(refusal(newer).find("it has checkpoint format " + std::to_string(kCheckpointFormat + 1) + ", " + reads),
+            std::string::npos);
   CheckpointWriter w;
   w.section("run", [](BinaryWriter& b) { b.value(1.0); });
   w.section("future", [](BinaryWriter& b) { b.value(1.0); });

@@ -145,19 +145,22 @@ inline ContactResult tangential_contact(double mu_s, double mu_d, TangentialSpri
   const bool positive = n.k_t > 0.0;
   const double inv_k_t = positive ? 1.0 / (positive ? n.k_t : 1.0) : 0.0;  // m/N
   const bool scaled = (form == TangentialSpring::Incremental) & positive;
-  const double kept = scaled ? n.k_t : 1.0;                                  // stored = kept s
-  const Vec3 s = project_spring(spring, normal) * (scaled ? inv_k_t : 1.0);  // m
+  const double kept = scaled ? n.k_t : 1.0;  // stored = kept s
+  const Vec3 projected = project_spring(spring, normal);
+  const double to_m = scaled ? inv_k_t : 1.0;
+  const Vec3 s{to_m * projected.x, to_m * projected.y, to_m * projected.z};  // m
   const TangentialResult t = tangential_force(s, increment, vt, n.k_t, inv_k_t, n.d_t, mu_s, mu_d, n.fn_limit, decide);
   // Component by component: a whole-Vec3 copy between the two result records keeps GCC from
   // splitting them into scalars, and the kernels' loops would not vectorise.
   out.ft.x = t.force.x, out.ft.y = t.force.y, out.ft.z = t.force.z;
   out.spring.x = kept * t.spring.x, out.spring.y = kept * t.spring.y, out.spring.z = kept * t.spring.z;
   out.slipped = t.slipped;
-  out.spring_energy = 0.5 * n.k_t * norm2(t.spring);
-  out.spring_energy_before = 0.5 * n.k_t * norm2(s);
+  out.spring_energy = 0.5 * n.k_t * (t.spring.x * t.spring.x + t.spring.y * t.spring.y + t.spring.z * t.spring.z);
+  out.spring_energy_before = 0.5 * n.k_t * (s.x * s.x + s.y * s.y + s.z * s.z);
   out.energy = n.energy + out.spring_energy;
   out.damping = n.damping;
-  out.tangential_loss = -dot(t.force, increment) - (out.spring_energy - out.spring_energy_before);
+  const double work = -(out.ft.x * increment.x + out.ft.y * increment.y + out.ft.z * increment.z);  // J
+  out.tangential_loss = work - (out.spring_energy - out.spring_energy_before);
   return out;
 }
 

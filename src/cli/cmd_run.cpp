@@ -3,12 +3,15 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_folder.hpp"
+#include "cli/run_paths.hpp"
 #include "cli/scene_summary.hpp"
 #include "sim/simulation.hpp"
 
 namespace mpdem::cli {
 
 int run_command(const RunArgs& args) {
+  require_not_a_folder(args.scene, "scene file");
+  if (!args.resume.empty()) require_not_a_folder(args.resume, "checkpoint file", "checkpoint.bin");
   if (args.threads > 0) omp_set_num_threads(args.threads);
   Scene scene = load_scene(args.scene);  // InputError propagates to main: exit 2, nothing written
   warn_about_time_step(scene);
@@ -20,9 +23,15 @@ int run_command(const RunArgs& args) {
   Simulation sim(std::move(scene), opt);
   if (!args.resume.empty()) sim.resume_from(args.resume);
   const RunSummary s = sim.run();
-  if (!args.quiet)
+  if (!args.quiet) {
     fmt::print(stderr, "{} steps, {} interaction evaluations, {} particles removed\n", s.steps, s.evaluations,
                s.removed);
+    fmt::print(stderr, "{}\n", summary_line(s));
+  }
+  // Even with --quiet: the run is complete but its results are suspect. The exit status stays 0
+  // (every output was written; 1 means the run could not finish); warnings.txt keeps the warning
+  // beside the results.
+  if (const std::string w = drift_warning(s); !w.empty()) fmt::print(stderr, "\n{}\n", w);
   return 0;
 }
 

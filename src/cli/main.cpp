@@ -7,6 +7,7 @@
 
 #include "cli/bench_command.hpp"
 #include "cli/commands.hpp"
+#include "cli/run_paths.hpp"
 #include "cli/tool_commands.hpp"
 #include "io/input_error.hpp"
 #include "sim/run_error.hpp"
@@ -17,12 +18,17 @@ int dispatch(int argc, char** argv) {
   CLI::App app{"mpdem - multiphysics soft-sphere Discrete Element Method engine"};
   app.set_version_flag("--version", std::string("mpdem ") + MPDEM_VERSION);
   app.require_subcommand(1);
+  // Command-line errors read like the other errors (set before the subcommands, which inherit it).
+  app.failure_message(
+      [](const CLI::App* a, const CLI::Error& e) { return "error: " + CLI::FailureMessage::simple(a, e); });
+  const CLI::Validator thread_count([](std::string& text) { return mpdem::cli::check_thread_count(text); },
+                                    "1.." + std::to_string(mpdem::cli::kMaxThreads));
 
   mpdem::cli::RunArgs run;
   auto* run_cmd = app.add_subcommand("run", "run a scene");
   run_cmd->add_option("scene", run.scene, "scene file (TOML)")->required();
   run_cmd->add_option("--output,-o", run.output, "output folder (default: the scene's [output] dir)");
-  run_cmd->add_option("--threads,-t", run.threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  run_cmd->add_option("--threads,-t", run.threads, "OpenMP threads (default: all cores)")->check(thread_count);
   run_cmd->add_flag("--quiet,-q", run.quiet, "no progress on stderr");
   run_cmd->add_flag("--overwrite", run.overwrite, "replace the outputs of an earlier run in the output folder");
   run_cmd->add_option("--resume", run.resume, "continue from a checkpoint written by an earlier run of this scene");
@@ -39,7 +45,7 @@ int dispatch(int argc, char** argv) {
   bench_cmd->add_option("--integrator", bench.integrator, "verlet or trapezoidal")
       ->check(CLI::IsMember({"verlet", "trapezoidal"}));
   bench_cmd->add_option("--phi", bench.phi, "trapezoidal weight")->check(CLI::Range(0.0, 1.0));
-  bench_cmd->add_option("--threads,-t", bench.threads, "OpenMP threads")->check(CLI::PositiveNumber);
+  bench_cmd->add_option("--threads,-t", bench.threads, "OpenMP threads")->check(thread_count);
   bench_cmd->add_option("--steps", bench.steps, "timed steps (0: 5000 for <= 50k particles, else 2000)")
       ->check(CLI::NonNegativeNumber);
   bench_cmd->add_option("--relax", bench.relax, "untimed steps first")->check(CLI::NonNegativeNumber);
@@ -59,7 +65,10 @@ int dispatch(int argc, char** argv) {
   }
   try {
     if (*run_cmd) return mpdem::cli::run_command(run);
-    if (*check_cmd) return mpdem::cli::check_command(check_scene);
+    if (*check_cmd) {
+      mpdem::cli::require_not_a_folder(check_scene, "scene file");
+      return mpdem::cli::check_command(check_scene);
+    }
     if (*bench_cmd) return mpdem::cli::bench_command(bench);
     if (tool) return tool();
   } catch (const mpdem::InputError& e) {
@@ -68,8 +77,8 @@ int dispatch(int argc, char** argv) {
   } catch (const mpdem::Interrupted& e) {
     fmt::print(stderr, "\nstopped by signal {} at t = {:.9g} s (step {}).\n", e.signal, e.time, e.step);
     if (!e.checkpoint.empty())
-      fmt::print(stderr, "checkpoint written to {}\nresume with: mpdem run {} --resume {}\n", e.checkpoint.string(),
-                 run.scene.string(), e.checkpoint.string());
+      fmt::print(stderr, "checkpoint written to {}\nresume with: {}\n", e.checkpoint.string(),
+                 mpdem::cli::resume_command(argc > 0 ? argv[0] : "mpdem", run, e.checkpoint));
     return 128 + e.signal;
   } catch (const mpdem::RunError& e) {
     fmt::print(stderr, "\nerror: {}\n", e.what());

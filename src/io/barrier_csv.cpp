@@ -10,6 +10,8 @@
 
 #include "io/csv_table.hpp"
 #include "io/input_error.hpp"
+#include "geometry/triangle_check.hpp"
+#include "model/derived_limits.hpp"
 
 namespace mpdem {
 
@@ -63,7 +65,7 @@ Vec3 vec_or(const CsvTable& t, const CsvRow& row, const std::array<int, kColumns
 
 void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& source, const Model& model,
                       Barriers& out) {
-  const CsvTable t = CsvTable::read(file);
+  const CsvTable t = CsvTable::read(file, kColumns.size());
   t.check_known(kColumns);
   for (std::string_view req : {"x1", "y1", "z1", "x2", "y2", "z2", "x3", "y3", "z3"}) t.require(req);
   const auto c = column_indices(t);
@@ -121,9 +123,28 @@ void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& so
     if (!t.missing(row, c[W1])) law.w1 = t.number(row, c[W1]);
     if (!t.missing(row, c[W2])) law.w2 = t.number(row, c[W2]);
 
-    // Finite coordinates can still overflow the area (|x| ~ 1e155 and up): no usable normal.
-    if (!std::isfinite(norm(cross(p2 - p1, p3 - p1))))
-      throw InputError(t.file(), row.line, "", "triangle too large: its area overflows a double");
+    // Finite coordinates can still overflow an edge, the centroid or the area (|x| ~ 1e77 and
+    // up), leaving no usable normal; the coordinate of largest magnitude is named.
+    const Vec3 p[3] = {p1, p2, p3};
+    if (const TriangleCheck tc = check_triangle(p1, p2, p3); tc.fault == TriangleFault::NonFinite) {
+      const double x[9] = {p1.x, p1.y, p1.z, p2.x, p2.y, p2.z, p3.x, p3.y, p3.z};  // the columns X1..Z3
+      int worst = 0;
+      for (int k = 1; k < 9; ++k)
+        if (std::abs(x[k]) > std::abs(x[worst])) worst = k;
+      t.fail(row, c[X1 + worst], "triangle too large: " + tc.what + "; expected coordinates whose area is finite");
+    }
+    // The motion law moves the element by B at t = 0: the moved vertices must stay finite.
+    for (int k = 0; k < 3; ++k)
+      if (!isfinite(p[k] + law.displacement(0.0))) {
+        const int col = !t.missing(row, c[BX]) ? c[BX] : (!t.missing(row, c[BY]) ? c[BY] : c[BZ]);
+        const std::string what = "vertex " + std::to_string(k + 1) + " " + vec_text(p[k]) +
+                                 " moved by B = " + vec_text(law.B) + " at t = 0 overflows; expected finite positions";
+        if (t.missing(row, col)) throw InputError(t.file(), row.line, "", what + " (B of [[barriers]] motion)");
+        t.fail(row, col, what);
+      }
+    if (!source.rigid)
+      if (const std::string pr = contact_moduli_problem(E, nu); !pr.empty())
+        t.fail(row, !t.missing(row, c[YOUNG]) || t.missing(row, c[POISSON]) ? c[YOUNG] : c[POISSON], pr);
     const int g = out.group_index(group);
     if (!out.add(bid, p1, p2, p3, g, E, nu, law, source.thickness, temp))
       throw InputError(t.file(), row.line, "", "degenerate triangle (zero area: its three vertices are collinear)");

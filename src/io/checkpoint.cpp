@@ -2,7 +2,8 @@
 // resumed run is bitwise identical to an uninterrupted one with the same thread count - the
 // particle arrays in their current order (with the rates of the accepted state), the
 // neighbour lists' build positions (rebuilds then happen at the same steps), contact history,
-// statistics, the adaptive step and the output series. The file is a sequence of named,
+// statistics, the adaptive step, the output series and the run record of the end-of-run summary
+// (drift, deepest contact). The file is a sequence of named,
 // checksummed sections (io/checkpoint_format.hpp).
 #include <fmt/core.h>
 
@@ -46,6 +47,7 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
     for_each_counter(barriers, materials, time_, steps_, evaluations_, removed_, redone_, dt_, last_balance_,
                      last_active_, energy_checked_, [&](auto& v) { o.value(v); });
   });
+  w.section("run_record", [&](BinaryWriter& o) { RunRecord::for_each_field(record_, [&](auto& v) { o.value(v); }); });
   // One section per particle array, by name: an array added to Particles adds a section, and a
   // checkpoint without it is refused naming it.
   scene_.particles.for_each_array([&](const char* name, auto& a) {
@@ -59,6 +61,8 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
 
 void Simulation::resume_from(const std::filesystem::path& file) {
   const std::string name = file.string();
+  if (!std::filesystem::exists(file)) throw InputError(name, 0, "", "the checkpoint file does not exist");
+  if (std::filesystem::is_directory(file)) throw InputError(name, 0, "", "is a directory, not a checkpoint file");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(name, 0, "", "cannot open the checkpoint file");
   std::stringstream ss;
@@ -77,6 +81,9 @@ void Simulation::resume_from(const std::filesystem::path& file) {
                        last_active_, energy_checked_, [&](auto& v) { v = s.value<std::decay_t<decltype(v)>>(); });
       if (barriers != scene_.barriers.size() || materials != scene_.model.materials.size())
         throw std::runtime_error("it was written for a scene with other barriers or materials");
+    });
+    read("run_record", [&](BinaryReader& s) {
+      RunRecord::for_each_field(record_, [&](auto& v) { v = s.value<std::decay_t<decltype(v)>>(); });
     });
     Particles& p = scene_.particles;
     p.for_each_array([&](const char* array, auto& a) {

@@ -19,7 +19,7 @@
 
 namespace mpdem {
 
-inline constexpr std::uint32_t kCheckpointFormat = 4;
+inline constexpr std::uint32_t kCheckpointFormat = 5;
 
 class CheckpointWriter {
  public:

@@ -3,10 +3,11 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
-#include <system_error>
+#include <limits>
 
 #include "io/closest_name.hpp"
 #include "io/input_error.hpp"
+#include "io/input_file.hpp"
 
 namespace mpdem {
 
@@ -19,10 +20,16 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-std::vector<std::string> split_fields(std::string_view line) {
+// The fields of `line`, at most `max_fields` of them; `more` tells whether the line has more.
+std::vector<std::string> split_fields(std::string_view line, std::size_t max_fields, bool& more) {
   std::vector<std::string> out;
   std::size_t start = 0;
+  more = false;
   for (;;) {
+    if (out.size() == max_fields) {
+      more = true;
+      return out;
+    }
     const std::size_t comma = line.find(',', start);
     out.emplace_back(trim(line.substr(start, comma == std::string_view::npos ? line.npos : comma - start)));
     if (comma == std::string_view::npos) return out;
@@ -30,27 +37,60 @@ std::vector<std::string> split_fields(std::string_view line) {
   }
 }
 
+// Reads the next line into `buf` without reading more than CsvTable::kMaxLineLength characters
+// of it: Line::TooLong leaves the rest of the line unread.
+enum class Line { Read, End, TooLong };
+Line next_line(std::istream& in, std::string& buf, std::string_view& line) {
+  buf.resize(CsvTable::kMaxLineLength + 1);  // + the terminating NUL getline stores
+  in.getline(buf.data(), static_cast<std::streamsize>(buf.size()));
+  const auto n = static_cast<std::size_t>(in.gcount());
+  if (in.eof()) {
+    line = std::string_view(buf.data(), n);
+    return n == 0 ? Line::End : Line::Read;
+  }
+  if (in.fail()) {  // the buffer filled up before the newline
+    line = std::string_view(buf.data(), n);
+    return Line::TooLong;
+  }
+  line = std::string_view(buf.data(), n - 1);  // the newline was counted, not stored
+  return Line::Read;
+}
+
 }  // namespace
 
-CsvTable CsvTable::read(const std::filesystem::path& file) {
+CsvTable CsvTable::read(const std::filesystem::path& file, std::size_t max_columns) {
   CsvTable t;
   t.file_ = file.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw InputError(t.file_, 0, "", "file '" + t.file_ + "' does not exist (or is not a regular file)");
+  if (const std::string why = input_file_problem(file); !why.empty())
+    throw InputError(t.file_, 0, "", "file '" + t.file_ + "' " + why);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(t.file_, 0, "", "cannot open file '" + t.file_ + "'");
 
-  std::string raw;
+  std::string buf;
+  std::string_view line;
   std::size_t line_no = 0;
-  while (std::getline(in, raw)) {
+  for (;;) {
+    const Line got = next_line(in, buf, line);
+    if (got == Line::End) break;
     ++line_no;
-    std::string_view line = raw;
     if (line_no == 1 && line.starts_with("\xEF\xBB\xBF")) line.remove_prefix(3);  // UTF-8 BOM
     line = trim(line);
+    if (got == Line::TooLong) {
+      if (!line.starts_with('#'))
+        throw InputError(t.file_, line_no, "",
+                         "line longer than the limit of " + std::to_string(kMaxLineLength) + " characters");
+      in.clear();  // a long comment: skip the rest of it
+      in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+      continue;
+    }
     if (line.empty() || line.front() == '#') continue;
-    std::vector<std::string> fields = split_fields(line);
+    bool more = false;
     if (t.columns_.empty()) {
+      std::vector<std::string> fields = split_fields(line, max_columns + kFieldMargin, more);
+      if (more)
+        throw InputError(t.file_, line_no, "",
+                         "more than " + std::to_string(fields.size()) + " columns in the header; at most " +
+                             std::to_string(max_columns) + " columns are known");
       t.header_line_ = line_no;
       for (std::size_t c = 0; c < fields.size(); ++c) {
         if (fields[c].empty())
@@ -62,10 +102,12 @@ CsvTable CsvTable::read(const std::filesystem::path& file) {
       t.columns_ = std::move(fields);
       continue;
     }
-    if (fields.size() != t.columns_.size())
+    std::vector<std::string> fields = split_fields(line, t.columns_.size() + kFieldMargin, more);
+    if (more || fields.size() != t.columns_.size())
       throw InputError(t.file_, line_no, "",
                        "expected " + std::to_string(t.columns_.size()) + " fields as in the header (line " +
-                           std::to_string(t.header_line_) + "), got " + std::to_string(fields.size()));
+                           std::to_string(t.header_line_) + "), got " + (more ? "more than " : "") +
+                           std::to_string(fields.size()));
     t.rows_.push_back({line_no, std::move(fields)});
   }
   if (t.columns_.empty()) throw InputError(t.file_, 0, "", "empty file: expected a header row of column names");

@@ -23,9 +23,19 @@ struct CsvRow {
 
 class CsvTable {
  public:
-  // Reads the whole file. Throws InputError for a missing or empty file, an empty or duplicate
-  // column name, or a row whose field count differs from the header's.
-  static CsvTable read(const std::filesystem::path& file);
+  // Longest line read (characters, without the newline): a longer one is refused before it is
+  // read whole, except a comment, which is skipped.
+  static constexpr std::size_t kMaxLineLength = 65536;
+  // Fields split beyond the header's column count (the header's: beyond `max_columns`) before
+  // a line is refused: enough to report a small miscount exactly, few enough that a runaway row
+  // is refused without splitting all of it.
+  static constexpr std::size_t kFieldMargin = 8;
+
+  // Reads the whole file. Throws InputError for a missing or empty file, a line longer than
+  // kMaxLineLength, a header of more than max_columns + kFieldMargin columns (readers pass the
+  // number of columns they know), an empty or duplicate column name, or a row whose field count
+  // differs from the header's.
+  static CsvTable read(const std::filesystem::path& file, std::size_t max_columns = 256);
 
   const std::string& file() const { return file_; }
   std::size_t header_line() const { return header_line_; }

@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "io/input_file.hpp"
 #include "io/toml_section.hpp"
 
 namespace mpdem {
@@ -122,9 +123,9 @@ GenerateSpec read_generate_spec(const std::string& file, const toml::table& tabl
     spec.region.shape = RegionShape::Mesh;
     const std::string name = g.require(g.string("mesh"), "mesh");
     spec.region.mesh = (dir / std::filesystem::path(name)).lexically_normal();
-    std::error_code ec;
-    if (name.empty() || !std::filesystem::is_regular_file(spec.region.mesh, ec))
-      g.fail("mesh", "file '" + spec.region.mesh.string() + "' does not exist");
+    if (name.empty()) g.fail("mesh", "expected a file name, got an empty string");
+    if (const std::string why = input_file_problem(spec.region.mesh); !why.empty())
+      g.fail("mesh", "file '" + spec.region.mesh.string() + "' " + why);
     region_keys = {"mesh"};
   } else {
     g.fail("region", "expected \"box\", \"cylinder\" or \"mesh\", got \"" + region + "\"");

@@ -108,11 +108,16 @@ void OutputManager::restore(BinaryReader& r) {
   }
 }
 
-bool OutputManager::due(Series& s, double t, double dt, bool force) {
+bool OutputManager::due(Series& s, double t, double dt, double end, bool force) {
   if (s.every <= 0.0) return false;
-  const double slack = 0.5 * dt;                         // round-off in the accumulated time must not skip a snapshot
-  if (s.count > 0 && t <= s.last + slack) return false;  // already written at this time
-  if (!force && t + slack < s.next) return false;
+  const double slack = 0.5 * dt;                 // round-off in the accumulated time must not skip a snapshot
+  if (s.count > 0 && t <= s.last) return false;  // already written at this time
+  if (!force) {
+    if (s.count > 0 && t <= s.last + slack) return false;
+    if (t + slack < s.next) return false;
+    // Due within half a step of the end: the end's own snapshot is that one, at the final time.
+    if (s.next >= end - slack) return false;
+  }
   s.next = (std::floor((t + slack) / s.every) + 1.0) * s.every;
   s.last = t;
   ++s.count;
@@ -120,20 +125,21 @@ bool OutputManager::due(Series& s, double t, double dt, bool force) {
 }
 
 void OutputManager::snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force) {
-  if (particles_pvd_ && due(particles_vtu_, t, dt, force)) {
+  const double end = model_.params.time.duration;
+  if (particles_pvd_ && due(particles_vtu_, t, dt, end, force)) {
     const std::string name = fmt::format("particles/particles_{:06d}.vtu", particles_vtu_.count - 1);
     write_particles_vtu(dir_ / name, p, t);
     particles_pvd_->add(t, name);
   }
-  if (barriers_pvd_ && due(barriers_vtu_, t, dt, force)) {
+  if (barriers_pvd_ && due(barriers_vtu_, t, dt, end, force)) {
     const std::string name = fmt::format("barriers/barriers_{:06d}.vtu", barriers_vtu_.count - 1);
     write_barriers_vtu(dir_ / name, b, t);
     barriers_pvd_->add(t, name);
   }
-  if (particles_csv_.every > 0.0 && due(particles_csv_, t, dt, force)) {
+  if (particles_csv_.every > 0.0 && due(particles_csv_, t, dt, end, force)) {
     write_particles_csv(dir_ / fmt::format("particles_csv/particles_{:06d}.csv", particles_csv_.count - 1), p, t);
   }
-  if (groups_ && due(barrier_log_, t, dt, force)) {
+  if (groups_ && due(barrier_log_, t, dt, end, force)) {
     std::vector<double> row(1 + 7 * group_count_, 0.0);
     row[0] = t;
     for (std::size_t e = 0; e < b.size(); ++e) {

@@ -39,7 +39,9 @@ class OutputManager {
                 std::optional<double> resume_time = std::nullopt);
   ~OutputManager();
 
-  // Writes whatever is due at time t (force = write every snapshot output now, e.g. at the end).
+  // Writes whatever is due at time t (force = write every snapshot output now: the start and the
+  // end of the run, which is written at the final time even when a periodic snapshot falls within
+  // half a step of it).
   void snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force);
   void global_log(const GlobalLogRow& row, const Particles& p, const InteractionStats& stats);
   void removed(std::int64_t id, double t, const Vec3& x);
@@ -59,7 +61,9 @@ class OutputManager {
   // Checkpoints hold Series byte for byte: a layout change is a format change.
   static_assert(sizeof(Series) == 32 && std::is_trivially_copyable_v<Series>,
                 "Series changed: bump kCheckpointFormat (io/checkpoint_format.hpp) and this size");
-  static bool due(Series& s, double t, double dt, bool force);
+  // Whether series s is due at time t after a step of dt (s) in a run that ends at `end` (s); force:
+  // the start or the end of the run, written unless it already was at t.
+  static bool due(Series& s, double t, double dt, double end, bool force);
 
   const Model& model_;
   std::filesystem::path dir_;

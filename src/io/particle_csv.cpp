@@ -10,6 +10,7 @@
 
 #include "io/csv_table.hpp"
 #include "io/input_error.hpp"
+#include "model/derived_limits.hpp"
 #include "model/material_variants.hpp"
 
 namespace mpdem {
@@ -48,6 +49,34 @@ int row_material(const CsvTable& t, const CsvRow& row, int col, const Model& mod
   t.fail(row, col, "unknown material '" + s + "' (expected a material name or index; known: " + known + ")");
 }
 
+// Values each in range can still make the mass, the contact moduli or the time scales over- or
+// underflow (model/derived_limits.hpp). Names the row's column where the culprit is the row's
+// value, else the material's key.
+void check_derived(const CsvTable& t, const CsvRow& row, const Cols& c, std::int64_t pid, double r, const Material& own,
+                   bool thermal) {
+  const auto fail = [&](int col, const char* key, const std::string& problem) {
+    const std::string from = t.missing(row, col) ? " (the " + std::string(key) + " of material '" + own.name + "')"
+                                                 : "";
+    throw InputError(t.file(), row.line, key, "particle id " + std::to_string(pid) + ": " + problem + from);
+  };
+  const bool own_young = !t.missing(row, c.young);
+  if (const std::string p = contact_moduli_problem(own.young, own.poisson); !p.empty()) {
+    if (own_young || t.missing(row, c.poisson)) fail(c.young, "young", p);
+    else fail(c.poisson, "poisson", p);
+  }
+  if (const std::string p = mass_problem(r, own.density); !p.empty()) {
+    if (radius_powers_usable(r)) fail(c.density, "density", p);  // the radius alone is fine
+    else fail(c.radius, "radius", p);
+  }
+  if (const std::string p = time_scale_problem(r, own.density, own.young, own.poisson); !p.empty()) {
+    if (own_young) fail(c.young, "young", p);
+    else fail(c.radius, "radius", p);
+  }
+  if (thermal)
+    if (const std::string p = thermal_mass_problem(r, own.density, own.heat_capacity); !p.empty())
+      fail(c.heat_capacity, "heat_capacity", p);
+}
+
 // Value of an optional numeric column, else `fallback` (velocities default to rest).
 double value_or(const CsvTable& t, const CsvRow& row, int col, double fallback) {
   return t.missing(row, col) ? fallback : t.number(row, col);
@@ -56,7 +85,7 @@ double value_or(const CsvTable& t, const CsvRow& row, int col, double fallback) 
 }  // namespace
 
 void read_particle_csv(const std::filesystem::path& file, Model& model, int default_material, Particles& out) {
-  const CsvTable t = CsvTable::read(file);
+  const CsvTable t = CsvTable::read(file, kColumns.size());
   t.check_known(kColumns);
   for (std::string_view req : {"x", "y", "z", "radius"}) t.require(req);
   if (model.materials.empty())
@@ -108,6 +137,7 @@ void read_particle_csv(const std::filesystem::path& file, Model& model, int defa
     Material own = m;
     own.density = rho, own.young = E, own.poisson = nu, own.heat_capacity = cap, own.conductivity = k;
     own.emissivity = eps;
+    check_derived(t, row, c, pid, r, own, model.params.analysis.thermal);
     out.add(pid, variants.find(mat, own), r, rho, pos, vel);
     const std::size_t i = out.size() - 1;
     out.w[i] = {value_or(t, row, c.wx, 0.0), value_or(t, row, c.wy, 0.0), value_or(t, row, c.wz, 0.0)};

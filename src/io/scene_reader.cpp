@@ -10,9 +10,11 @@
 #include "io/contact_reader.hpp"
 #include "io/generate_spec_reader.hpp"
 #include "io/input_error.hpp"
+#include "io/input_file.hpp"
 #include "io/particle_csv.hpp"
 #include "io/stl_reader.hpp"
 #include "io/toml_section.hpp"
+#include "model/derived_limits.hpp"
 #include "model/material_variants.hpp"
 #include "model/scene.hpp"
 #include "generate/generated_particles.hpp"
@@ -110,6 +112,7 @@ void read_materials(const TomlSection& root, Model& model) {
     s.get("emissivity", m.emissivity, kUnitInterval);
     s.get("charge", m.charge);
     s.get("temperature", m.temperature, kNonNegative);
+    if (const std::string p = contact_moduli_problem(m.young, m.poisson); !p.empty()) s.fail("young", p);
     model.materials.push_back(m);
   }
 }
@@ -152,8 +155,7 @@ std::filesystem::path existing_file(const TomlSection& s, std::string_view k, co
   const std::string name = s.require(s.string(k), k);
   if (name.empty()) s.fail(k, "expected a file name, got an empty string");
   std::filesystem::path p = (dir / std::filesystem::path(name)).lexically_normal();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(p, ec)) s.fail(k, "file '" + p.string() + "' does not exist");
+  if (const std::string why = input_file_problem(p); !why.empty()) s.fail(k, "file '" + p.string() + "' " + why);
   return p;
 }
 
@@ -184,6 +186,7 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
        root.tables("barriers", {"file", "stl", "group", "material", "rigid", "motion", "thickness", "temperature",
                                 "scale", "rotate_deg", "translate"})) {
     BarrierSource src;
+    src.origin = root.file();
     src.line = s.line();
     if (s.has("file") && s.has("stl")) s.fail("stl", "give either file or stl, not both");
     if (!s.has("file") && !s.has("stl")) s.fail("file", "missing required key (give file or stl)");
@@ -230,9 +233,10 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     }
   }
   if (const auto s = root.table("neighbor", {"skin"})) s->get("skin", p.neighbor.skin, kNonNegative);
-  if (const auto s = root.table("checks", {"max_overlap", "energy_jump"})) {
+  if (const auto s = root.table("checks", {"max_overlap", "energy_jump", "energy_drift"})) {
     s->get("max_overlap", p.checks.max_overlap, kNonNegative);
     s->get("energy_jump", p.checks.energy_jump, kNonNegative);
+    s->get("energy_drift", p.checks.energy_drift, kNonNegative);  // checked once, at the end of the run
   }
   if (const auto s = root.table("output", {"dir", "particles_every", "barriers_every", "particle_csv_every",
                                            "barrier_log_every", "log_every", "checkpoint_every", "progress_every"})) {
@@ -252,9 +256,8 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
 
 Scene parse_scene_file(const std::filesystem::path& file) {
   const std::string name = file.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw InputError(name, 0, "", "scene file '" + name + "' does not exist");
+  if (const std::string why = input_file_problem(file); !why.empty())
+    throw InputError(name, 0, "", "scene file '" + name + "' " + why);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(name, 0, "", "cannot open scene file '" + name + "'");
   std::stringstream text;

@@ -12,10 +12,14 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "io/input_error.hpp"
+#include "io/input_file.hpp"
+#include "io/value_range.hpp"
 #include "geometry/mesh_transform.hpp"
+#include "geometry/triangle_check.hpp"
 
 namespace mpdem {
 
@@ -33,9 +37,19 @@ float read_float(const char* p) {
   return f;
 }
 
-void keep(StlMesh& out, const std::array<Vec3, 3>& t) {
-  if (is_degenerate_triangle(t[0], t[1], t[2])) ++out.degenerate;
-  else out.triangles.push_back(t);
+// Keeps triangle `number` (at `line` of an ASCII file), or counts it when its area is zero; an
+// area that overflows is an error.
+void keep(const std::string& name, StlMesh& out, const std::array<Vec3, 3>& t, std::size_t number, std::size_t line) {
+  const TriangleCheck c = check_triangle(t[0], t[1], t[2]);
+  if (c.fault == TriangleFault::NonFinite)  // finite coordinates, yet an edge or the area overflowed
+    throw InputError(name, line, "", "triangle " + std::to_string(number) + ": " + c.what);
+  if (c.fault == TriangleFault::ZeroArea || is_degenerate_triangle(t[0], t[1], t[2])) {
+    ++out.degenerate;
+    return;
+  }
+  out.triangles.push_back(t);
+  out.number.push_back(number);
+  out.line.push_back(line);
 }
 
 StlMesh read_binary(const std::string& name, const std::string& data) {
@@ -54,7 +68,7 @@ StlMesh read_binary(const std::string& name, const std::string& data) {
                          "binary STL triangle " + std::to_string(t + 1) + ": vertex " + std::to_string(k + 1) +
                              " has a non-finite coordinate");
     }
-    keep(out, tri);
+    keep(name, out, tri, t + 1, 0);
   }
   return out;
 }
@@ -113,6 +127,7 @@ class Tokens {
 
 StlMesh read_ascii(const std::string& name, const std::string& text) {
   StlMesh out;
+  std::size_t facets = 0;
   Tokens tk(name, text);
   while (!tk.done()) {
     tk.expect("solid");
@@ -139,7 +154,7 @@ StlMesh read_ascii(const std::string& name, const std::string& text) {
       }
       tk.expect("endloop");
       tk.expect("endfacet");
-      keep(out, tri);
+      keep(name, out, tri, ++facets, at);
     }
   }
   return out;
@@ -154,9 +169,8 @@ bool is_degenerate_triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 StlMesh read_stl(const std::filesystem::path& file) {
   const std::string name = file.string();
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) throw InputError(name, 0, "", "STL file does not exist");
-  const std::string data = read_all(file);
+  if (const std::string why = input_file_problem(file); !why.empty()) throw InputError(name, 0, "", "STL file " + why);
+  std::string data = read_all(file);
   if (data.empty()) throw InputError(name, 0, "", "empty STL file");
 
   if (data.size() >= 84) {
@@ -164,15 +178,19 @@ StlMesh read_stl(const std::filesystem::path& file) {
     std::memcpy(&n, data.data() + 80, 4);
     if (data.size() == 84 + 50 * static_cast<std::size_t>(n)) return read_binary(name, data);
   }
-  // Not a well-sized binary file: ASCII if it starts with "solid", else a truncated binary.
-  std::size_t b = 0;
+  // Not a well-sized binary file: ASCII if it starts with "solid", else a truncated binary. A
+  // UTF-8 byte order mark (text editors add one) is no part of the text, as in TOML and CSV.
+  const std::size_t text_start = data.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+  std::size_t b = text_start;
   while (b < data.size() && std::isspace(static_cast<unsigned char>(data[b]))) ++b;
   std::string head = data.substr(b, 5);
   for (char& c : head) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const auto text = data.begin() + static_cast<std::ptrdiff_t>(text_start);
   const bool printable = std::all_of(
-      data.begin(), data.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(data.size(), 512)),
+      text, text + static_cast<std::ptrdiff_t>(std::min<std::size_t>(data.size() - text_start, 512)),
       [](char c) { return c == '\n' || c == '\r' || c == '\t' || (c >= 32 && c < 127); });
   if (head == "solid" && printable) {
+    data.erase(0, text_start);
     StlMesh out = read_ascii(name, data);
     if (out.triangles.empty() && out.degenerate == 0) throw InputError(name, 0, "", "ASCII STL file holds no facets");
     return out;
@@ -205,21 +223,46 @@ void read_stl_barriers(const BarrierSource& src, const Model& model, Barriers& o
   std::int64_t next_id = 0;
   for (const std::int64_t bid : out.id) next_id = std::max(next_id, bid + 1);
 
-  std::size_t dropped = stl.degenerate;
+  const std::string stl_name = src.stl.string();
+  // A triangle that a placement step spoils: the step's key is to blame, at the scene's entry.
+  const auto fail = [&](std::size_t j, const std::string& key, const std::string& step, const TriangleCheck& c) {
+    const std::string what = c.fault == TriangleFault::ZeroArea ? "collapses to zero area" : c.what;
+    const std::string at = stl.line[j] > 0 ? " (line " + std::to_string(stl.line[j]) + ")" : "";
+    throw InputError(src.origin.empty() ? stl_name : src.origin, src.origin.empty() ? 0 : src.line, "barriers." + key,
+                     "STL file '" + stl_name + "' triangle " + std::to_string(stl.number[j]) + at + ": " + what +
+                         " after " + step + "; expected finite vertices and a non-zero, finite area");
+  };
   const bool rotate = !(src.rotate_deg == Vec3{});
-  for (const auto& t : stl.triangles) {
-    std::array<Vec3, 3> p;
+  const Vec3 offset = src.motion.displacement(0.0);
+  for (std::size_t j = 0; j < stl.triangles.size(); ++j) {
+    std::array<Vec3, 3> p = stl.triangles[j];
+    // `step` is called only to word a failure.
+    const auto check = [&](const char* key, const auto& step) {
+      if (const TriangleCheck c = check_triangle(p[0], p[1], p[2]); c.fault != TriangleFault::None)
+        fail(j, key, step(), c);
+    };
+    for (Vec3& v : p) v = v * src.scale;
+    check("scale", [&] { return "scale = " + number_text(src.scale); });
+    if (rotate) {
+      for (Vec3& v : p) v = rotate_xyz_deg(v, src.rotate_deg);
+      check("rotate_deg", [&] { return "rotate_deg = " + vec_text(src.rotate_deg); });
+    }
+    for (Vec3& v : p) v = v + src.translate;
+    check("translate", [&] { return "translate = " + vec_text(src.translate); });
+    // The motion law moves the element by B at t = 0: the moved vertices must stay finite.
     for (int k = 0; k < 3; ++k)
-      p[k] = (rotate ? rotate_xyz_deg(t[k] * src.scale, src.rotate_deg) : t[k] * src.scale) + src.translate;
-    if (out.add(next_id, p[0], p[1], p[2], g, src.rigid ? kRigidYoung : mat.young, mat.poisson, src.motion,
-                src.thickness, temp)) {
-      out.material.back() = mat_index;
-      ++next_id;
-    } else ++dropped;  // collapsed by the transform
+      if (!isfinite(p[k] + offset))
+        fail(j, "motion.B", "the motion's offset B = " + vec_text(offset),
+             {TriangleFault::NonFinite, "vertex " + std::to_string(k + 1) + " overflows"});
+    if (!out.add(next_id, p[0], p[1], p[2], g, src.rigid ? kRigidYoung : mat.young, mat.poisson, src.motion,
+                 src.thickness, temp))
+      throw std::logic_error("read_stl_barriers: a checked triangle was refused");
+    out.material.back() = mat_index;
+    ++next_id;
   }
-  if (dropped > 0)
-    std::fprintf(stderr, "warning: %s: dropped %zu degenerate (zero-area) triangle(s) of %zu\n",
-                 src.stl.string().c_str(), dropped, stl.triangles.size() + stl.degenerate);
+  if (stl.degenerate > 0)
+    std::fprintf(stderr, "warning: %s: dropped %zu degenerate (zero-area) triangle(s) of %zu\n", stl_name.c_str(),
+                 stl.degenerate, stl.triangles.size() + stl.degenerate);
   if (stl.triangles.empty()) throw InputError(src.stl.string(), 0, "", "STL file has no triangle with a non-zero area");
 }
 

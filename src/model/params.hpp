@@ -152,11 +152,14 @@ struct OutputParams {
   double progress_every = 10.0;     // s of wall time between plain progress lines
 };
 
-// Instability detection: the run stops with a message naming particles, time and step.
+// Instability detection: the run stops with a message naming particles, time and step (the
+// drift only warns at the end: the run is complete by then).
 struct CheckParams {
-  double max_overlap = 0.05;  // -, largest overlap / smaller radius (0 = off)
-  double energy_jump = 0.5;   // -, largest one-step rise of the energy balance relative
-                              //    to kinetic + rotational + elastic energy (0 = off)
+  double max_overlap = 0.05;   // -, largest overlap / smaller radius (0 = off)
+  double energy_jump = 0.5;    // -, largest one-step rise of the energy balance relative
+                               //    to kinetic + rotational + elastic energy (0 = off)
+  double energy_drift = 0.05;  // -, largest change of the energy balance over the whole run relative
+                               //    to the start balance before the end-of-run warning (0 = off)
 };
 
 struct Params {

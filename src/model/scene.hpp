@@ -38,7 +38,8 @@ struct BarrierSource {
   double scale = 1.0;                 // STL only: vertex scale factor
   Vec3 rotate_deg{};                  // STL only: rotation about x, then y, then z, degrees
   Vec3 translate{};                   // STL only: m, translation after scale and rotation
-  std::size_t line = 0;
+  std::string origin;                 // the scene file, for messages about the entry's keys ("" = none)
+  std::size_t line = 0;               // line of the entry in `origin`
 };
 
 struct Model {

@@ -10,6 +10,7 @@
 #include "integrate/integrator_policy.hpp"
 #include "model/material_variants.hpp"
 #include "sim/energy.hpp"
+#include "io/atomic_file.hpp"
 #include "io/output_manager.hpp"
 #include "contact/particle_contacts.hpp"
 #include "io/progress.hpp"
@@ -48,7 +49,10 @@ void Simulation::initialize() {
   ++evaluations_;
   initialized_ = true;
   const Params& prm = scene_.model.params;
-  check_energy(scan_state(scene_.particles, prm.fields, prm.domain));  // the reference for the first step
+  const StateScan scan = scan_state(scene_.particles, prm.fields, prm.domain);
+  check_energy(scan);  // the reference for the first step
+  record_state(scan);  // the start of the run's drift
+  record_overlap(interactions_->max_overlap(scene_.particles, scene_.barriers));
 }
 
 StepReport Simulation::advance(double dt) {
@@ -113,7 +117,26 @@ StepReport Simulation::advance_adaptive(double limit) {
 double Simulation::energy_balance(const StateScan& s) const {
   const InteractionStats& st = interactions_->stats();
   return s.energy.kinetic + s.energy.rotational + s.energy.potential + s.electric + st.elastic_energy +
-         st.damping_dissipated + st.friction_dissipated;
+         st.damping_dissipated + st.friction_dissipated + record_.removed_energy;
+}
+
+void Simulation::record_state(const StateScan& s) {
+  const double balance = energy_balance(s);
+  const double active = s.energy.kinetic + s.energy.rotational + interactions_->stats().elastic_energy;
+  if (!record_.started) {
+    record_.start_balance = balance;
+    record_.start_active = active;
+    record_.started = true;
+  }
+  record_.balance = balance;
+  record_.peak_active = std::max(record_.peak_active, active);
+}
+
+void Simulation::record_overlap(const OverlapReport& r) {
+  if (r.ratio > record_.deepest.ratio) {
+    record_.deepest = r;
+    record_.deepest_time = time_;
+  }
 }
 
 void Simulation::check_energy(const StateScan& s) {
@@ -150,9 +173,10 @@ void Simulation::check_energy(const StateScan& s) {
 }
 
 void Simulation::check_overlap() {
+  const OverlapReport r = interactions_->max_overlap(scene_.particles, scene_.barriers);
+  record_overlap(r);
   const double limit = scene_.model.params.checks.max_overlap;
   if (!(limit > 0.0)) return;
-  const OverlapReport r = interactions_->max_overlap(scene_.particles, scene_.barriers);
   if (!(r.ratio > limit)) return;
   const std::string between = r.element >= 0
                                   ? fmt::format("particle id {} and barrier element id {}", r.particle, r.element)
@@ -177,6 +201,7 @@ void Simulation::check_state(const StepReport& rep) {
     }
   check_overlap();
   check_energy(scan);
+  record_state(scan);
   if (scan.outside > 0) remove_outside();
 }
 
@@ -195,9 +220,12 @@ void Simulation::remove_outside() {
                       p.id[i], steps_, time_, x.x, x.y, x.z));
     keep[i] = 0;
     ++gone;
+    // The energy it takes along stays in the balance, which would otherwise drop (or rise) by it.
+    std::array<double, kScanSums> e{};
+    scan_range(p, i, i + 1, scene_.model.params.fields, DomainParams{}, e);
+    record_.removed_energy += e[0] + e[1] + e[2] + e[3];
     if (output_) output_->removed(p.id[i], time_, x);
-    if (options_.progress)
-      fmt::print(stderr, "\nremoved particle id {} at t = {:.9g} s (left the domain)\n", p.id[i], time_);
+    if (progress_) progress_->removed(p.id[i], time_, removed_ + gone);
   }
   if (gone == 0) return;
   interactions_->remove_particles(p, scene_.barriers, keep);
@@ -227,7 +255,12 @@ RunSummary Simulation::run() {
   }
   install_stop_handlers();
   const auto every = static_cast<std::uint64_t>(prm.output.checkpoint_every);
-  Progress progress(duration, prm.output.progress_every, options_.progress);
+  const std::uint64_t first_step = steps_;
+  progress_ = std::make_unique<Progress>(duration, prm.output.progress_every, options_.progress, time_, steps_);
+  struct Release {  // no progress reports from steps taken outside run()
+    std::unique_ptr<Progress>& p;
+    ~Release() { p.reset(); }
+  } release{progress_};
   StepReport last;
   while (time_ < duration - 1e-9 * dt) {
     const double t0 = time_;
@@ -241,7 +274,7 @@ RunSummary Simulation::run() {
                             interactions_->stats());
     }
     const auto& st = interactions_->stats();
-    progress.update(time_, steps_, st.contacts_pp + st.contacts_pb, scene_.particles.size());
+    progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, scene_.particles.size());
     if (output_ && every > 0 && steps_ % every == 0) {
       write_checkpoint(dir / "checkpoint.bin");
       output_->flush();
@@ -263,8 +296,21 @@ RunSummary Simulation::run() {
                           interactions_->stats());
     output_->flush();
   }
-  progress.finish(time_, steps_);
-  return {time_, steps_, evaluations_, removed_};
+  progress_->finish(time_, steps_);
+  RunSummary sum{time_, steps_, steps_ - first_step, evaluations_, removed_, record_, prm.checks.energy_drift, ""};
+  // Work and potential the balance leaves out make its drift meaningless as a measure of the step.
+  if (prm.near_field.cutoff > 0.0) sum.drift_unchecked = "the near field's potential is not in the balance";
+  const auto& motion = scene_.barriers.motion;
+  if (std::any_of(motion.begin(), motion.end(), [](const MotionLaw& m) { return !m.is_static(); }))
+    sum.drift_unchecked = "moving barriers do work that is not in the balance";
+  if (output_) {
+    // Kept beside the results, where a warning on stderr is easily lost; none: an earlier one is stale.
+    const std::string warning = drift_warning(sum);
+    const std::filesystem::path file = dir / "warnings.txt";
+    if (!warning.empty()) write_file_atomically(file, [&](std::ostream& os) { os << warning << "\n"; });
+    else std::filesystem::remove(file);
+  }
+  return sum;
 }
 
 }  // namespace mpdem

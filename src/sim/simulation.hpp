@@ -11,24 +11,19 @@
 #include "integrate/verlet.hpp"
 #include "model/scene.hpp"
 #include "sim/energy.hpp"
+#include "sim/run_record.hpp"
 #include "sim/state_scan.hpp"
 #include "sim/interactions.hpp"
 
 namespace mpdem {
 
 class OutputManager;
+class Progress;
 
 struct RunOptions {
   std::filesystem::path output_dir;  // empty: the scene's [output] dir, relative to the scene
   bool progress = true;              // progress line on stderr
   bool write_output = true;          // false: no files at all (tests)
-};
-
-struct RunSummary {
-  double time = 0.0;  // s, simulated time reached
-  std::uint64_t steps = 0;
-  std::uint64_t evaluations = 0;  // interaction evaluations
-  std::size_t removed = 0;        // particles removed at the domain boundary
 };
 
 // Output folder of a run: options.output_dir, else the scene's [output] dir relative to the scene.
@@ -43,7 +38,7 @@ class Simulation {
   Simulation(const Simulation&) = delete;  // the parts hold references into scene_
   Simulation& operator=(const Simulation&) = delete;
 
-  RunSummary run();  // runs to [time] duration
+  RunSummary run();  // runs to [time] duration; the summary says how trustworthy the run was
 
   // Finer control, for tests and tools.
   void initialize();              // first evaluation of the rates at t = 0
@@ -60,6 +55,7 @@ class Simulation {
   std::uint64_t redone_steps() const { return redone_; }
   std::uint64_t evaluations() const { return evaluations_; }
   double time() const { return time_; }
+  const RunRecord& record() const { return record_; }
   std::uint64_t steps() const { return steps_; }
   Particles& particles() { return scene_.particles; }
   Barriers& barriers() { return scene_.barriers; }
@@ -71,8 +67,11 @@ class Simulation {
   void check_state(const StepReport& rep);  // NaN / infinity, energy jumps, domain exits
   void check_energy(const StateScan& s);
   void check_overlap();
-  void remove_outside();  // domain.on_exit: stop or remove
-  // J, mechanical energy + cumulative dissipation, from the scan of the particles.
+  void record_state(const StateScan& s);        // the balance and active energy into record_
+  void record_overlap(const OverlapReport& r);  // r into record_ when it is the deepest yet
+  void remove_outside();                        // domain.on_exit: stop or remove
+  // J, mechanical energy + cumulative dissipation + what removed particles took along, from the
+  // scan of the particles.
   double energy_balance(const StateScan& s) const;
 
   Scene scene_;
@@ -81,7 +80,8 @@ class Simulation {
   TrapezoidalIntegrator trapezoidal_;
   VerletIntegrator verlet_;
   std::unique_ptr<OutputManager> output_;
-  double time_ = 0.0;  // s
+  std::unique_ptr<Progress> progress_;  // set while run() runs
+  double time_ = 0.0;                   // s
   std::uint64_t steps_ = 0;
   std::uint64_t evaluations_ = 0;
   std::uint64_t redone_ = 0;     // adaptive steps redone with a smaller dt
@@ -90,6 +90,7 @@ class Simulation {
   double last_active_ = 0.0;     // J, kinetic + rotational + elastic after the previous step
   bool energy_checked_ = false;  // last_balance_ / last_active_ are set
   std::size_t removed_ = 0;
+  RunRecord record_;  // for the end-of-run summary
   bool initialized_ = false;
   bool resumed_ = false;                   // state loaded from a checkpoint
   std::vector<char> resume_output_state_;  // OutputManager series from the checkpoint

@@ -1,5 +1,7 @@
 #include "state/barriers.hpp"
 
+#include "geometry/triangle_check.hpp"
+
 namespace mpdem {
 
 bool Barriers::add(std::int64_t bid, const Vec3& a, const Vec3& b, const Vec3& c, int grp, double E, double nu,
@@ -7,7 +9,7 @@ bool Barriers::add(std::int64_t bid, const Vec3& a, const Vec3& b, const Vec3& c
   const Vec3 n = cross(b - a, c - a);
   const double twice_area = norm(n);
   // Degenerate (zero-area) triangles have no normal; the caller reports them.
-  if (!(twice_area > 1e-300)) return false;
+  if (!(twice_area > kMinTwiceArea)) return false;
   id.push_back(bid);
   p0.push_back(a);
   p1.push_back(b);

@@ -1,0 +1,65 @@
+// The command line on inputs whose derived values overflow (issue 16): `mpdem check` accepted an
+// STL scaled to an infinite area and a young of 1e308, and `mpdem run` failed at step 1 (exit 1)
+// on a radius of 1e308. Each is now bad input: one message naming file, line and key, exit
+// status 2, nothing written. So is a folder named as a particle file.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "support/run_command.hpp"
+
+using namespace mpdem::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kHead = "[time]\nduration = 0.001\ndt = 1e-6\n[[material]]\nname = \"glass\"\n";  // lines 1-5
+
+// Runs `check` and `run` on the scene in `d`; both must refuse it with `location` and `text`.
+void expect_refused(const fs::path& d, const std::string& location, const std::string& text) {
+  for (const char* cmd : {"check scene.toml", "run scene.toml --quiet"}) {
+    const CommandResult r = run_mpdem(cmd, d);
+    EXPECT_EQ(r.status, 2) << cmd << "\n" << r.err;
+    EXPECT_NE(r.err.find(location), std::string::npos) << cmd << ": " << r.err;
+    EXPECT_NE(r.err.find(text), std::string::npos) << cmd << ": " << r.err;
+    EXPECT_EQ(r.err.find("error:"), r.err.rfind("error:")) << "one message only: " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(d / "output")) << "nothing may be written for bad input";
+}
+
+}  // namespace
+
+TEST(CliInputLimits, StlScaledToAnInfiniteArea) {
+  const fs::path d = fresh_dir("lim_stl");
+  write_text(d / "floor.stl",
+             "solid f\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+             "endsolid f\n");
+  write_text(d / "scene.toml", std::string(kHead) + "[[barriers]]\nstl = \"floor.stl\"\nscale = 1e160\n");
+  expect_refused(d, "scene.toml:6: 'barriers.scale'", "its area overflows");
+  fs::remove_all(d);
+}
+
+TEST(CliInputLimits, RadiusWithAnInfiniteMass) {
+  const fs::path d = fresh_dir("lim_radius");
+  write_text(d / "p.csv", "id,x,y,z,radius\n1,0,0,0,0.001\n2,0,0,1,1e308\n");
+  write_text(d / "scene.toml", std::string(kHead) + "[[particles]]\nfile = \"p.csv\"\n");
+  expect_refused(d, "p.csv:3: 'radius'", "particle id 2: the mass 4/3 pi r^3 rho overflows");
+  fs::remove_all(d);
+}
+
+TEST(CliInputLimits, YoungWithAnInfiniteContactModulus) {
+  const fs::path d = fresh_dir("lim_young");
+  write_text(d / "p.csv", "id,x,y,z,radius\n1,0,0,0,0.001\n");
+  write_text(d / "scene.toml", "[time]\nduration = 0.001\ndt = 1e-6\n[[material]]\nname = \"glass\"\nyoung = 1e308\n"
+                               "[[particles]]\nfile = \"p.csv\"\n");
+  expect_refused(d, "scene.toml:6: 'material.young'", "the contact modulus E*");
+  fs::remove_all(d);
+}
+
+TEST(CliInputLimits, FolderAsParticleFile) {
+  const fs::path d = fresh_dir("lim_dir");
+  fs::create_directories(d / "p.csv");
+  write_text(d / "scene.toml", std::string(kHead) + "[[particles]]\nfile = \"p.csv\"\n");
+  expect_refused(d, "scene.toml:7: 'particles.file'", "is a directory");
+  fs::remove_all(d);
+}

@@ -1,0 +1,121 @@
+// The run record behind the end-of-run summary: the energy balance's drift from the start (with
+// the energy removed particles take along kept in it), the deepest contact seen, both carried
+// through a checkpoint; and the drift warning's threshold.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/simulation.hpp"
+#include "support/run_command.hpp"
+#include "support/scene_builder.hpp"
+
+using namespace mpdem;
+namespace fs = std::filesystem;
+
+namespace {
+// Two spheres colliding head-on, resolved (the deepest overlap is about 2% of the radius).
+Scene collision() {
+  Scene s = test::make_scene(2e-7, 1.0);
+  s.model.params.time.integrator = Integrator::Verlet;
+  s.model.params.fields.gravity = {};
+  s.model.materials[0].young = 1e9;
+  test::add_particle(s, 5, 0.001, {0, 0, 0}, {1.0, 0, 0});
+  test::add_particle(s, 6, 0.001, {0.00205, 0, 0}, {-1.0, 0, 0});
+  return s;
+}
+
+void advance(Simulation& sim, int steps) {
+  for (int k = 0; k < steps; ++k) sim.advance(sim.model().params.time.dt);
+}
+}  // namespace
+
+TEST(RunRecord, RemovedParticlesKeepTheBalance) {
+  // Free fall is exact for velocity Verlet; one particle leaves through the floor of the domain.
+  Scene s = test::make_scene(1e-4, 1.0);
+  s.model.params.time.integrator = Integrator::Verlet;
+  DomainParams& d = s.model.params.domain;
+  d.bounded = true;
+  d.min = {-0.1, -0.1, -0.02};
+  d.max = {0.1, 0.1, 0.1};
+  d.on_exit = ExitPolicy::Remove;
+  test::add_particle(s, 1, 0.001, {0, 0, 0.01});
+  test::add_particle(s, 2, 0.001, {0.05, 0, 0.09});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
+  advance(sim, 1000);  // particle 1 crosses z = -0.02 after 78 ms, particle 2 only after 150 ms
+  ASSERT_EQ(sim.particles().size(), 1u);
+  EXPECT_GT(sim.record().removed_energy, 0.0);
+  EXPECT_LT(std::abs(energy_drift(sim.record())), 1e-9) << "the removed particle's energy left the balance";
+}
+
+TEST(RunRecord, DeepestContactIsRecorded) {
+  Scene s = collision();
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
+  advance(sim, 1500);
+  const RunRecord& r = sim.record();
+  EXPECT_GT(r.deepest.ratio, 0.005);
+  EXPECT_LT(r.deepest.ratio, 0.05);
+  EXPECT_EQ(std::min(r.deepest.particle, r.deepest.other), 5);
+  EXPECT_EQ(std::max(r.deepest.particle, r.deepest.other), 6);
+  EXPECT_EQ(r.deepest.element, -1);
+  EXPECT_GT(r.deepest_time, 0.0);
+  EXPECT_LT(std::abs(energy_drift(r)), 0.01);
+  EXPECT_GT(r.peak_active, 0.0);
+}
+
+TEST(RunRecord, SurvivesACheckpoint) {
+  const fs::path dir = test::fresh_dir("run_record");
+  Scene full_scene = collision();
+  Simulation full(std::move(full_scene), RunOptions{{}, false, false});
+  advance(full, 1500);
+  Scene first_scene = collision();
+  Simulation first(std::move(first_scene), RunOptions{{}, false, false});
+  advance(first, 100);  // before the contact (at 25 us): the deepest comes after the checkpoint
+  first.write_checkpoint(dir / "ck.bin");
+  Scene resumed_scene = collision();
+  Simulation resumed(std::move(resumed_scene), RunOptions{{}, false, false});
+  resumed.resume_from(dir / "ck.bin");
+  advance(resumed, 1400);
+  const RunRecord& a = full.record();
+  const RunRecord& b = resumed.record();
+  EXPECT_EQ(a.start_balance, b.start_balance);
+  EXPECT_EQ(a.start_active, b.start_active);
+  EXPECT_EQ(a.balance, b.balance);
+  EXPECT_EQ(a.peak_active, b.peak_active);
+  EXPECT_EQ(a.deepest.ratio, b.deepest.ratio);
+  EXPECT_EQ(a.deepest_time, b.deepest_time);
+  fs::remove_all(dir);
+}
+
+TEST(RunRecord, DriftWarningAboveTheThresholdOnly) {
+  RunSummary s;
+  s.time = 0.25;
+  s.drift_limit = 0.05;
+  s.record.started = true;
+  s.record.start_balance = 1.0;
+  s.record.balance = 1.98;
+  EXPECT_DOUBLE_EQ(energy_drift(s.record), 0.98);
+  const std::string w = drift_warning(s);
+  EXPECT_NE(w.find("warning: the energy balance rose by 98%"), std::string::npos) << w;
+  EXPECT_NE(w.find("more than checks.energy_drift = 5%"), std::string::npos) << w;
+  EXPECT_NE(summary_line(s).find("energy balance drift +98% of the start balance"), std::string::npos)
+      << summary_line(s);
+  s.record.balance = 0.9;  // a loss beyond the booked dissipation warns too
+  EXPECT_NE(drift_warning(s).find("fell by 10%"), std::string::npos) << drift_warning(s);
+  s.record.balance = 1.04;
+  EXPECT_EQ(drift_warning(s), "");
+  s.record.balance = 1.98;
+  s.drift_limit = 0.0;  // off
+  EXPECT_EQ(drift_warning(s), "");
+  s.drift_limit = 0.05;
+  s.drift_unchecked = "moving barriers do work that is not in the balance";
+  EXPECT_EQ(drift_warning(s), "");
+  EXPECT_NE(summary_line(s).find("not checked: moving barriers"), std::string::npos) << summary_line(s);
+  // A balance that starts at zero is measured against the kinetic + rotational + elastic energy.
+  RunRecord r;
+  r.start_active = 2.0;
+  r.balance = 0.5;
+  EXPECT_DOUBLE_EQ(energy_drift(r), 0.25);
+  r.start_active = 0.0;
+  r.peak_active = 5.0;
+  EXPECT_DOUBLE_EQ(energy_drift(r), 0.1);
+}

@@ -280,7 +280,8 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
       sum1 += batch.energy[t];
       sum2 += batch.damping[t];
       sum3 -= dot(roll, w);
-      (slipped ? sum6 : sum5) += batch.tl[t];
+      sum5 += slipped ? 0.0 : batch.tl[t];  // selected values, not a selected address (register sums)
+      sum6 += slipped ? batch.tl[t] : 0.0;
       sum7 += batch.eb[t];
       sum8 += batch.ea[t];
     }

@@ -195,7 +195,10 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
     s.elastic_energy += b.energy[t];
     s.damping_power += b.damping[t];
     s.friction_power -= dot(roll, wrel);
-    (b.slip[t] ? s.sliding_loss : s.sticking_loss) += b.tl[t];
+    // Selected values, not a selected address: that would keep the sums in memory.
+    const bool slid = b.slip[t] != 0;
+    s.sliding_loss += slid ? b.tl[t] : 0.0;
+    s.sticking_loss += slid ? 0.0 : b.tl[t];
     s.spring_before += b.eb[t];
     s.spring_after += b.ea[t];
     // Divide only for a contact deeper than the deepest so far.

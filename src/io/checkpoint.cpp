@@ -102,6 +102,13 @@ void Simulation::resume_from(const std::filesystem::path& file) {
   } catch (const std::runtime_error& e) {
     throw InputError(name, 0, "", std::string("cannot resume from this checkpoint: ") + e.what());
   }
+  // Nothing would be left to run: say so rather than exit 0 having done nothing.
+  const double duration = scene_.model.params.time.duration;
+  if (!(time_ < duration))
+    throw InputError(scene_.file.empty() ? name : scene_.file.string(), 0, "time.duration",
+                     fmt::format("the checkpoint '{}' is at t = {:.9g} s, not before the scene's time.duration = "
+                                 "{:.9g} s: nothing is left to run; raise time.duration to continue the run",
+                                 name, time_, duration));
   initialized_ = true;
   resumed_ = true;
 }

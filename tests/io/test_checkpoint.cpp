@@ -18,6 +18,7 @@
 #include "support/contact_scenes.hpp"
 #include "support/run_command.hpp"
 #include "support/scene_builder.hpp"
+#include "support/temp_dir.hpp"
 
 using namespace mpdem;
 namespace fs = std::filesystem;
@@ -162,6 +163,28 @@ TEST(Checkpoint, CorruptOrForeignFileIsAClearError) {
       EXPECT_NE(std::string(e.what()).find(f), std::string::npos) << e.what();
     }
   }
+  fs::remove_all(dir);
+}
+
+// A scene whose duration ends at or before the checkpoint's time leaves nothing to run: refused
+// naming the key and both times, instead of a run that exits 0 having done nothing.
+TEST(Checkpoint, ResumeWithNothingLeftToRunIsRefused) {
+  const fs::path dir = test::fresh_dir("checkpoint_short");
+  written_checkpoint(dir);  // 5 steps of 2e-5 s: t = 1e-4 s
+  for (const double duration : {5e-5, 1e-4}) {
+    Scene s2 = granular_scene(false);
+    s2.model.params.time.duration = duration;
+    Simulation sim2(std::move(s2), RunOptions{{}, false, false});
+    try {
+      sim2.resume_from(dir / "ck.bin");
+      FAIL() << duration;
+    } catch (const InputError& e) {
+      test::expect_contains(e.what(), {"'time.duration'", "t = 0.0001 s", "nothing is left to run"});
+    }
+  }
+  Scene s3 = granular_scene(false);  // duration 1 s: resumes
+  Simulation sim3(std::move(s3), RunOptions{{}, false, false});
+  EXPECT_NO_THROW(sim3.resume_from(dir / "ck.bin"));
   fs::remove_all(dir);
 }
 

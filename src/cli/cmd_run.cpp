@@ -10,8 +10,6 @@
 namespace mpdem::cli {
 
 int run_command(const RunArgs& args) {
-  require_not_a_folder(args.scene, "scene file");
-  if (!args.resume.empty()) require_not_a_folder(args.resume, "checkpoint file", "checkpoint.bin");
   if (args.threads > 0) omp_set_num_threads(args.threads);
   Scene scene = load_scene(args.scene);  // InputError propagates to main: exit 2, nothing written
   warn_about_time_step(scene);

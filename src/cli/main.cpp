@@ -65,10 +65,7 @@ int dispatch(int argc, char** argv) {
   }
   try {
     if (*run_cmd) return mpdem::cli::run_command(run);
-    if (*check_cmd) {
-      mpdem::cli::require_not_a_folder(check_scene, "scene file");
-      return mpdem::cli::check_command(check_scene);
-    }
+    if (*check_cmd) return mpdem::cli::check_command(check_scene);
     if (*bench_cmd) return mpdem::cli::bench_command(bench);
     if (tool) return tool();
   } catch (const mpdem::InputError& e) {

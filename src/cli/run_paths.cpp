@@ -3,19 +3,9 @@
 #include <charconv>
 #include <string>
 
-#include "io/input_error.hpp"
-
 namespace mpdem::cli {
 
 namespace fs = std::filesystem;
-
-void require_not_a_folder(const fs::path& file, std::string_view what, std::string_view inner) {
-  std::error_code ec;
-  if (!fs::is_directory(file, ec)) return;
-  std::string msg = "is a directory, not a " + std::string(what);
-  if (!inner.empty() && fs::is_regular_file(file / inner, ec)) msg += "; did you mean " + (file / inner).string() + "?";
-  throw InputError(file.string(), 0, "", msg);
-}
 
 std::string check_thread_count(const std::string& text) {
   long long n = 0;

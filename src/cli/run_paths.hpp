@@ -1,7 +1,7 @@
 #pragma once
-// The command line's paths and numbers: what `mpdem run` and `mpdem check` require of the files
-// they are given before anything is read, the --threads range, and the command that resumes an
-// interrupted run (printed on SIGINT/SIGTERM, to be pasted into a shell as it is).
+// The command line's numbers and paths: the --threads range, and the command that resumes an
+// interrupted run (printed on SIGINT/SIGTERM, to be pasted into a shell as it is). A folder given
+// as the scene or checkpoint is reported by their readers (io/input_file.hpp).
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -12,10 +12,6 @@ namespace mpdem::cli {
 
 inline constexpr int kMaxThreads = 1024;  // --threads upper bound (OpenMP threads)
 
-// Throws InputError when `file` is a folder (`what`: "scene file", ...); a file that does not exist
-// is left to the reader, which names it. A folder holding `inner` (e.g. "checkpoint.bin") is
-// suggested.
-void require_not_a_folder(const std::filesystem::path& file, std::string_view what, std::string_view inner = "");
 // Empty when `text` is a whole number from 1 to kMaxThreads; else the message (CLI11 validator).
 std::string check_thread_count(const std::string& text);
 // `text` as one shell word: as it is when it holds only characters no shell treats specially,

@@ -194,7 +194,7 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
     s.contacts += 1.0;
     s.elastic_energy += b.energy[t];
     s.damping_power += b.damping[t];
-    s.friction_power -= dot(roll, wrel);
+    s.rolling_power -= dot(roll, wrel);
     // Selected values, not a selected address: that would keep the sums in memory.
     const bool slid = b.slip[t] != 0;
     s.sliding_loss += slid ? b.tl[t] : 0.0;

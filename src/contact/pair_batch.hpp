@@ -35,7 +35,7 @@ struct PairBlockSums {
   double contacts = 0.0;
   double elastic_energy = 0.0;  // J
   double damping_power = 0.0;   // W, normal dashpots
-  double friction_power = 0.0;  // W, rolling friction
+  double rolling_power = 0.0;   // W, rolling friction
   double sticking_loss = 0.0;   // J, tangential loss (ContactResult) of the sticking contacts
   double sliding_loss = 0.0;    // J, tangential loss of the sliding contacts
   double spring_before = 0.0;   // J, the stored springs' energy at this step's stiffness

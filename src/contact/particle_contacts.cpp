@@ -144,7 +144,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
     st.contacts += static_cast<std::size_t>(s.contacts);
     st.elastic_energy += s.elastic_energy;
     st.damping_power += s.damping_power;
-    st.friction_power += s.friction_power;
+    st.rolling_power += s.rolling_power;
     st.sticking_loss += s.sticking_loss;
     st.sliding_loss += s.sliding_loss;
     st.spring_before += s.spring_before;

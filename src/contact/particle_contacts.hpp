@@ -33,7 +33,7 @@ struct PairStats {
   std::size_t contacts = 0;
   double elastic_energy = 0.0;  // J
   double damping_power = 0.0;   // W, removed by the normal dashpots
-  double friction_power = 0.0;  // W, removed by rolling friction
+  double rolling_power = 0.0;   // W, removed by rolling friction
   double sticking_loss = 0.0;   // J, tangential loss of the step (ContactResult) of the sticking contacts
   double sliding_loss = 0.0;    // J, tangential loss of the step of the sliding contacts
   double spring_before = 0.0;   // J, the stored springs' energy at this step's stiffness (ContactResult)

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "io/atomic_file.hpp"
+#include "io/input_file.hpp"
 #include "io/checkpoint_format.hpp"
 #include "io/input_error.hpp"
 #include "io/output_manager.hpp"
@@ -61,8 +62,12 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
 
 void Simulation::resume_from(const std::filesystem::path& file) {
   const std::string name = file.string();
-  if (!std::filesystem::exists(file)) throw InputError(name, 0, "", "the checkpoint file does not exist");
-  if (std::filesystem::is_directory(file)) throw InputError(name, 0, "", "is a directory, not a checkpoint file");
+  if (std::string why = input_file_problem(file); !why.empty()) {
+    std::error_code ec;  // a run's output folder given instead of its checkpoint
+    if (std::filesystem::is_regular_file(file / "checkpoint.bin", ec))
+      why += "; did you mean " + (file / "checkpoint.bin").string() + "?";
+    throw InputError(name, 0, "", "checkpoint file " + why);
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(name, 0, "", "cannot open the checkpoint file");
   std::stringstream ss;

@@ -1,12 +1,12 @@
 #include "model/derived_limits.hpp"
 
 #include <cmath>
-#include <numbers>
 
 #include "io/value_range.hpp"
 #include "physics/hertz.hpp"
 #include "physics/tangential.hpp"
 #include "physics/time_step_estimate.hpp"
+#include "state/particles.hpp"
 
 namespace mpdem {
 
@@ -55,8 +55,8 @@ bool radius_powers_usable(double radius) {
 
 std::string mass_problem(double radius, double density) {
   const double r = radius;
-  const double mass = 4.0 / 3.0 * std::numbers::pi * r * r * r * density;  // as Particles::update_mass
-  const double inertia = 0.4 * mass * r * r;
+  const double mass = sphere_mass(r, density);  // as Particles::update_mass
+  const double inertia = sphere_inertia(mass, r);
   std::string p = check(mass, "the mass 4/3 pi r^3 rho", "kg");
   if (p.empty()) p = check(inertia, "the moment of inertia 2/5 m r^2", "kg m^2");
   if (p.empty()) return "";
@@ -66,7 +66,7 @@ std::string mass_problem(double radius, double density) {
 
 std::string time_scale_problem(double radius, double density, double young, double poisson) {
   const double r = radius;
-  const double mass = 4.0 / 3.0 * std::numbers::pi * r * r * r * density;
+  const double mass = sphere_mass(r, density);
   const double E_pp = effective_modulus(young, poisson, young, poisson);
   std::string p = check(rayleigh_time(r, density, young, poisson), "the Rayleigh time", "s");
   if (p.empty())
@@ -79,7 +79,7 @@ std::string time_scale_problem(double radius, double density, double young, doub
 
 std::string thermal_mass_problem(double radius, double density, double heat_capacity) {
   const double r = radius;
-  const double mass = 4.0 / 3.0 * std::numbers::pi * r * r * r * density;
+  const double mass = sphere_mass(r, density);
   const std::string p = check(mass * heat_capacity, "the heat capacity m c of the particle", "J/K");
   if (p.empty()) return "";
   return p + " for radius " + number_text(r) + " m, density " + number_text(density) + " kg/m^3, heat_capacity " +

@@ -16,6 +16,9 @@ namespace mpdem {
 
 namespace {
 constexpr double kDriftMargin2 = 1.0 + 1e-6;  // -, squared safety factor on predicted drifts
+// -, the next step's displacement is taken as this many times dt x the current speed (the speeds
+// change within the step; barrier motion may accelerate).
+constexpr double kReachFactor = 2.0;
 
 ContactTable table_for(const Model& model) {
   ContactTable t;
@@ -116,8 +119,6 @@ bool Interactions::stale(const Particles& p, const Barriers& b) const {
 
 double Interactions::barrier_reach(const Barriers& b, double dt) const {
   if (b.size() == 0) return 0.0;
-  // Barrier motion is analytic but may accelerate: twice dt x the current fastest speed.
-  constexpr double kReachFactor = 2.0;
   double speed2 = 0.0;
   for (const Vec3& u : b.velocity) speed2 = std::max(speed2, norm2(u));
   return search_->barrier_candidates().max_barrier_displacement(b) + kReachFactor * dt * std::sqrt(speed2);
@@ -144,7 +145,6 @@ bool Interactions::rebuild_due(const Particles& p, const Barriers& b, double dt)
   // The lists hold while a particle's displacement + the barriers' displacement since the build
   // stays within skin/2. The coming step adds about dt x the current speeds; twice that, since
   // the speeds change within the step, keeps evaluate()'s own rebuilds practically absent.
-  constexpr double kReachFactor = 2.0;
   const double limit = 0.5 * search_->skin() - barrier_reach(b, dt);  // m, left for the particles
   if (!(limit > 0.0)) return true;
   constexpr std::size_t kChunk = 1024;  // particles per call
@@ -182,12 +182,12 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     // their step-start state by particle index.
     ScopedTimer timer(times_.search);
     // prepare_step checked the particles at the positions this evaluation sees (StepPolicy::
-    // drift_known); the barriers, cheap to check, are checked at the evaluation's time.
+    // drift_known), within skin/2 less the barriers' allowance; the barriers, cheap to check,
+    // are checked at the evaluation's time.
     const double known = predicted_displacement_;
     predicted_displacement_ = -1.0;
     const bool due = known >= 0.0 && !stale(p, b)
-                         ? known > 0.5 * search_->skin() ||
-                               (b.size() > 0 && search_->barrier_candidates().needs_rebuild(b, known))
+                         ? b.size() > 0 && search_->barrier_candidates().needs_rebuild(b, known)
                          : search_->needs_rebuild(p, b);
     if (due) {
       rebuild(p, b, false);
@@ -228,7 +228,7 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     // stored energy lost between the last commit and this step's stiffness k_t(delta), with the
     // springs of contacts that ended (the total spring keeps s as k_t changes, the incremental
     // one k_t s: neither keeps 1/2 k_t |s|^2).
-    const double damping = pp.damping_power + pb.damping_power, rolling = pp.friction_power + pb.friction_power;
+    const double damping = pp.damping_power + pb.damping_power, rolling = pp.rolling_power + pb.rolling_power;
     const double restiffened = stats_.spring_energy - (pp.spring_before + pb.spring_before);
     stats_.damping_dissipated += 0.5 * req.dt * (stats_.damping_power + damping) + pp.sticking_loss + pb.sticking_loss;
     stats_.friction_dissipated += 0.5 * req.dt * (stats_.rolling_power + rolling) + pp.sliding_loss + pb.sliding_loss +

@@ -33,7 +33,7 @@ struct InteractionStats {
   double elastic_energy = 0.0;       // J, Hertz + tangential springs at the last evaluation
   double damping_dissipated = 0.0;   // J, cumulative over committed steps
   double friction_dissipated = 0.0;  // J, cumulative over committed steps (sliding and rolling)
-  double damping_power = 0.0;        // W, dashpots, at the last committed evaluation
+  double damping_power = 0.0;        // W, normal dashpots, at the last committed evaluation
   double rolling_power = 0.0;        // W, rolling resistance, at the last committed evaluation
   double spring_energy = 0.0;        // J, the tangential springs' energy at the last committed evaluation
   std::uint64_t rebuilds = 0;        // neighbour list rebuilds

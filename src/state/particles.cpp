@@ -14,8 +14,8 @@ void Particles::reserve(std::size_t n) {
 
 void Particles::update_mass(std::size_t i, double rho) {
   const double r = radius[i];
-  mass[i] = 4.0 / 3.0 * std::numbers::pi * r * r * r * rho;
-  inertia[i] = 0.4 * mass[i] * r * r;
+  mass[i] = sphere_mass(r, rho);
+  inertia[i] = sphere_inertia(mass[i], r);
 }
 
 void Particles::add(std::int64_t pid, int mat, double r, double rho, const Vec3& pos, const Vec3& vel) {

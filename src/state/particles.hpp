@@ -7,12 +7,18 @@
 // may change when particles are reordered or removed.
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
 #include <vector>
 
 #include "core/rotation.hpp"
 #include "core/vec3.hpp"
 
 namespace mpdem {
+
+// A solid sphere of radius r (m) and density rho (kg/m^3): mass 4/3 pi r^3 rho (kg) and moment
+// of inertia 2/5 m r^2 (kg m^2, (32)).
+inline double sphere_mass(double r, double rho) { return 4.0 / 3.0 * std::numbers::pi * r * r * r * rho; }
+inline double sphere_inertia(double mass, double r) { return 0.4 * mass * r * r; }
 
 struct Particles {
   // --- constant properties [N] ---

@@ -4,13 +4,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "physics/barrier_moduli.hpp"
+#include "physics/hertz.hpp"
+
 namespace mpdem::validate {
 
-double effective_modulus(double Ei, double nui, double Ej, double nuj) {
-  // A rigid wall (E = +inf, [[barriers]] rigid = true) adds no compliance; (51) would give inf/inf.
-  if (std::isinf(Ej)) return Ei / (1.0 - nui * nui);
-  return Ei * Ej / (Ej * (1.0 - nui * nui) + Ei * (1.0 - nuj * nuj));
-}
 
 HertzLine::HertzLine(std::vector<LineSphere> spheres, std::optional<LineWall> wall, double max_step)
     : s_(std::move(spheres)), wall_(wall), max_step_(max_step) {
@@ -21,7 +19,7 @@ HertzLine::HertzLine(std::vector<LineSphere> spheres, std::optional<LineWall> wa
     k_pair_.push_back(4.0 / 3.0 * effective_modulus(a.young, a.poisson, b.young, b.poisson) * std::sqrt(r_star));
   }
   if (wall_)
-    k_wall_ = 4.0 / 3.0 * effective_modulus(s_[0].young, s_[0].poisson, wall_->young, wall_->poisson) *
+    k_wall_ = 4.0 / 3.0 * barrier_effective_modulus(s_[0].young, s_[0].poisson, wall_->young, wall_->poisson) *
               std::sqrt(s_[0].radius);
 }
 

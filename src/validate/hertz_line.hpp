@@ -24,8 +24,6 @@ struct LineWall {
   double poisson = 0.0;  // -
 };
 
-// E* of two bodies, (51); Ej = +inf (a rigid wall) gives the limit Ei/(1 - nui^2)   [Pa]
-double effective_modulus(double Ei, double nui, double Ej, double nuj);
 
 class HertzLine {
  public:

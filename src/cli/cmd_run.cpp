@@ -1,6 +1,7 @@
 #include <fmt/core.h>
 #include <omp.h>
 
+#include "check/scene_checks.hpp"
 #include "cli/commands.hpp"
 #include "cli/output_folder.hpp"
 #include "cli/run_paths.hpp"
@@ -13,6 +14,15 @@ int run_command(const RunArgs& args) {
   if (args.threads > 0) omp_set_num_threads(args.threads);
   Scene scene = load_scene(args.scene);  // InputError propagates to main: exit 2, nothing written
   warn_about_time_step(scene);
+  // A resumed run continues from the checkpoint's state, not the scene's initial one.
+  if (args.resume.empty()) {
+    const std::size_t stopping = print_problems(check_scene(scene), true);
+    if (stopping > 0) {
+      fmt::print(stderr, "error: the run would stop at its first step ({} problem{} above); nothing was run\n",
+                 stopping, stopping == 1 ? "" : "s");
+      return 2;
+    }
+  }
   RunOptions opt;
   opt.output_dir = args.output;
   opt.progress = !args.quiet;

@@ -34,7 +34,8 @@ int dispatch(int argc, char** argv) {
   run_cmd->add_option("--resume", run.resume, "continue from a checkpoint written by an earlier run of this scene");
 
   std::filesystem::path check_scene;
-  auto* check_cmd = app.add_subcommand("check", "validate a scene; print a summary and the recommended time step");
+  auto* check_cmd = app.add_subcommand(
+      "check", "validate a scene; print a summary, the recommended time step and every problem found before step 1");
   check_cmd->add_option("scene", check_scene, "scene file (TOML)")->required();
 
   mpdem::cli::BenchArgs bench;

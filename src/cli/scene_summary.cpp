@@ -11,14 +11,21 @@
 
 namespace mpdem::cli {
 
+namespace {
+std::string speed_text(const TimeStepAdvice& a) {
+  if (a.reference_speed > a.impact.speed)
+    return fmt::format("{:.3g} m/s (the floor; expected impacts are slower)", a.reference_speed);
+  return fmt::format("{:.3g} m/s (expected impact speed: {})", a.reference_speed, a.impact.origin());
+}
+}  // namespace
+
 TimeStepAdvice time_step_advice(const Scene& scene) {
   const Particles& p = scene.particles;
   const Barriers& b = scene.barriers;
   TimeStepAdvice a;
-  double vmax = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) vmax = std::max(vmax, norm(p.v[i]));
-  // Impacts faster than the initial motion arise from falls; 1 m/s is a conservative floor.
-  a.reference_speed = std::max(vmax, 1.0);
+  a.impact = expected_impact_speed(scene);
+  // A floor for scenes with little motion: slower impacts last longer.
+  a.reference_speed = std::max(a.impact.speed, 1.0);
   const double inf = std::numeric_limits<double>::infinity();
   a.rayleigh = a.hertz_pp = inf;
   double hertz_pb = inf;
@@ -83,8 +90,8 @@ void print_summary(const Scene& scene) {
              prm.time.integrator == Integrator::Verlet ? "verlet" : "trapezoidal", prm.time.phi, prm.time.dt,
              prm.time.duration, std::ceil(prm.time.duration / prm.time.dt));
   const TimeStepAdvice a = time_step_advice(scene);
-  fmt::print("time step: Rayleigh time {:.4g} s; Hertz contact time at {:.3g} m/s: particle-particle {:.4g} s",
-             a.rayleigh, a.reference_speed, a.hertz_pp);
+  fmt::print("time step: Rayleigh time {:.4g} s; Hertz contact time at {}: particle-particle {:.4g} s", a.rayleigh,
+             speed_text(a), a.hertz_pp);
   if (a.hertz_pb > 0.0) fmt::print(", particle-barrier {:.4g} s", a.hertz_pb);
   fmt::print("\nrecommended dt <= {:.4g} s (min of 0.2 x Rayleigh time and contact time / 50)\n", a.recommended);
 }
@@ -94,9 +101,19 @@ void warn_about_time_step(const Scene& scene) {
   if (a.recommended > 0.0 && scene.model.params.time.dt > a.recommended)
     fmt::print(stderr,
                "warning: time.dt = {:.4g} s exceeds the recommended {:.4g} s (0.2 x Rayleigh time {:.4g} s, Hertz "
-               "contact time {:.4g} s / 50); contacts may be under-resolved\n",
+               "contact time {:.4g} s at {} / 50); contacts may be under-resolved\n",
                scene.model.params.time.dt, a.recommended, a.rayleigh,
-               std::min(a.hertz_pp, a.hertz_pb > 0 ? a.hertz_pb : a.hertz_pp));
+               std::min(a.hertz_pp, a.hertz_pb > 0 ? a.hertz_pb : a.hertz_pp), speed_text(a));
+}
+
+std::size_t print_problems(const SceneProblems& problems, bool for_run) {
+  std::size_t errors = 0;
+  for (const SceneProblem& p : problems) {
+    const bool error = for_run ? p.stops_run : p.severity == Severity::Error;
+    errors += error ? 1 : 0;
+    fmt::print(stderr, "{}: {}\n", error ? "error" : "warning", located_text(p));
+  }
+  return errors;
 }
 
 }  // namespace mpdem::cli

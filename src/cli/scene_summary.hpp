@@ -1,5 +1,8 @@
 #pragma once
-// Scene summary for `mpdem check` and the start-up warning of `mpdem run`.
+// Scene summary for `mpdem check`, the start-up warning of `mpdem run`, and how both print the
+// problems of the checks before the run (check/scene_checks.hpp).
+#include "check/impact_overlap.hpp"
+#include "check/scene_problem.hpp"
 #include "model/scene.hpp"
 
 namespace mpdem::cli {
@@ -8,7 +11,8 @@ struct TimeStepAdvice {
   double rayleigh = 0.0;         // s, smallest Rayleigh time over the particles
   double hertz_pp = 0.0;         // s, shortest particle-particle Hertz contact at the reference speed
   double hertz_pb = 0.0;         // s, shortest particle-barrier Hertz contact (0 without barriers)
-  double reference_speed = 0.0;  // m/s, max(largest initial speed, 1 m/s)
+  double reference_speed = 0.0;  // m/s, max(expected impact speed, 1 m/s)
+  ImpactSpeed impact;            // the expected impact speed and what sets it
   double recommended = 0.0;      // s, min(0.2 rayleigh, hertz / 50)
 };
 
@@ -16,5 +20,8 @@ TimeStepAdvice time_step_advice(const Scene& scene);
 void print_summary(const Scene& scene);
 // Warns on stderr when time.dt exceeds the recommended step.
 void warn_about_time_step(const Scene& scene);
+// Prints every problem on stderr as "error: " or "warning: " and its location. for_run: only the
+// problems that would stop the run are errors, the others warn. Returns how many were errors.
+std::size_t print_problems(const SceneProblems& problems, bool for_run);
 
 }  // namespace mpdem::cli

@@ -4,6 +4,7 @@
 
 #include "core/deterministic_sum.hpp"
 #include "core/parallel.hpp"
+#include "integrate/verlet_drift.hpp"
 
 namespace mpdem {
 
@@ -77,17 +78,28 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
       p.T[i] += dt * p.heat[i] / (p.mass[i] * model_.materials[static_cast<std::size_t>(p.material[i])].heat_capacity);
   }
   f.evaluate(p, b, EvalRequest{t + dt, dt, policy().phi, true});
-  // Second kick, with the health scan of the end state in the same pass (sim/state_scan.hpp).
+  // Second kick, with the health scan of the end state (sim/state_scan.hpp) and the next step's
+  // neighbour-list check (the drift of a step of the same length) in the same pass.
   const FieldParams& fields = params_.fields;
   const DomainParams& domain = params_.domain;
-  StepReport rep;
-  rep.scan = scan_from_sums(
-      deterministic_block_sums<kScanSums>(n, [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums>& acc) {
+  const Interactions::DriftCheck next = f.next_drift_check(p, b, dt);
+  const auto sums = deterministic_block_sums<kScanSums + 1>(
+      n, [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums + 1>& acc) {
         // A block at a time: the kick vectorises, and the scan then reads what is still in cache.
         kick_range(p.v.data(), p.w.data(), p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(), lo, hi,
                    half, rotation);
-        scan_range(p, lo, hi, fields, domain, acc);
-      }));
+        if (next.x_build)
+          acc[kScanSums] += static_cast<double>(
+              drift_beyond(p.x.data(), next.x_build, p.v.data(), p.force.data(), p.mass.data(), lo, hi, dt, next.lim2));
+        std::array<double, kScanSums> s{};
+        scan_range(p, lo, hi, fields, domain, s);
+        for (int k = 0; k < kScanSums; ++k) acc[k] += s[k];
+      });
+  std::array<double, kScanSums> scan{};
+  std::copy_n(sums.begin(), kScanSums, scan.begin());
+  f.record_next_drift(next, p, static_cast<std::size_t>(sums[kScanSums]));
+  StepReport rep;
+  rep.scan = scan_from_sums(scan);
   rep.scanned = true;
   rep.evaluations = 1;
   return rep;

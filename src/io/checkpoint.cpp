@@ -3,8 +3,9 @@
 // particle arrays in their current order (with the rates of the accepted state), the
 // neighbour lists' build positions (rebuilds then happen at the same steps), contact history,
 // statistics, the adaptive step, the output series and the run record of the end-of-run summary
-// (drift, deepest contact). The file is a sequence of named,
-// checksummed sections (io/checkpoint_format.hpp).
+// (drift, deepest contact) - and the fingerprint of the scene the run started from, so that a
+// resume with another scene is refused (io/scene_fingerprint.hpp). The file is a sequence of
+// named, checksummed sections (io/checkpoint_format.hpp).
 #include <fmt/core.h>
 
 #include <string>
@@ -17,6 +18,7 @@
 #include "io/checkpoint_format.hpp"
 #include "io/input_error.hpp"
 #include "io/output_manager.hpp"
+#include "io/scene_fingerprint.hpp"
 #include "sim/simulation.hpp"
 
 namespace mpdem {
@@ -24,11 +26,9 @@ namespace mpdem {
 namespace {
 // The run's own counters, field by field (one list for writing and reading).
 template <class F>
-void for_each_counter(std::uint64_t& barriers, std::uint64_t& materials, double& time, std::uint64_t& steps,
-                      std::uint64_t& evaluations, std::size_t& removed, std::uint64_t& redone, double& dt,
-                      double& last_balance, double& last_active, bool& energy_checked, F&& f) {
-  f(barriers);
-  f(materials);
+void for_each_counter(double& time, std::uint64_t& steps, std::uint64_t& evaluations, std::size_t& removed,
+                      std::uint64_t& redone, double& dt, double& last_balance, double& last_active,
+                      bool& energy_checked, F&& f) {
   f(time);
   f(steps);
   f(evaluations);
@@ -43,10 +43,10 @@ void for_each_counter(std::uint64_t& barriers, std::uint64_t& materials, double&
 
 void Simulation::write_checkpoint(const std::filesystem::path& file) {
   CheckpointWriter w;
-  std::uint64_t barriers = scene_.barriers.size(), materials = scene_.model.materials.size();
+  w.section("scene_fingerprint", [&](BinaryWriter& o) { save_fingerprint(o, fingerprint_); });
   w.section("run", [&](BinaryWriter& o) {
-    for_each_counter(barriers, materials, time_, steps_, evaluations_, removed_, redone_, dt_, last_balance_,
-                     last_active_, energy_checked_, [&](auto& v) { o.value(v); });
+    for_each_counter(time_, steps_, evaluations_, removed_, redone_, dt_, last_balance_, last_active_, energy_checked_,
+                     [&](auto& v) { o.value(v); });
   });
   w.section("run_record", [&](BinaryWriter& o) { RunRecord::for_each_field(record_, [&](auto& v) { o.value(v); }); });
   // One section per particle array, by name: an array added to Particles adds a section, and a
@@ -80,12 +80,20 @@ void Simulation::resume_from(const std::filesystem::path& file) {
       f(s);
       r.done(section, s);
     };
+    // The scene first: a checkpoint of another scene is refused saying what differs, before its
+    // arrays are compared with this scene's (which would only say that counts differ).
+    read("scene_fingerprint", [&](BinaryReader& s) {
+      const std::string differs = fingerprint_difference(load_fingerprint(s), fingerprint_);
+      if (!differs.empty())
+        throw InputError(scene_.file.empty() ? name : scene_.file.string(), 0, "",
+                         fmt::format("cannot resume from the checkpoint '{}': it was written for another scene - this "
+                                     "scene differs from that one in its {}. Resume with the scene the checkpoint "
+                                     "was written for, or start a new run; editable on resume: {} (docs/output.md)",
+                                     name, differs, kEditableOnResume));
+    });
     read("run", [&](BinaryReader& s) {
-      std::uint64_t barriers = 0, materials = 0;
-      for_each_counter(barriers, materials, time_, steps_, evaluations_, removed_, redone_, dt_, last_balance_,
-                       last_active_, energy_checked_, [&](auto& v) { v = s.value<std::decay_t<decltype(v)>>(); });
-      if (barriers != scene_.barriers.size() || materials != scene_.model.materials.size())
-        throw std::runtime_error("it was written for a scene with other barriers or materials");
+      for_each_counter(time_, steps_, evaluations_, removed_, redone_, dt_, last_balance_, last_active_,
+                       energy_checked_, [&](auto& v) { v = s.value<std::decay_t<decltype(v)>>(); });
     });
     read("run_record", [&](BinaryReader& s) {
       RunRecord::for_each_field(record_, [&](auto& v) { v = s.value<std::decay_t<decltype(v)>>(); });
@@ -104,6 +112,8 @@ void Simulation::resume_from(const std::filesystem::path& file) {
     // The output series are restored once run() has opened the outputs.
     if (r.has("output")) read("output", [&](BinaryReader& s) { resume_output_state_ = s.rest(); });
     r.finish();
+  } catch (const InputError&) {
+    throw;
   } catch (const std::runtime_error& e) {
     throw InputError(name, 0, "", std::string("cannot resume from this checkpoint: ") + e.what());
   }

@@ -19,7 +19,7 @@
 
 namespace mpdem {
 
-inline constexpr std::uint32_t kCheckpointFormat = 5;
+inline constexpr std::uint32_t kCheckpointFormat = 6;
 
 class CheckpointWriter {
  public:

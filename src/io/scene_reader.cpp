@@ -292,14 +292,18 @@ Scene parse_scene_file(const std::filesystem::path& file) {
 
 Scene load_scene(const std::filesystem::path& file) {
   Scene scene = parse_scene_file(file);
-  for (const ParticleSource& src : scene.particle_sources) {
+  for (ParticleSource& src : scene.particle_sources) {
     const int mat = src.material.empty() ? 0 : scene.model.material_index(src.material);
+    src.first = scene.particles.size();
     if (src.generate) add_generated_particles(*src.generate, scene.model, mat, scene.particles);
     else read_particle_csv(src.file, scene.model, mat, scene.particles);
+    src.count = scene.particles.size() - src.first;
   }
-  for (const BarrierSource& src : scene.barrier_sources) {
+  for (BarrierSource& src : scene.barrier_sources) {
+    src.first = scene.barriers.size();
     if (!src.stl.empty()) read_stl_barriers(src, scene.model, scene.barriers);
     else read_barrier_csv(src.file, src, scene.model, scene.barriers);
+    src.count = scene.barriers.size() - src.first;
   }
   resolve_material_variants(scene.model, scene.particles, scene.barriers, scene.file.string());
   // neighbor.skin stays 0 when [neighbor] gives none: the engine derives it from the radii.

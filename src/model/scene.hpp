@@ -23,6 +23,7 @@ struct ParticleSource {
   std::optional<GenerateSpec> generate;  // set instead of `file` for generated particles
   std::string material;                  // default material name ("" = first material)
   std::size_t line = 0;                  // line of the entry in the scene file, for messages
+  std::size_t first = 0, count = 0;      // its particles [first, first + count) as loaded (before any reordering)
 };
 
 // [[barriers]] entry: a barrier CSV file or an STL file, with defaults for its elements.
@@ -40,6 +41,7 @@ struct BarrierSource {
   Vec3 translate{};                   // STL only: m, translation after scale and rotation
   std::string origin;                 // the scene file, for messages about the entry's keys ("" = none)
   std::size_t line = 0;               // line of the entry in `origin`
+  std::size_t first = 0, count = 0;   // its elements [first, first + count) of the scene's barriers
 };
 
 struct Model {

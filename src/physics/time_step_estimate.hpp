@@ -1,5 +1,5 @@
 #pragma once
-// Critical time-step estimates used by `mpdem check` and the run's start-up warning.
+// Critical time-step and impact estimates used by `mpdem check` and the run's start-up warning.
 #include <cmath>
 #include <numbers>
 
@@ -11,13 +11,23 @@ inline double rayleigh_time(double radius, double density, double young, double 
   return std::numbers::pi * radius * std::sqrt(density / G) / (0.1631 * poisson + 0.8766);
 }
 
+// Largest overlap of an undamped Hertz impact at normal speed v, from energy conservation
+// (1/2 m* v^2 = 8/15 E* sqrt(r*) delta^(5/2)):
+//   delta_max = (15 m* v^2 / (16 E* sqrt(r*)))^(2/5)   [m]
+inline double hertz_peak_overlap(double m_eff, double E_eff, double r_eff, double v) {
+  return std::pow(15.0 * m_eff * v * v / (16.0 * E_eff * std::sqrt(r_eff)), 0.4);
+}
+
+// Largest overlap of an undamped linear-spring impact (stiffness k, N/m) at speed v:
+//   delta_max = v sqrt(m* / k)   [m]
+inline double linear_peak_overlap(double m_eff, double k, double v) { return v * std::sqrt(m_eff / k); }
+
 // Duration of an elastic Hertz impact at normal speed v:
-//   t_c = 2.943275 delta_max / v,  delta_max = (15 m* v^2 / (16 E* sqrt(r*)))^(2/5)   [s]
+//   t_c = 2.943275 delta_max / v   [s]
 // (2.943275 = 2 integral_0^1 dx / sqrt(1 - x^(5/2)) = 0.8 B(2/5, 1/2), from energy
 // conservation; equivalently t_c = 2.868266 (m*^2 / (r* E*^2 v))^(1/5)).
 inline double hertz_contact_time(double m_eff, double E_eff, double r_eff, double v) {
-  const double delta_max = std::pow(15.0 * m_eff * v * v / (16.0 * E_eff * std::sqrt(r_eff)), 0.4);
-  return 2.9432751843247047 * delta_max / v;
+  return 2.9432751843247047 * hertz_peak_overlap(m_eff, E_eff, r_eff, v) / v;
 }
 
 }  // namespace mpdem

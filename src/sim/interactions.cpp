@@ -9,6 +9,7 @@
 #include "contact/barrier_contacts.hpp"
 #include "thermal/heat_transfer.hpp"
 #include "field/near_field_forces.hpp"
+#include "integrate/verlet_drift.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "contact/particle_contacts.hpp"
 
@@ -39,20 +40,6 @@ bool some_reach(const Vec3* __restrict x, const Vec3* __restrict x_build, const 
   }
   return out;
 }
-// How many particles i in [lo, hi) end velocity Verlet's drift dx = dt (v + dt/2 F/m) farther
-// than sqrt(lim2) from x_ref. The arithmetic and its order are VerletIntegrator's (no
-// contraction), so the evaluation sees these very positions; kDriftMargin2 covers any last bit.
-std::size_t drift_beyond(const Vec3* __restrict x, const Vec3* __restrict x_ref, const Vec3* __restrict v,
-                         const Vec3* __restrict f, const double* __restrict m, std::size_t lo, std::size_t hi,
-                         double dt, double lim2) {
-  const double half = 0.5 * dt;
-  std::size_t beyond = 0;
-  for (std::size_t i = lo; i < hi; ++i) {
-    const Vec3 x1 = x[i] + dt * (v[i] + (half / m[i]) * f[i]);
-    beyond += norm2(x1 - x_ref[i]) > lim2 ? 1 : 0;
-  }
-  return beyond;
-}
 }  // namespace
 
 double default_skin(const Model& model, const Particles& p) {
@@ -79,6 +66,7 @@ Interactions::~Interactions() = default;
 double Interactions::skin() const { return search_->skin(); }
 
 void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
+  next_drift_.valid = false;
   ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
   std::vector<std::uint32_t> old_index;  // old index of each particle after the rebuild
   if (reorder && p.size() > 1) {
@@ -101,7 +89,12 @@ void Interactions::prepare_step(Particles& p, const Barriers& b, double dt) {
     // Every particle's displacement since the build at the step's evaluation within `limit`
     // leaves the barriers their allowance (checked again at that evaluation).
     const double limit = 0.5 * search_->skin() - barrier_reach(b, dt);  // m
-    if (limit > 0.0 && drift_within(p, dt, limit, true)) {
+    const NextDrift known = next_drift_;
+    next_drift_.valid = false;
+    // The last step's final pass checked these very drifts (record_next_drift) when it assumed
+    // this step's length and no more room than there is now; otherwise one pass here.
+    const bool checked = known.valid && known.dt == dt && known.n == p.size() && known.limit <= limit;
+    if (limit > 0.0 && (checked ? known.within : drift_within(p, dt, limit, true))) {
       predicted_displacement_ = limit;
       return;
     }
@@ -110,6 +103,17 @@ void Interactions::prepare_step(Particles& p, const Barriers& b, double dt) {
     return;
   }
   if (rebuild_due(p, b, dt)) rebuild(p, b, true);
+}
+
+Interactions::DriftCheck Interactions::next_drift_check(const Particles& p, const Barriers& b, double dt) const {
+  if (!policy_.drift_known || !(dt > 0.0) || stale(p, b)) return {};
+  const double limit = 0.5 * search_->skin() - barrier_reach(b, dt);  // m
+  if (!(limit > 0.0)) return {};
+  return {search_->pairs().build_positions().data(), limit * limit / kDriftMargin2, limit, dt};
+}
+
+void Interactions::record_next_drift(const DriftCheck& c, const Particles& p, std::size_t beyond) {
+  next_drift_ = NextDrift{c.x_build != nullptr, beyond == 0, c.limit, c.dt, p.size()};
 }
 
 bool Interactions::stale(const Particles& p, const Barriers& b) const {
@@ -160,6 +164,7 @@ bool Interactions::rebuild_due(const Particles& p, const Barriers& b, double dt)
 void Interactions::force_rebuild(Particles& p, const Barriers& b, bool reorder) { rebuild(p, b, reorder); }
 
 void Interactions::remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep) {
+  next_drift_.valid = false;
   ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
   std::vector<std::uint32_t> old_index;  // old index of each particle kept
   for (std::size_t i = 0; i < keep.size(); ++i)
@@ -172,6 +177,7 @@ void Interactions::remove_particles(Particles& p, const Barriers& b, const std::
 }
 
 void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
+  next_drift_.valid = false;  // the forces change
   b.move_to(req.time);
   table_.build(model_);  // a material or [contact] value edited between steps acts now
   std::fill(b.force.begin(), b.force.end(), Vec3{});
@@ -297,6 +303,7 @@ void Interactions::save(CheckpointWriter& w, const Particles& p) const {
 }
 
 void Interactions::restore(CheckpointReader& r, const Particles& p, const Barriers& b) {
+  next_drift_.valid = false;
   read_section(r, "interactions", [&](BinaryReader& in) {
     for_each_stat(stats_, [&](auto& v) { v = in.value<std::decay_t<decltype(v)>>(); });
     out_barriers_ = in.value<double>();

@@ -77,6 +77,18 @@ class Interactions {
   // and the force accumulators follow the particles). The only place that reorders. dt = 0:
   // rebuilds only when the lists are already stale.
   void prepare_step(Particles& p, const Barriers& b, double dt = 0.0);
+  // The next step's list check, for an integrator whose last pass computes the next drift
+  // (StepPolicy::drift_known): it counts the particles drift_beyond (integrate/verlet_drift.hpp)
+  // x_build by more than sqrt(lim2), and hands the count to record_next_drift, which spares
+  // prepare_step a pass over the particles. x_build is null when no such check is possible.
+  struct DriftCheck {
+    const Vec3* x_build = nullptr;  // m, positions at the last build [N]
+    double lim2 = 0.0;              // m^2, squared displacement allowed (skin/2 less the barriers' reach)
+    double limit = 0.0;             // m
+    double dt = 0.0;                // s, the next step's length the check assumes
+  };
+  DriftCheck next_drift_check(const Particles& p, const Barriers& b, double dt) const;
+  void record_next_drift(const DriftCheck& c, const Particles& p, std::size_t beyond);
   // Fills force, torque, heat of every particle (and the barriers' loads) for the current state.
   // Never reorders. Should the particles have moved beyond what prepare_step foresaw, it rebuilds
   // the lists in place first (counted by mid_step_rebuilds()).
@@ -126,6 +138,15 @@ class Interactions {
   // m, bound on the particles' displacement since the build at the next evaluation, set by
   // prepare_step when the step's drift is known (StepPolicy::drift_known); -1: unknown.
   double predicted_displacement_ = -1.0;
+  // The integrator's check of the coming step (record_next_drift), valid until the state, the
+  // forces or the lists change (an evaluation, a rebuild, a removal, a restore).
+  struct NextDrift {
+    bool valid = false;
+    bool within = false;  // every particle's drift within limit of its build position
+    double limit = 0.0;   // m
+    double dt = 0.0;      // s
+    std::size_t n = 0;    // particles
+  } next_drift_;
   std::unique_ptr<NeighborSearch> search_;
   std::unique_ptr<ParticleContacts> pp_;
   std::unique_ptr<BarrierContacts> pb_;

@@ -34,7 +34,8 @@ Scene& with_materials_by_index(Scene& scene) {
 }  // namespace
 
 Simulation::Simulation(Scene&& scene, RunOptions options)
-    : scene_(std::move(with_materials_by_index(scene))), options_(std::move(options)),
+    : fingerprint_(fingerprint_scene(scene)), scene_(std::move(with_materials_by_index(scene))),
+      options_(std::move(options)),
       interactions_(std::make_unique<Interactions>(scene_.model, scene_.particles, scene_.barriers,
                                                    integrator_policy(scene_.model.params))),
       trapezoidal_(scene_.model), verlet_(scene_.model), dt_(scene_.model.params.time.dt) {}

@@ -9,6 +9,7 @@
 #include "integrate/step_report.hpp"
 #include "integrate/trapezoidal.hpp"
 #include "integrate/verlet.hpp"
+#include "io/scene_fingerprint.hpp"
 #include "model/scene.hpp"
 #include "sim/energy.hpp"
 #include "sim/run_record.hpp"
@@ -74,6 +75,9 @@ class Simulation {
   // scan of the particles.
   double energy_balance(const StateScan& s) const;
 
+  // The scene as given, before any step: checkpoints carry it, a resume compares it. Declared
+  // before scene_ so that it is taken from the constructor's argument before that is moved.
+  SceneFingerprint fingerprint_;
   Scene scene_;
   RunOptions options_;
   std::unique_ptr<Interactions> interactions_;

@@ -1,0 +1,308 @@
+#include "io/scene_fingerprint.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <iterator>
+#include <memory>
+#include <optional>
+#include <type_traits>
+#include <utility>
+
+namespace mpdem {
+
+namespace {
+
+// FNV-1a (64 bit) over the exact bytes of each value: any edit of a double, even in its last
+// bit, changes the item. Strings add their length first, so that "ab" + "c" differs from "a" + "bc".
+class Hash {
+ public:
+  void add(std::uint64_t v) {
+    for (int k = 0; k < 8; ++k) {
+      h_ ^= (v >> (8 * k)) & 0xffu;
+      h_ *= 0x100000001b3ull;
+    }
+  }
+  void add(std::int64_t v) { add(static_cast<std::uint64_t>(v)); }
+  void add(int v) { add(static_cast<std::int64_t>(v)); }
+  void add(bool v) { add(std::uint64_t{v}); }
+  void add(double v) { add(std::bit_cast<std::uint64_t>(v)); }
+  void add(const Vec3& v) {
+    add(v.x);
+    add(v.y);
+    add(v.z);
+  }
+  void add(const Quat& q) {
+    add(q.w);
+    add(q.x);
+    add(q.y);
+    add(q.z);
+  }
+  void add(const std::string& s) {
+    add(std::uint64_t{s.size()});
+    for (const char c : s) {
+      h_ ^= static_cast<unsigned char>(c);
+      h_ *= 0x100000001b3ull;
+    }
+  }
+  template <class T>
+  void add(const std::optional<T>& v) {
+    add(v.has_value());
+    if (v) add(*v);
+  }
+  template <class E>
+  requires std::is_enum_v<E>
+  void add(E e) { add(static_cast<std::int64_t>(e)); }
+  std::uint64_t value() const { return h_; }
+
+ private:
+  std::uint64_t h_ = 0xcbf29ce484222325ull;
+};
+
+template <class... T>
+std::uint64_t hash_of(const T&... v) {
+  Hash h;
+  (h.add(v), ...);
+  return h.value();
+}
+
+// A part made of named keys (fixed items), then entries labelled by `entry_label`.
+class KeyedPart {
+ public:
+  explicit KeyedPart(std::string name) { part_.name = std::move(name); }
+  template <class... T>
+  void key(std::string k, const T&... v) {
+    part_.items.push_back(hash_of(v...));
+    keys_->push_back(std::move(k));
+  }
+  FingerprintPart finish(std::string entries = "", std::vector<std::string> entry_labels = {}) {
+    part_.fixed = part_.items.size();
+    part_.entries = std::move(entries);
+    part_.label = [keys = keys_, entry_labels = std::move(entry_labels)](std::size_t k) {
+      if (k < keys->size()) return (*keys)[k];
+      k -= keys->size();
+      return k < entry_labels.size() ? entry_labels[k] : "entry " + std::to_string(k + 1);
+    };
+    return std::move(part_);
+  }
+  FingerprintPart& part() { return part_; }
+
+ private:
+  FingerprintPart part_;
+  std::shared_ptr<std::vector<std::string>> keys_ = std::make_shared<std::vector<std::string>>();
+};
+
+FingerprintPart materials_part(const std::vector<Material>& materials) {
+  static constexpr const char* kFields[] = {"name",          "density",    "young",  "poisson",    "conductivity",
+                                            "heat_capacity", "emissivity", "charge", "temperature"};
+  constexpr std::size_t kPer = std::size(kFields);
+  FingerprintPart p{"materials", {}, 0, kPer, "materials", {}};
+  std::vector<std::string> names;
+  for (const Material& m : materials) {
+    p.items.push_back(hash_of(m.name, m.variant_of));
+    for (const double v :
+         {m.density, m.young, m.poisson, m.conductivity, m.heat_capacity, m.emissivity, m.charge, m.temperature})
+      p.items.push_back(hash_of(v));
+    names.push_back(m.variant_of < 0 ? "'" + m.name + "'" : "'" + m.name + "' (a CSV row's own values)");
+  }
+  p.label = [names = std::move(names)](std::size_t k) {
+    const std::size_t m = k / kPer, f = k % kPer;
+    if (f == 0) return "the name of material " + std::to_string(m + 1) + ", " + names[m];
+    return "material " + names[m] + ": " + kFields[f];
+  };
+  return p;
+}
+
+// Scenes built in code may leave an element's group unnamed.
+std::string group_name(const std::vector<std::string>& names, int g) {
+  return g >= 0 && static_cast<std::size_t>(g) < names.size() ? names[static_cast<std::size_t>(g)] : "";
+}
+
+FingerprintPart barriers_part(const Barriers& b) {
+  static constexpr const char* kAspects[] = {"id or group", "rest vertices", "motion law",
+                                             "young, poisson, thickness or temperature"};
+  constexpr std::size_t kPer = std::size(kAspects);
+  FingerprintPart p{"barriers", {}, 0, kPer, "barrier elements", {}};
+  p.items.reserve(b.size() * kPer);
+  for (std::size_t e = 0; e < b.size(); ++e) {
+    const std::string group = group_name(b.group_names, b.group[e]);
+    const MotionLaw& m = b.motion[e];
+    p.items.push_back(hash_of(b.id[e], group));
+    p.items.push_back(hash_of(b.p0[e], b.p1[e], b.p2[e]));
+    p.items.push_back(hash_of(m.a, m.A, m.w1, m.B, m.w2));
+    p.items.push_back(hash_of(b.young[e], b.poisson[e], b.thickness[e], b.temperature[e]));
+  }
+  p.label = [ids = b.id, group = b.group, names = b.group_names](std::size_t k) {
+    const std::size_t e = k / kPer;
+    return "element id " + std::to_string(ids[e]) + " of group '" + group_name(names, group[e]) +
+           "': " + kAspects[k % kPer];
+  };
+  return p;
+}
+
+// Mass and inertia are left out: they follow from the radius and the material's density, which
+// the materials part holds (a changed density is then reported once, as a material's).
+FingerprintPart particles_part(const Particles& q) {
+  FingerprintPart p{"particle sources", {}, 0, 1, "particles", {}};
+  p.items.reserve(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i)
+    p.items.push_back(
+        hash_of(q.id[i], q.material[i], q.radius[i], q.charge[i], q.x[i], q.v[i], q.w[i], q.q[i], q.T[i]));
+  p.label = [ids = q.id](std::size_t k) { return "particle id " + std::to_string(ids[k]); };
+  return p;
+}
+
+FingerprintPart domain_part(const DomainParams& d) {
+  KeyedPart k("domain");
+  k.key("[domain] given or not", d.bounded);
+  k.key("domain.min", d.bounded ? d.min : Vec3{});
+  k.key("domain.max", d.bounded ? d.max : Vec3{});
+  return k.finish();
+}
+
+void law_keys(KeyedPart& k, const std::string& kind, const ContactLawParams& c) {
+  const std::string s = "contact." + kind + ".";
+  k.key(s + "law", c.law);
+  k.key(s + "restitution", c.restitution);
+  k.key(s + "damping_ratio", c.damping_ratio);
+  k.key(s + "mu_static", c.mu_static);
+  k.key(s + "mu_dynamic", c.mu_dynamic);
+  k.key(s + "mu_rolling", c.mu_rolling);
+  k.key(s + "tangential_damping", c.tangential_damping);
+  k.key(s + "stiffness_normal", c.stiffness_normal);
+  k.key(s + "stiffness_tangential", c.stiffness_tangential);
+  k.key(s + "tangential_spring", c.tangential_spring);
+}
+
+FingerprintPart contact_part(const ContactParams& c) {
+  KeyedPart k("contact laws");
+  law_keys(k, "particle_particle", c.particle_particle);
+  law_keys(k, "particle_barrier", c.particle_barrier);
+  std::vector<std::string> labels;
+  for (const ContactPairParams& e : c.pairs) {
+    k.part().items.push_back(hash_of(e.material_a, e.material_b, e.particle_particle, e.particle_barrier, e.law,
+                                     e.restitution, e.damping_ratio, e.mu_static, e.mu_dynamic, e.mu_rolling,
+                                     e.tangential_damping, e.stiffness_normal, e.stiffness_tangential,
+                                     e.tangential_spring));
+    labels.push_back("[[contact.pair]] '" + e.material_a + "'-'" + e.material_b + "'");
+  }
+  return k.finish("[[contact.pair]] entries", std::move(labels));
+}
+
+FingerprintPart physics_part(const Params& prm) {
+  KeyedPart k("physics");
+  k.key("analysis.rotation", prm.analysis.rotation);
+  k.key("analysis.thermal", prm.analysis.thermal);
+  k.key("gravity.vector", prm.fields.gravity);
+  k.key("fields.electric", prm.fields.electric);
+  k.key("fields.magnetic", prm.fields.magnetic);
+  const NearFieldParams& nf = prm.near_field;
+  k.key("near_field.empirical", nf.empirical);
+  k.key("near_field.a1", nf.a1);
+  k.key("near_field.b1", nf.b1);
+  k.key("near_field.a2", nf.a2);
+  k.key("near_field.b2", nf.b2);
+  k.key("near_field.coulomb", nf.coulomb);
+  k.key("near_field.permittivity", nf.permittivity);
+  k.key("near_field.cutoff", nf.cutoff);
+  const ThermalParams& th = prm.thermal;
+  k.key("thermal.air_temperature", th.air_temperature);
+  k.key("thermal.air_velocity", th.air_velocity);
+  k.key("thermal.environment_temperature", th.environment_temperature);
+  k.key("thermal.conduction", th.conduction);
+  k.key("thermal.convection", th.convection);
+  k.key("thermal.radiation", th.radiation);
+  std::vector<std::string> labels;
+  for (const NearFieldPair& e : nf.pairs) {
+    k.part().items.push_back(hash_of(e.material_a, e.material_b, e.a1, e.b1, e.a2, e.b2));
+    labels.push_back("[[near_field.pair]] '" + e.material_a + "'-'" + e.material_b + "'");
+  }
+  return k.finish("[[near_field.pair]] entries", std::move(labels));
+}
+
+// The scheme decides what the checkpoint's contact history holds (the trapezoidal rule's
+// step-start values) and what its dt means; the step lengths themselves stay editable.
+FingerprintPart integration_part(const TimeParams& t) {
+  KeyedPart k("time integration");
+  k.key("time.integrator", t.integrator);
+  k.key("time.phi", t.phi);
+  k.key("time.adaptive", t.adaptive);
+  return k.finish();
+}
+
+std::size_t entry_count(const FingerprintPart& p, std::size_t items) {
+  return items > p.fixed ? (items - p.fixed) / std::max<std::size_t>(p.per_entry, 1) : 0;
+}
+
+std::string part_difference(const FingerprintPart& ck, const FingerprintPart& sc) {
+  if (ck.items == sc.items && ck.fixed == sc.fixed && ck.per_entry == sc.per_entry) return "";
+  if (ck.fixed != sc.fixed || ck.per_entry != sc.per_entry) return sc.name + " (its layout)";
+  const std::size_t n = std::min(ck.items.size(), sc.items.size());
+  const std::size_t k = static_cast<std::size_t>(
+      std::mismatch(ck.items.begin(), ck.items.begin() + static_cast<long>(n), sc.items.begin()).first -
+      ck.items.begin());
+  std::string what;
+  if (k < n) what = sc.label ? sc.label(k) : "item " + std::to_string(k + 1);
+  if (ck.items.size() != sc.items.size()) {
+    if (!what.empty()) what += "; ";
+    what += std::to_string(entry_count(sc, sc.items.size())) + " " + sc.entries + ", the checkpoint's scene had " +
+            std::to_string(entry_count(ck, ck.items.size()));
+  }
+  return sc.name + " (" + what + ")";
+}
+
+}  // namespace
+
+SceneFingerprint fingerprint_scene(const Scene& scene) {
+  const Params& prm = scene.model.params;
+  SceneFingerprint f;
+  f.parts.push_back(materials_part(scene.model.materials));
+  f.parts.push_back(barriers_part(scene.barriers));
+  f.parts.push_back(particles_part(scene.particles));
+  f.parts.push_back(domain_part(prm.domain));
+  f.parts.push_back(contact_part(prm.contact));
+  f.parts.push_back(physics_part(prm));
+  f.parts.push_back(integration_part(prm.time));
+  return f;
+}
+
+void save_fingerprint(BinaryWriter& w, const SceneFingerprint& f) {
+  w.value<std::uint64_t>(f.parts.size());
+  for (const FingerprintPart& p : f.parts) {
+    w.string(p.name);
+    w.value<std::uint64_t>(p.fixed);
+    w.value<std::uint64_t>(p.per_entry);
+    w.vector(p.items);
+  }
+}
+
+SceneFingerprint load_fingerprint(BinaryReader& r) {
+  SceneFingerprint f;
+  const auto n = r.value<std::uint64_t>();
+  for (std::uint64_t k = 0; k < n; ++k) {
+    FingerprintPart p;
+    p.name = r.string();
+    p.fixed = r.value<std::uint64_t>();
+    p.per_entry = r.value<std::uint64_t>();
+    p.items = r.vector<std::uint64_t>();
+    f.parts.push_back(std::move(p));
+  }
+  return f;
+}
+
+std::string fingerprint_difference(const SceneFingerprint& checkpoint, const SceneFingerprint& scene) {
+  std::vector<std::string> differ;
+  for (const FingerprintPart& sc : scene.parts) {
+    const auto ck = std::find_if(checkpoint.parts.begin(), checkpoint.parts.end(),
+                                 [&](const FingerprintPart& p) { return p.name == sc.name; });
+    if (ck == checkpoint.parts.end()) differ.push_back(sc.name + " (not in the checkpoint)");
+    else if (std::string d = part_difference(*ck, sc); !d.empty()) differ.push_back(std::move(d));
+  }
+  std::string s;
+  for (std::size_t k = 0; k < differ.size(); ++k) {
+    if (k > 0) s += k + 1 == differ.size() ? " and " : ", ";
+    s += differ[k];
+  }
+  return s;
+}
+
+}  // namespace mpdem

@@ -1,0 +1,113 @@
+// `mpdem check` reports every problem it finds before step 1, each with file and line or ids
+// (exit 2 on errors, 0 with warnings only); `mpdem run` refuses a start that would stop at step 1
+// and warns about the rest.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "support/run_command.hpp"
+
+using namespace mpdem::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* kFloor =
+    "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n1,-0.1,-0.1,0,0.1,-0.1,0,0.1,0.1,0\n2,-0.1,-0.1,0,0.1,0.1,0,-0.1,0.1,0\n";
+
+std::string scene(const std::string& young, const std::string& extra = "") {
+  return "[time]\nduration = 0.002\ndt = 1e-6\nintegrator = \"verlet\"\n[[material]]\nname = \"glass\"\nyoung = " +
+         young + "\n[[particles]]\nfile = \"p.csv\"\n[[barriers]]\nfile = \"floor.csv\"\n" + extra;
+}
+
+std::size_t count(const std::string& text, const std::string& part) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
+fs::path scene_dir(const std::string& name, const std::string& particles) {
+  const fs::path d = fresh_dir(name);
+  write_text(d / "p.csv", particles);
+  write_text(d / "floor.csv", kFloor);
+  return d;
+}
+
+}  // namespace
+
+TEST(CheckCommand, ReportsEveryProblemWithIdsAndExits2) {
+  // id 7 outside the domain, ids 1 and 2 overlapping by 40 %, id 3 in the floor, and a generate
+  // region that a baffle (element 11) crosses.
+  const fs::path d = scene_dir("check_all", "id,x,y,z,radius\n1,0.05,0.05,0.01,0.001\n2,0.0516,0.05,0.01,0.001\n"
+                                            "3,-0.05,0.05,0.0008,0.001\n7,0.5,0,0.01,0.001\n");
+  write_text(d / "baffle.csv", "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n11,-0.03,-0.05,0.03,-0.03,0,0.03,-0.03,0,0.07\n");
+  write_text(d / "scene.toml",
+             scene("1e9",
+                   "[[barriers]]\nfile = \"baffle.csv\"\n"
+                   "[[particles]]\ngenerate = { region = \"box\", min = [-0.05, -0.05, 0.04], max = [0.0, 0.0, 0.06], "
+                   "count = 2, radius = 0.001 }\n"
+                   "[domain]\nmin = [-0.1, -0.1, -0.01]\nmax = [0.1, 0.1, 0.2]\n"));
+  const CommandResult r = run_mpdem("check scene.toml", d);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.out.find("particles: 6"), std::string::npos) << r.out;  // the summary still comes
+  for (const char* part :
+       {"p.csv: 1 particle of 'p.csv' lies outside the domain", "id 7 at (0.5, 0, 0.01)",
+        "ids 1 and 2 by 0.0004 m (40%)", "scene.toml:10: 'barriers'", "particle id 3 and element id 2",
+        "scene.toml:14: 'particles.generate.region'", "element id 11", "check: 4 errors, 0 warnings before step 1"})
+    EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' not in:\n" << r.err;
+  EXPECT_EQ(count(r.err, "error: "), 4u) << r.err;
+  fs::remove_all(d);
+}
+
+TEST(CheckCommand, CleanSceneExits0AndNamesTheImpactSpeed) {
+  const fs::path d = scene_dir("check_clean", "id,x,y,z,radius\n1,0,0,0.1,0.001\n2,0.01,0,0.0011,0.001\n");
+  write_text(d / "scene.toml", scene("1e9"));
+  const CommandResult r = run_mpdem("check scene.toml", d);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("error"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("check: "), std::string::npos) << r.err;
+  // The time step's contact time is taken at the speed of a fall over the scene's height.
+  EXPECT_NE(r.out.find("Hertz contact time at 1.4 m/s (expected impact speed: a fall of 0.1 m under gravity)"),
+            std::string::npos)
+      << r.out;
+  fs::remove_all(d);
+}
+
+TEST(CheckCommand, SoftMaterialWarnsAboutTheImpactOverlapAndExits0) {
+  const fs::path d = scene_dir("check_soft", "id,x,y,z,radius\n1,0,0,0.1,0.001\n2,0.01,0,0.0011,0.001\n");
+  write_text(d / "scene.toml", scene("1e5"));
+  const CommandResult r = run_mpdem("check scene.toml", d);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(count(r.err, "'checks.max_overlap': an impact at 1.4 m/s"), 2u) << r.err;
+  EXPECT_NE(r.err.find("check: 0 errors, 2 warnings before step 1"), std::string::npos) << r.err;
+  fs::remove_all(d);
+}
+
+TEST(CheckCommand, RunRefusesAStartThatWouldStopAtStepOne) {
+  const fs::path d = scene_dir("run_refused", "id,x,y,z,radius\n1,0.05,0.05,0.01,0.001\n2,0.0516,0.05,0.01,0.001\n");
+  write_text(d / "scene.toml", scene("1e9"));
+  const CommandResult r = run_mpdem("run scene.toml --quiet", d);
+  EXPECT_EQ(r.status, 2) << r.err;  // it stopped at step 1 with "reduce time.dt", exit 1
+  EXPECT_NE(r.err.find("error: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ids 1 and 2 by 0.0004 m (40%)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the run would stop at its first step (1 problem above); nothing was run"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(d / "output"));
+  fs::remove_all(d);
+}
+
+TEST(CheckCommand, RunWarnsAboutParticlesItWillRemoveAndStarts) {
+  const fs::path d = scene_dir("run_removes", "id,x,y,z,radius\n1,0.05,0.05,0.01,0.001\n7,0.5,0,0.01,0.001\n");
+  write_text(d / "scene.toml", scene("1e9", "[domain]\nmin = [-0.1, -0.1, -0.01]\nmax = [0.1, 0.1, 0.2]\n"
+                                            "on_exit = \"remove\"\n"));
+  const CommandResult r = run_mpdem("run scene.toml --quiet", d);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("id 7 at (0.5, 0, 0.01)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("they would be removed at the first step"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("error"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(d / "output" / "log.csv"));
+  // `check` counts it as an error all the same: the particle never takes part.
+  EXPECT_EQ(run_mpdem("check scene.toml", d).status, 2);
+  fs::remove_all(d);
+}

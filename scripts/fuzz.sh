@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of fuzz/ (clang, ASan + UBSan) and runs one or all of them.
-#   scripts/fuzz.sh [scene|particle_csv|barrier_csv|stl|all] [seconds per target, default 600]
+#   scripts/fuzz.sh [scene|particle_csv|barrier_csv|stl|checkpoint|all] [seconds per target, default 600]
 # Targets run one after the other (-fork=0). New corpus entries go to $BUILD/corpus/<target>
 # (the seeds in fuzz/corpus/<target> are read, never written); crashes, leaks, timeouts and
 # out-of-memory inputs go to $BUILD/artifacts/<target>/; each run's log is $BUILD/logs/<target>.log.
+# The checkpoint seeds are written by the engine: after a checkpoint format change, regenerate them
+# with MPDEM_FUZZ_WRITE_SEEDS=fuzz/corpus/checkpoint $BUILD/fuzz_checkpoint (docs/fuzzing.md).
 # Environment: MPDEM_FUZZ_BUILD (build folder, default build-fuzz), MPDEM_FUZZ_JOBS (default 2).
 # See docs/fuzzing.md. Not part of the default build (scripts/build.sh stays g++-only).
 set -euo pipefail
@@ -46,9 +48,9 @@ fi
 cmake --build "$build" -j "$jobs"
 
 case "$target" in
-  all) targets=(scene particle_csv barrier_csv stl) ;;
-  scene | particle_csv | barrier_csv | stl) targets=("$target") ;;
-  *) echo "usage: scripts/fuzz.sh [scene|particle_csv|barrier_csv|stl|all] [seconds]" >&2; exit 2 ;;
+  all) targets=(scene particle_csv barrier_csv stl checkpoint) ;;
+  scene | particle_csv | barrier_csv | stl | checkpoint) targets=("$target") ;;
+  *) echo "usage: scripts/fuzz.sh [scene|particle_csv|barrier_csv|stl|checkpoint|all] [seconds]" >&2; exit 2 ;;
 esac
 
 status=0
@@ -59,6 +61,7 @@ for t in "${targets[@]}"; do
   max_len=4096
   extra=()
   [ "$t" = stl ] && max_len=100000
+  [ "$t" = checkpoint ] && max_len=16384  # the seeds (fixed scene, 4 particles) are ~3.3 KB
   [ "$t" = scene ] && extra=(-dict=fuzz/toml.dict)
   echo "fuzz.sh: fuzzing $t for $seconds s (log: $build/logs/$t.log)"
   if ! "$exe" -fork=0 -timeout=10 -rss_limit_mb=2048 -max_len=$max_len -max_total_time="$seconds" \

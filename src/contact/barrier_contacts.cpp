@@ -57,7 +57,7 @@ template <int write = 0, class T>
 }
 
 // Pa, from the summed force on element e.
-double element_pressure(const Barriers& b, std::size_t e) { return -dot(b.force[e], b.normal[e]) / b.area[e]; }
+double element_pressure(const Barriers& b, std::size_t e) { return -dot(b.force[e], b.current_normal(e)) / b.area[e]; }
 
 }  // namespace
 
@@ -76,7 +76,7 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
     throw std::logic_error("barrier contacts: the candidate lists do not match the scene");
   if (store_.stale(broad)) store_.relayout(broad);
 
-  // The elements translate rigidly: their triangles (normals, edge directions) once per
+  // The elements move rigidly: their triangles (normals, edge directions) once per
   // evaluation, not per candidate.
   const std::size_t m = b.size();
   tris_.resize(m);
@@ -85,6 +85,17 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
   for (std::size_t e = 0; e < m; ++e) {
     tris_[e] = current_triangle(b, e);
     centres_[e] = b.centre(e);
+  }
+
+  // Rotating elements: the turn of each rotation law since the committed history (the step's
+  // start, req.time - req.dt), which the stored springs follow.
+  const bool rotating = b.rotating();
+  if (rotating) {
+    step_turn_.resize(b.rotations.size());
+    for (std::size_t l = 0; l < b.rotations.size(); ++l) {
+      const RotationLaw& r = b.rotations[l];
+      step_turn_[l] = axis_angle_matrix(r.axis, r.angle(req.time) - r.angle(req.time - req.dt));
+    }
   }
 
   // Each group (the active particles of one block of kGroup particle indices) is summed in
@@ -123,7 +134,8 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
           if (!c.empty()) __builtin_prefetch(c.data());
         }
         if (!batch->room()) flush(p, serial ? &b : nullptr, req, *batch, acc);
-        collect(k, p, b, broad, req, found, *batch, acc);
+        if (rotating) collect<true>(k, p, b, broad, req, found, *batch, acc);
+        else collect<false>(k, p, b, broad, req, found, *batch, acc);
       }
       flush(p, serial ? &b : nullptr, req, *batch, acc);
       partial_[g] = acc;
@@ -141,6 +153,7 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
   return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3], sums[5], sums[6], sums[7], sums[8]};
 }
 
+template <bool kRotating>
 void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers& b, const BarrierBroadphase& broad,
                               const EvalRequest& req, std::vector<BarrierContact>& found, BarrierBatch& batch,
                               BarrierSums& acc) {
@@ -201,9 +214,17 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
     const PairLaw& law = table_.barrier_pair(static_cast<std::size_t>(p.material[i]),
                                              static_cast<std::size_t>(b.material[e]));
     // No history: a zero spring, which project_spring leaves exactly zero.
-    const Vec3 s0 = hist ? hist->spring : Vec3{};
-    const Vec3 vt0 = hist ? hist->vt0 : Vec3{};
-    const Vec3& u = b.velocity[e];
+    Vec3 s0 = hist ? hist->spring : Vec3{};
+    Vec3 vt0 = hist ? hist->vt0 : Vec3{};
+    Vec3 u = b.velocity[e];
+    if constexpr (kRotating) {
+      if (const std::int32_t l = b.rotation_of[e]; l >= 0) {
+        // The surface's own velocity at the contact point; the spring turns with the element.
+        u = b.surface_velocity(e, bc.point);
+        s0 = mat_apply(step_turn_[static_cast<std::size_t>(l)], s0);
+        vt0 = mat_apply(step_turn_[static_cast<std::size_t>(l)], vt0);
+      }
+    }
     const std::size_t t = batch.count++;
     batch.element[t] = static_cast<std::int32_t>(e);
     batch.hist[t] = hist;

@@ -1,7 +1,9 @@
 #pragma once
 // BarrierContacts: Hertz-Mindlin contacts between particles and barrier triangles (physics.md
 // section 7): exact closest-point detection counting each physical contact once, the barrier's
-// motion-law velocity in the relative velocity, the barrier's own E and nu, r* = R, m* = m.
+// surface velocity at the contact point (translation, plus omega x (p - pivot) for a rotating
+// element) in the relative velocity, the barrier's own E and nu, r* = R, m* = m. The springs of a
+// rotating element's contacts turn with it by the step's rotation before their increment.
 //
 // History: each particle keeps up to kSlots contacts (element, spring, start-of-step tangential
 // velocity, normal). A contact that moves onto a neighbouring element of the same surface (a
@@ -60,6 +62,8 @@ class BarrierContacts {
   using BarrierSums = std::array<double, 9>;
   // Contacts of active particle k, stage 1: detects them, finds their history, sets its record
   // counts and appends the contacts with the particle's values to the batch (acc[4]: dropped).
+  // kRotating: some element rotates (surface velocity at the contact point, springs turned).
+  template <bool kRotating>
   void collect(std::size_t k, const Particles& p, const Barriers& b, const BarrierBroadphase& broad,
                const EvalRequest& req, std::vector<BarrierContact>& found, BarrierBatch& batch, BarrierSums& acc);
   // The law over the batch, then in particle and contact order: the tentative history and loads,
@@ -74,6 +78,7 @@ class BarrierContacts {
   std::vector<BarrierSums> partial_;   // [groups] sums of one evaluation, per group
   std::vector<CurrentTriangle> tris_;  // [M] the elements at this evaluation's offsets
   std::vector<Vec3> centres_;          // [M] m, their centroids (Barriers::centre), moment arms
+  std::vector<Mat3> step_turn_;        // [L] -, each rotation law's turn since the step's start
   std::uint64_t overflows_ = 0;
 };
 

@@ -44,6 +44,14 @@ Vec3 rodrigues_from_rotation_vector(const Vec3& theta) {
   return scale * theta;
 }
 
+Mat3 axis_angle_matrix(const Vec3& k, double angle) {
+  // R = cos I + sin [k]x + (1 - cos) k k^T
+  const double c = std::cos(angle), s = std::sin(angle), C = 1.0 - c;
+  return Mat3{{{c + C * k.x * k.x, C * k.x * k.y - s * k.z, C * k.x * k.z + s * k.y},
+               {C * k.y * k.x + s * k.z, c + C * k.y * k.y, C * k.y * k.z - s * k.x},
+               {C * k.z * k.x - s * k.y, C * k.z * k.y + s * k.x, c + C * k.z * k.z}}};
+}
+
 Mat3 mat_multiply(const Mat3& a, const Mat3& b) {
   Mat3 c{};
   for (int i = 0; i < 3; ++i)

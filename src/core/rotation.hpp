@@ -9,7 +9,7 @@
 
 namespace mpdem {
 
-// 3x3 matrix, row-major; only used for orientation output and tests.
+// 3x3 matrix, row-major; orientation output, rotating barriers and tests.
 using Mat3 = std::array<std::array<double, 3>, 3>;
 
 // Q(alpha) = I + 4/(4 + |alpha|^2) (A + A^2/2), A = skew(alpha)        (6)
@@ -75,6 +75,9 @@ inline Quat rotate_by_increment(const Quat& q, const Vec3& theta) {
   const double c = std::cos(0.5 * a), s = std::sin(0.5 * a) / a;
   return renormalized(quat_multiply({c, s * theta.x, s * theta.y, s * theta.z}, q));
 }
+
+// Rotation by `angle` (rad) about the unit vector `axis`, right-handed (Rodrigues' formula).
+Mat3 axis_angle_matrix(const Vec3& axis, double angle);
 
 Mat3 mat_multiply(const Mat3& a, const Mat3& b);
 Vec3 mat_apply(const Mat3& m, const Vec3& v);

@@ -1,8 +1,9 @@
 #pragma once
 // Binary streams for checkpoints: trivially copyable values and vectors of them, native byte
 // order (a checkpoint is resumed on the machine kind that wrote it), each vector prefixed by its
-// length. Reading checks every length against the bytes left, so a truncated or corrupted file
-// gives an error rather than a crash.
+// length. Reading checks every length against the bytes left before allocating, and every bool
+// for 0 or 1, so a truncated or corrupted file gives an error rather than a crash or undefined
+// behaviour.
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -44,14 +45,26 @@ class BinaryReader {
   template <class T>
   T value() {
     static_assert(std::is_trivially_copyable_v<T>);
+    // Every byte pattern must be a valid T: a bool holds only 0 or 1 (another byte loaded as a
+    // bool is undefined behaviour), so it is read as a byte and checked. (An enum would need its
+    // range checked the same way; none is read.)
     need(sizeof(T));
-    T v;
-    std::memcpy(&v, p_, sizeof(T));
-    p_ += sizeof(T);
-    return v;
+    if constexpr (std::is_same_v<T, bool>) {
+      unsigned char b = 0;
+      std::memcpy(&b, p_, 1);
+      if (b > 1) throw std::runtime_error("corrupted data (a flag is neither 0 nor 1)");
+      p_ += 1;
+      return b == 1;
+    } else {
+      T v;
+      std::memcpy(&v, p_, sizeof(T));
+      p_ += sizeof(T);
+      return v;
+    }
   }
   template <class T>
   std::vector<T> vector() {
+    static_assert(!std::is_same_v<T, bool>, "a vector of flags: read them one by one with value<bool>()");
     const auto n = value<std::uint64_t>();
     if (n > static_cast<std::uint64_t>(end_ - p_) / sizeof(T)) throw std::runtime_error("truncated or corrupted data");
     std::vector<T> v(n);

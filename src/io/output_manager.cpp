@@ -88,8 +88,16 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
   group_count_ = barriers.group_names.size();
   if (barrier_log_.every > 0.0 && group_count_ > 0) {
     std::vector<std::string> cols{"time"};
-    for (const auto& g : barriers.group_names)
-      for (const char* c : {"fx", "fy", "fz", "mx", "my", "mz", "area"}) cols.push_back(g + "." + c);
+    group_turns_.assign(group_count_, 0);
+    for (std::size_t e = 0; e < barriers.size(); ++e)
+      if (barriers.rotation_of[e] >= 0) group_turns_[static_cast<std::size_t>(barriers.group[e])] = 1;
+    for (std::size_t g = 0; g < group_count_; ++g) {
+      group_column_.push_back(cols.size());
+      const std::string& name = barriers.group_names[g];
+      for (const char* c : {"fx", "fy", "fz", "mx", "my", "mz", "area"}) cols.push_back(name + "." + c);
+      if (group_turns_[g])
+        for (const char* c : {"torque", "power"}) cols.push_back(name + "." + c);
+    }
     groups_ = log(dir_ / "barrier_groups.csv", cols);
   }
 }
@@ -140,10 +148,11 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
     write_particles_csv(dir_ / fmt::format("particles_csv/particles_{:06d}.csv", particles_csv_.count - 1), p, t);
   }
   if (groups_ && due(barrier_log_, t, dt, end, force)) {
-    std::vector<double> row(1 + 7 * group_count_, 0.0);
+    std::vector<double> row(groups_->columns().size(), 0.0);
     row[0] = t;
     for (std::size_t e = 0; e < b.size(); ++e) {
-      double* g = &row[1 + 7 * static_cast<std::size_t>(b.group[e])];
+      const auto grp = static_cast<std::size_t>(b.group[e]);
+      double* g = &row[group_column_[grp]];
       const Vec3 c = b.centre(e);
       const Vec3 m = b.moment[e] + cross(c, b.force[e]);  // moment about the origin
       g[0] += b.force[e].x;
@@ -153,6 +162,10 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
       g[4] += m.y;
       g[5] += m.z;
       g[6] += b.area[e];
+      if (group_turns_[grp]) {
+        g[7] += b.axis_torque(e);
+        g[8] += b.drive_power(e);
+      }
     }
     groups_->row(row);
   }

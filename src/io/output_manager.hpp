@@ -72,8 +72,10 @@ class OutputManager {
   std::unique_ptr<PvdIndex> particles_pvd_, barriers_pvd_;
   std::unique_ptr<CsvLog> log_, groups_, removed_;
   std::size_t group_count_ = 0;
-  bool near_field_ = false;  // log the near-field potential (and count it in total_energy)
-  bool thermal_ = false;     // log the heat exchanged with the outside and the thermal energy
+  std::vector<char> group_turns_;          // [groups] 1: a rotating element (torque and power columns)
+  std::vector<std::size_t> group_column_;  // [groups] first column of the group in barrier_groups.csv
+  bool near_field_ = false;                // log the near-field potential (and count it in total_energy)
+  bool thermal_ = false;                   // log the heat exchanged with the outside and the thermal energy
 };
 
 }  // namespace mpdem

@@ -128,7 +128,21 @@ FingerprintPart barriers_part(const Barriers& b) {
     const MotionLaw& m = b.motion[e];
     p.items.push_back(hash_of(b.id[e], group));
     p.items.push_back(hash_of(b.p0[e], b.p1[e], b.p2[e]));
-    p.items.push_back(hash_of(m.a, m.A, m.w1, m.B, m.w2));
+    std::uint64_t motion = hash_of(m.a, m.A, m.w1, m.B, m.w2);
+    if (m.rotation) {  // a scene without rotations keeps the hashes it had before rotations existed
+      Hash h;
+      h.add(motion);
+      h.add(m.rotation->axis);
+      h.add(m.rotation->origin);
+      h.add(m.rotation->omega);
+      h.add(std::uint64_t{m.rotation->omega_table.size()});
+      for (const auto& row : m.rotation->omega_table) {
+        h.add(row[0]);
+        h.add(row[1]);
+      }
+      motion = h.value();
+    }
+    p.items.push_back(motion);
     p.items.push_back(hash_of(b.young[e], b.poisson[e], b.thickness[e], b.temperature[e]));
   }
   p.label = [ids = b.id, group = b.group, names = b.group_names](std::size_t k) {

@@ -1,6 +1,7 @@
 // TOML scene reader: maps every table and key of the scene file (docs/scene.md) onto Params,
 // Materials and the particle/barrier sources, validating types and ranges as it goes, then
 // (load_scene) reads the CSV sources into the particle and barrier arrays.
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -159,6 +160,30 @@ std::filesystem::path existing_file(const TomlSection& s, std::string_view k, co
   return p;
 }
 
+// [[barriers]] motion.rotation: a unit axis, its point, and a constant or tabulated rate.
+RotationLaw read_rotation(const TomlSection& r) {
+  RotationLaw law;
+  const Vec3 axis = r.require(r.vec3("axis"), "axis");
+  const double len = norm(axis);
+  if (!(len > 0.0) || !std::isfinite(len))
+    r.fail("axis", "expected a non-zero axis direction [x, y, z] of finite length, got " + number_text(axis.x) + ", " +
+                       number_text(axis.y) + ", " + number_text(axis.z));
+  law.axis = axis / len;
+  r.get("origin", law.origin);
+  if (r.has("omega") && r.has("omega_table")) r.fail("omega_table", "give either omega or omega_table, not both");
+  if (!r.has("omega") && !r.has("omega_table")) r.fail("omega", "missing required key (give omega or omega_table)");
+  r.get("omega", law.omega);
+  if (const auto tab = r.number_pairs("omega_table")) {
+    for (std::size_t j = 1; j < tab->size(); ++j)
+      if (!((*tab)[j][0] > (*tab)[j - 1][0]))
+        r.fail("omega_table",
+               "expected rows [t, omega] with strictly ascending times t, got t = " + number_text((*tab)[j][0]) +
+                   " s in row " + std::to_string(j + 1) + " after t = " + number_text((*tab)[j - 1][0]) + " s");
+    law.omega_table = *tab;
+  }
+  return law;
+}
+
 void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene) {
   std::size_t entry = 0;
   for (const TomlSection& s : root.tables("particles", {"file", "generate", "material"})) {
@@ -201,12 +226,14 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
     s.get("material", src.material);
     if (!src.material.empty()) check_material(s, "material", src.material, scene.model);
     s.get("rigid", src.rigid);
-    if (const auto m = s.table("motion", {"a", "A", "w1", "B", "w2"})) {
+    if (const auto m = s.table("motion", {"a", "A", "w1", "B", "w2", "rotation"})) {
       m->get("a", src.motion.a);
       m->get("A", src.motion.A);
       m->get("w1", src.motion.w1);
       m->get("B", src.motion.B);
       m->get("w2", src.motion.w2);
+      if (const auto r = m->table("rotation", {"axis", "origin", "omega", "omega_table"}))
+        src.motion.rotation = read_rotation(*r);
     }
     s.get("thickness", src.thickness, kNonNegative);
     src.temperature = s.number("temperature", kNonNegative);

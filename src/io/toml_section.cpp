@@ -126,6 +126,36 @@ std::optional<std::vector<std::string>> TomlSection::strings(std::string_view k,
   return out;
 }
 
+std::optional<std::vector<std::array<double, 2>>> TomlSection::number_pairs(std::string_view k) const {
+  const toml::node* n = node(k);
+  if (!n) return std::nullopt;
+  const auto* a = n->as_array();
+  const std::string want = "expected an array of [a, b] rows of numbers, e.g. [[0.0, 0.0], [1.0, 2.0]]";
+  if (!a) fail(k, want + ", got " + type_name(*n));
+  if (a->empty()) fail(k, want + ", got an empty array");
+  std::vector<std::array<double, 2>> out;
+  for (std::size_t j = 0; j < a->size(); ++j) {
+    const toml::node& row = *a->get(j);
+    const std::string at = ", row " + std::to_string(j + 1);
+    const auto bad = [&](const std::string& why) {
+      throw InputError(*file_, row.source().begin.line, key(k), want + at + " " + why);
+    };
+    const auto* r = row.as_array();
+    if (!r) bad("is " + type_name(row));
+    if (r->size() != 2) bad("has " + std::to_string(r->size()) + " elements");
+    std::array<double, 2> v{};
+    for (std::size_t c = 0; c < 2; ++c) {
+      const toml::node& e = *r->get(c);
+      if (const auto* i = e.as_integer()) v[c] = static_cast<double>(i->get());
+      else if (const auto* f = e.as_floating_point()) v[c] = f->get();
+      else bad("element " + std::to_string(c + 1) + " is " + type_name(e));
+      if (!std::isfinite(v[c])) bad("element " + std::to_string(c + 1) + " is not finite");
+    }
+    out.push_back(v);
+  }
+  return out;
+}
+
 std::optional<TomlSection> TomlSection::table(std::string_view k, std::initializer_list<std::string_view> known) const {
   const toml::node* n = node(k);
   if (!n) return std::nullopt;

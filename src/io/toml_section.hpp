@@ -3,6 +3,7 @@
 // rejected on construction (with the closest known key suggested); every other problem - wrong
 // type, out of range, missing - is an InputError naming the file, the line (from toml++'s
 // source regions) and the dotted key.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
@@ -38,6 +39,8 @@ class TomlSection {
   std::optional<Vec3> vec3(std::string_view k) const;
   // An array of `count` strings ("expected an array of 2 strings" otherwise).
   std::optional<std::vector<std::string>> strings(std::string_view k, std::size_t count) const;
+  // A non-empty array of [a, b] rows of finite numbers; a bad row is reported at its own line.
+  std::optional<std::vector<std::array<double, 2>>> number_pairs(std::string_view k) const;
   // Sub-table (standard or inline); "expected a table" when k holds anything else.
   std::optional<TomlSection> table(std::string_view k, std::initializer_list<std::string_view> known) const;
   // Array of tables ([[k]]); "expected an array of tables [[k]]" otherwise. Empty when absent.

@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "io/atomic_file.hpp"
 
@@ -205,8 +206,19 @@ void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, do
     vector_array(s, "force", b.force);        // N
     vector_array(s, "moment", b.moment);      // N m, about the element centre
     scalar_array(s, "pressure", b.pressure);  // Pa
-    vector_array(s, "normal", b.normal);      // -, unit
-    vector_array(s, "velocity", b.velocity);  // m/s
+    // A rotating element's normal turns and its velocity varies over it: the one at its centre.
+    if (b.rotating()) {
+      std::vector<Vec3> normal(m), velocity(m);  // [M] -, m/s
+      for (std::size_t e = 0; e < m; ++e) {
+        normal[e] = b.current_normal(e);
+        velocity[e] = b.surface_velocity(e, b.centre(e));
+      }
+      vector_array(s, "normal", normal);
+      vector_array(s, "velocity", velocity);
+    } else {
+      vector_array(s, "normal", b.normal);      // -, unit
+      vector_array(s, "velocity", b.velocity);  // m/s
+    }
     s.text("      </CellData>\n"
            "      <Points>\n");
     open_array(s, "Float64", "Points", 3);  // m, current vertex positions

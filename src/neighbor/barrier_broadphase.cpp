@@ -83,6 +83,7 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
   centroid_.resize(m);
   perm_.resize(m);
   offset_build_.assign(barriers.offset.begin(), barriers.offset.end());
+  vertex_build_.assign(barriers.rotating() ? 3 * m : 0, Vec3{});
   double max_grow = 0.0;
   for (std::size_t e = 0; e < m; ++e) {
     const Vec3 a = barriers.vertex(e, 0), b = barriers.vertex(e, 1), c = barriers.vertex(e, 2);
@@ -90,6 +91,7 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
     if (!isfinite(a) || !isfinite(b) || !isfinite(c) || !(t >= 0.0) || !std::isfinite(t))
       throw std::invalid_argument("barrier broad phase: element " + std::to_string(barriers.id[e]) +
                                   " has a non-finite vertex or an invalid thickness");
+    if (barriers.rotating()) vertex_build_[3 * e] = a, vertex_build_[3 * e + 1] = b, vertex_build_[3 * e + 2] = c;
     lo_[e] = vmin(vmin(a, b), c);
     hi_[e] = vmax(vmax(a, b), c);
     grow_[e] = 0.5 * t + skin;
@@ -166,6 +168,13 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
 double BarrierBroadphase::max_barrier_displacement(const Barriers& barriers) const {
   if (!built_ || barriers.size() != offset_build_.size()) return std::numeric_limits<double>::infinity();
   double m2 = 0.0;
+  if (barriers.rotating() != !vertex_build_.empty()) return std::numeric_limits<double>::infinity();
+  if (barriers.rotating()) {
+    // A rigid motion moves a triangle's points by an affine map: the largest move is a vertex's.
+    for (std::size_t e = 0; e < barriers.size(); ++e)
+      for (int k = 0; k < 3; ++k) m2 = std::max(m2, norm2(barriers.vertex(e, k) - vertex_build_[3 * e + k]));
+    return std::sqrt(m2);
+  }
   for (std::size_t e = 0; e < barriers.size(); ++e) m2 = std::max(m2, norm2(barriers.offset[e] - offset_build_[e]));
   return std::sqrt(m2);
 }

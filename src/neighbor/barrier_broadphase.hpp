@@ -15,7 +15,8 @@
 // independent of the number of threads.
 //
 // Rebuild rule (kept simple, shared with the particle list): rebuild both lists when
-//     max particle displacement + max barrier displacement > skin / 2.
+//     max particle displacement + max barrier displacement > skin / 2,
+// the barrier displacement being that of the element's farthest-moved vertex when it rotates.
 // The candidate test stays valid up to a combined relative motion of `skin`, so this rule keeps a
 // factor-2 margin, and with still barriers it is exactly the particle list's rule.
 #include <cstddef>
@@ -47,7 +48,8 @@ class BarrierBroadphase {
   // Particles with at least one candidate, ascending (so per-contact work can skip the rest).
   const std::vector<std::uint32_t>& active() const { return active_; }
 
-  // Largest |u_e - u_e(build)| over elements (m); +infinity if the element count changed.
+  // Largest displacement of an element since the build (m): |u_e - u_e(build)|, or with rotating
+  // barriers that of its vertices; +infinity if the element count changed.
   double max_barrier_displacement(const Barriers& barriers) const;
   // True when max_particle_displacement + max_barrier_displacement > skin/2 (or the element
   // count changed, or never built). Pass VerletList::max_displacement(x).
@@ -74,6 +76,7 @@ class BarrierBroadphase {
   std::vector<std::uint32_t> perm_;     // [M] element indices in leaf order
   std::vector<Node> nodes_;             // [< 2M] hierarchy, root at 0
   std::vector<Vec3> offset_build_;      // [M] m, barrier offsets u(t) at build
+  std::vector<Vec3> vertex_build_;      // [3M] m, vertices at build (only with rotating barriers; else empty)
   std::vector<std::size_t> offset_{0};  // [N+1] CSR offsets
   std::vector<std::uint32_t> index_;    // [candidates] element indices
   std::vector<std::uint32_t> active_;   // [particles with candidates] indices, ascending

@@ -23,6 +23,8 @@ void NeighborSearch::save(BinaryWriter& w) const {
   w.vector(list_.build_positions());
   w.vector(barrier_offsets_build_);
   w.value(rebuilds_);
+  // Only scenes with rotating barriers: their placement at the build needs the time too.
+  if (rotating_build_) w.value(barrier_time_build_);
 }
 
 void NeighborSearch::restore(BinaryReader& r, const Particles& p, const Barriers& b) {
@@ -32,6 +34,7 @@ void NeighborSearch::restore(BinaryReader& r, const Particles& p, const Barriers
   rebuilds_ = r.value<std::uint64_t>();
   if (x.size() != p.size() || at_build.offset.size() != b.size())
     throw std::runtime_error("checkpoint does not match the scene (particle or barrier count)");
+  if (b.rotating()) at_build.turn_to(r.value<double>());
   build(x, p.radius, at_build);
 }
 
@@ -40,6 +43,8 @@ void NeighborSearch::build(std::span<const Vec3> x, std::span<const double> radi
   list_.build(x, radius, skin_, extra_);
   broad_.build(x, radius, b, skin_);
   barrier_offsets_build_ = b.offset;
+  rotating_build_ = b.rotating();
+  barrier_time_build_ = b.time;
   blocks_.build(list_);
   if (!want_incoming_) {
     in_offset_ = {};

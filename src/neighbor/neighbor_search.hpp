@@ -54,6 +54,8 @@ class NeighborSearch {
   std::uint64_t rebuilds_ = 0;
   std::uint64_t generation_ = 0;
   std::vector<Vec3> barrier_offsets_build_;  // [M] m, barrier offsets at the last build
+  bool rotating_build_ = false;              // the barriers rotate (their build time is checkpointed)
+  double barrier_time_build_ = 0.0;          // s, Barriers::time at the last build
   VerletList list_;
   BarrierBroadphase broad_;
   PairBlocks blocks_;

@@ -72,12 +72,12 @@ bool edge_kept(const TriOf& tri_of, const BarrierTopology& topo, const Vec3& x, 
   return true;
 }
 
-// Vertex rule: x is clearly beyond v along no edge leaving v. `off` is the offset of the motion
-// class (identical for all elements sharing v).
-bool vertex_kept(const BarrierTopology& topo, const Vec3& x, std::int32_t v, const Vec3& off) {
-  const Vec3 pv = topo.vertex_rest[v] + off;
+// Vertex rule: x is clearly beyond v along no edge leaving v. Element e places the rest vertices
+// (its motion class, identical for all elements sharing v).
+bool vertex_kept(const Barriers& bars, const BarrierTopology& topo, const Vec3& x, std::int32_t v, std::size_t e) {
+  const Vec3 pv = bars.place(e, topo.vertex_rest[v]);
   for (const std::int32_t g : topo.edges_of_vertex(v)) {
-    const Vec3 pw = topo.vertex_rest[topo.other_end(g, v)] + off;
+    const Vec3 pw = bars.place(e, topo.vertex_rest[topo.other_end(g, v)]);
     if (ray_sign(x, pv, pw) > 0) return false;
   }
   return true;
@@ -89,7 +89,6 @@ bool vertex_kept(const BarrierTopology& topo, const Vec3& x, std::int32_t v, con
 template <class TriOf>
 bool boundary_kept(const Barriers& bars, const TriOf& tri_of, const BarrierTopology& topo, const Vec3& x, std::size_t e,
                    const Tri& t, const TriangleClosestPoint& cp, BarrierContact& c) {
-  const Vec3& off = bars.offset[e];
   auto try_edge = [&](int k) {
     const std::int32_t g = topo.elem_edge[3 * e + k];
     if (!edge_kept(tri_of, topo, x, g)) return false;
@@ -99,7 +98,7 @@ bool boundary_kept(const Barriers& bars, const TriOf& tri_of, const BarrierTopol
   };
   auto try_vertex = [&](int k) {
     const std::int32_t v = topo.elem_vertex[3 * e + k];
-    if (!vertex_kept(topo, x, v, off)) return false;
+    if (!vertex_kept(bars, topo, x, v, e)) return false;
     c.kind = Feature::Vertex;
     c.feature = v;
     return true;
@@ -215,8 +214,7 @@ void detect(const Barriers& bars, const BarrierTopology& topo, const TriOf& tri_
 }  // namespace
 
 CurrentTriangle current_triangle(const Barriers& bars, std::size_t e) {
-  const Vec3& o = bars.offset[e];
-  CurrentTriangle t{{bars.p0[e] + o, bars.p1[e] + o, bars.p2[e] + o}, {}, 0.0, {}, {}};
+  CurrentTriangle t{{bars.vertex(e, 0), bars.vertex(e, 1), bars.vertex(e, 2)}, {}, 0.0, {}, {}};
   t.tn = triangle_normal(t.v[0], t.v[1], t.v[2]);
   t.n2 = norm2(t.tn.n);
   for (int k = 0; k < 3; ++k) {

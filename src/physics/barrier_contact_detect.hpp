@@ -34,19 +34,19 @@ struct BarrierContact {
   double overlap = 0.0;          // m, R + t_b/2 - |x - p| > 0
 };
 
-// One element's triangle at the barriers' current offsets, with what detection derives from its
-// vertices alone. Elements only translate (Barriers::move_to), so a caller testing many spheres
+// One element's triangle at the barriers' current placement, with what detection derives from its
+// vertices alone. Elements move rigidly (Barriers::move_to), so a caller testing many spheres
 // at one time computes these once per element (current_triangle) instead of once per candidate;
 // the values are bit for bit those detection computes on its own.
 struct CurrentTriangle {
-  Vec3 v[3];          // m, current vertices p0, p1, p2 + offset
+  Vec3 v[3];          // m, current vertices (Barriers::vertex)
   TriangleNormal tn;  // unnormalised normal n (m^2) and its rounding scale (m^4)
   double n2 = 0.0;    // m^4, |n|^2
   Vec3 inward[3];     // m^3, n x (v[k+1] - v[k]): edge k's in-plane normal into the triangle
   double e2[3] = {};  // m^2, |v[k+1] - v[k]|^2, squared length of edge k
 };
 
-// Element e at the current offset.
+// Element e at its current placement.
 CurrentTriangle current_triangle(const Barriers& bars, std::size_t e);
 
 // Contacts of the sphere (centre x [m], radius R [m]) with the candidate elements (indices into

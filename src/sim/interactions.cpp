@@ -123,9 +123,8 @@ bool Interactions::stale(const Particles& p, const Barriers& b) const {
 
 double Interactions::barrier_reach(const Barriers& b, double dt) const {
   if (b.size() == 0) return 0.0;
-  double speed2 = 0.0;
-  for (const Vec3& u : b.velocity) speed2 = std::max(speed2, norm2(u));
-  return search_->barrier_candidates().max_barrier_displacement(b) + kReachFactor * dt * std::sqrt(speed2);
+  // The fastest point of any element (a rotating one's farthest vertex from its axis).
+  return search_->barrier_candidates().max_barrier_displacement(b) + kReachFactor * dt * b.max_point_speed();
 }
 
 bool Interactions::drift_within(const Particles& p, double dt, double limit, bool since_build) const {

@@ -15,18 +15,20 @@ namespace {
 // Bit pattern for exact comparison; -0.0 and +0.0 are the same coordinate.
 std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v); }
 
-using LawKey = std::array<std::uint64_t, 11>;
+using LawKey = std::array<std::uint64_t, 12>;
 
-LawKey law_key(const MotionLaw& m) {
-  return {bits(m.a.x), bits(m.a.y), bits(m.a.z), bits(m.A.x), bits(m.A.y), bits(m.A.z),
-          bits(m.w1),  bits(m.B.x), bits(m.B.y), bits(m.B.z), bits(m.w2)};
+// The translation's fields and the rotation law's index (equal index <=> equal RotationLaw).
+LawKey law_key(const MotionLaw& m, std::int32_t rotation) {
+  return {bits(m.a.x), bits(m.a.y), bits(m.a.z), bits(m.A.x),
+          bits(m.A.y), bits(m.A.z), bits(m.w1),  bits(m.B.x),
+          bits(m.B.y), bits(m.B.z), bits(m.w2),  static_cast<std::uint64_t>(static_cast<std::int64_t>(rotation))};
 }
 
 // Motion class per element: equal classes <=> identical MotionLaw fields. Sorting, not pairwise.
 std::vector<std::int32_t> motion_classes(const Barriers& bars) {
   const std::size_t m = bars.size();
   std::vector<LawKey> keys(m);
-  for (std::size_t e = 0; e < m; ++e) keys[e] = law_key(bars.motion[e]);
+  for (std::size_t e = 0; e < m; ++e) keys[e] = law_key(bars.motion[e], bars.rotation_of[e]);
   std::vector<std::int32_t> order(m);
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(),

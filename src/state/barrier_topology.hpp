@@ -20,7 +20,7 @@ struct BarrierTopology {
   // --- per element [M] (local vertex k = p0, p1, p2; local edge k joins local vertices k, k+1 mod 3)
   std::vector<std::int32_t> elem_vertex;  // [3M] global vertex id of local vertex k at 3e+k
   std::vector<std::int32_t> elem_edge;    // [3M] global edge id of local edge k at 3e+k
-  std::vector<std::int32_t> elem_class;   // [M] motion class (elements with identical MotionLaw)
+  std::vector<std::int32_t> elem_class;   // [M] motion class (elements with identical MotionLaw, rotation included)
   std::vector<double> elem_size;          // [M] m, longest edge at rest
   // --- per global vertex [V]
   std::vector<Vec3> vertex_rest;                // [V] m, rest position

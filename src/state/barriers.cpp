@@ -1,5 +1,8 @@
 #include "state/barriers.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "geometry/triangle_check.hpp"
 
 namespace mpdem {
@@ -23,11 +26,27 @@ bool Barriers::add(std::int64_t bid, const Vec3& a, const Vec3& b, const Vec3& c
   thickness.push_back(t_b);
   temperature.push_back(temp);
   motion.push_back(law);
-  offset.push_back(law.displacement(0.0));
-  velocity.push_back(law.velocity(0.0));
+  std::int32_t l = -1;
+  if (law.rotation) {
+    // Elements of one source share a law: the last one is the likely match.
+    const auto it = std::find(rotations.rbegin(), rotations.rend(), *law.rotation);
+    if (it != rotations.rend()) {
+      l = static_cast<std::int32_t>(rotations.rend() - it - 1);
+    } else {
+      l = static_cast<std::int32_t>(rotations.size());
+      rotations.push_back(*law.rotation);
+      angle.push_back(0.0);
+      turn.emplace_back();
+      spin.emplace_back();
+    }
+  }
+  rotation_of.push_back(l);
+  offset.push_back(law.displacement(time));
+  velocity.push_back(law.velocity(time));
   force.emplace_back();
   moment.emplace_back();
   pressure.push_back(0.0);
+  if (l >= 0) turn_to(time);
   return true;
 }
 
@@ -43,13 +62,66 @@ void Barriers::move_to(double t) {
     offset[e] = motion[e].displacement(t);
     velocity[e] = motion[e].velocity(t);
   }
+  turn_to(t);
 }
 
-Vec3 Barriers::vertex(std::size_t e, int k) const {
-  const Vec3& p = k == 0 ? p0[e] : (k == 1 ? p1[e] : p2[e]);
-  return p + offset[e];
+void Barriers::turn_to(double t) {
+  time = t;
+  for (std::size_t l = 0; l < rotations.size(); ++l) {
+    const RotationLaw& r = rotations[l];
+    angle[l] = r.angle(t);
+    turn[l] = axis_angle_matrix(r.axis, angle[l]);
+    spin[l] = r.axis * r.rate(t);
+  }
 }
 
-Vec3 Barriers::centre(std::size_t e) const { return (p0[e] + p1[e] + p2[e]) / 3.0 + offset[e]; }
+Vec3 Barriers::vertex(std::size_t e, int k) const { return place(e, k == 0 ? p0[e] : (k == 1 ? p1[e] : p2[e])); }
+
+Vec3 Barriers::centre(std::size_t e) const {
+  if (rotation_of[e] < 0) return (p0[e] + p1[e] + p2[e]) / 3.0 + offset[e];
+  return place(e, (p0[e] + p1[e] + p2[e]) / 3.0);
+}
+
+Vec3 Barriers::current_normal(std::size_t e) const {
+  const std::int32_t l = rotation_of[e];
+  return l < 0 ? normal[e] : mat_apply(turn[static_cast<std::size_t>(l)], normal[e]);
+}
+
+Vec3 Barriers::pivot(std::size_t e) const {
+  const std::int32_t l = rotation_of[e];
+  return l < 0 ? offset[e] : rotations[static_cast<std::size_t>(l)].origin + offset[e];
+}
+
+double Barriers::max_point_speed() const {
+  double fastest = 0.0;  // m/s
+  for (std::size_t e = 0; e < size(); ++e) {
+    double v = norm(velocity[e]);
+    if (const std::int32_t l = rotation_of[e]; l >= 0) {
+      const RotationLaw& r = rotations[static_cast<std::size_t>(l)];
+      double arm2 = 0.0;  // m^2, largest squared distance of a vertex from the axis (rotation invariant)
+      for (const Vec3& p : {p0[e], p1[e], p2[e]}) {
+        const Vec3 d = p - r.origin;
+        arm2 = std::max(arm2, norm2(d - dot(d, r.axis) * r.axis));
+      }
+      v += norm(spin[static_cast<std::size_t>(l)]) * std::sqrt(arm2);
+    }
+    fastest = std::max(fastest, v);
+  }
+  return fastest;
+}
+
+double Barriers::axis_torque(std::size_t e) const {
+  const std::int32_t l = rotation_of[e];
+  if (l < 0) return 0.0;
+  const Vec3 about_pivot = moment[e] + cross(centre(e) - pivot(e), force[e]);
+  return dot(rotations[static_cast<std::size_t>(l)].axis, about_pivot);
+}
+
+double Barriers::drive_power(std::size_t e) const {
+  double p = dot(force[e], velocity[e]);  // W, of the translation
+  if (const std::int32_t l = rotation_of[e]; l >= 0)
+    p += dot(spin[static_cast<std::size_t>(l)], moment[e] + cross(centre(e) - pivot(e), force[e]));
+  return -p;
+}
 
 }  // namespace mpdem

@@ -243,3 +243,30 @@ TEST(CheckpointFingerprint, CommandLineRefusesAMovedVertexWithExit2) {
   test::expect_contains(r.err,
                         {"scene.toml", "checkpoint.bin", "barriers (element id 4 of group 'floor': rest vertices)"});
 }
+
+TEST(CheckpointFingerprint, AddedOrChangedRotationIsRefused) {
+  const std::string wall = "file = \"wall.csv\"\nmaterial = \"steel\"\n";
+  Files added;
+  added.scene = replaced(kScene, wall,
+                         wall + "motion = { rotation = { axis = [0, 0, 1], origin = [0, 0, 0], omega = 0.5 } }\n");
+  expect_refused(added, {"in its barriers (element id 1 of group 'wall': motion law)"});
+  // A rotating original and another rate: the rotation's own values are fingerprinted.
+  test::TempDir d("fingerprint_rotation");
+  Files turning = added;
+  write(d, turning);
+  {
+    Simulation first = loaded(d);
+    advance(first, 20);
+    first.write_checkpoint(d.path / "ck.bin");
+  }
+  Files faster = turning;
+  faster.scene = replaced(turning.scene, "omega = 0.5", "omega = 0.6");
+  write(d, faster);
+  Simulation resumed = loaded(d);
+  try {
+    resumed.resume_from(d.path / "ck.bin");
+    ADD_FAILURE() << "a changed rotation rate was resumed";
+  } catch (const InputError& e) {
+    test::expect_contains(e.what(), {"element id 1 of group 'wall': motion law"});
+  }
+}

@@ -6,15 +6,20 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "io/barrier_csv.hpp"
+#include "io/binary_stream.hpp"
+#include "io/crc32.hpp"
 #include "io/input_error.hpp"
 #include "io/particle_csv.hpp"
 #include "io/stl_reader.hpp"
 #include "model/scene.hpp"
+#include "sim/simulation.hpp"
+#include "support/scene_builder.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
@@ -154,4 +159,83 @@ TEST(FuzzRegressions, BarrierWithOverflowingAreaIsRejected) {
   Barriers out;
   expect_input_error([&] { read_barrier_csv(f, src, model, out); }, f, "overflowing area");
   EXPECT_EQ(out.size(), 0u);
+}
+
+// Finding 5 (fuzz_checkpoint, UBSan "load of value 81, which is not a valid value for type
+// 'bool'" at io/binary_stream.hpp): BinaryReader::value<bool>() copied any byte into a bool. The
+// "run" section ends with the flag energy_checked and "run_record" with started; a checkpoint
+// with another byte there (its checksum recomputed) was undefined behaviour. A flag is now read
+// as a byte and anything but 0 or 1 refused.
+namespace {
+
+// Two spheres at rest on nothing, a few steps: a real checkpoint of the running format.
+std::string checkpoint_bytes(const fs::path& file) {
+  Scene s = test::make_scene(1e-5, 1.0);
+  test::add_particle(s, 1, 0.01, {0, 0, 0});
+  test::add_particle(s, 2, 0.01, {0.0199, 0, 0});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
+  for (int k = 0; k < 3; ++k) sim.advance(1e-5);
+  sim.write_checkpoint(file);
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Sets the last payload byte of `section` to `byte` and recomputes its CRC-32 (the framing of
+// io/checkpoint_format.hpp: u16 name length, name, u64 payload length, payload, u32 CRC).
+bool set_last_byte(std::string& b, const std::string& section, char byte) {
+  std::size_t at = 12;  // magic and version
+  while (at + 2 <= b.size()) {
+    std::uint16_t name_size = 0;
+    std::uint64_t payload_size = 0;
+    std::memcpy(&name_size, b.data() + at, 2);
+    const std::string name = b.substr(at + 2, name_size);
+    std::memcpy(&payload_size, b.data() + at + 2 + name_size, 8);
+    const std::size_t payload = at + 2 + name_size + 8;
+    if (name == section && payload_size > 0) {
+      b[payload + payload_size - 1] = byte;
+      const std::uint32_t crc = crc32(b.data() + payload, payload_size, crc32(name.data(), name.size()));
+      std::memcpy(b.data() + payload + payload_size, &crc, 4);
+      return true;
+    }
+    at = payload + payload_size + 4;
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST(FuzzRegressions, BinaryReaderRefusesAFlagThatIsNeitherZeroNorOne) {
+  for (const char c : {'\0', '\1', 'Q', '\xff'}) {
+    BinaryReader r(&c, 1);
+    if (c == '\0' || c == '\1') {
+      EXPECT_EQ(r.value<bool>(), c == '\1');
+      EXPECT_TRUE(r.at_end());
+    } else {
+      EXPECT_THROW(r.value<bool>(), std::runtime_error) << int(static_cast<unsigned char>(c));
+    }
+  }
+}
+
+TEST(FuzzRegressions, CheckpointWithAFlagByteOf81IsRejected) {
+  TempDir d("mpdem_fuzzreg");
+  const std::string good = checkpoint_bytes(d.path / "good.bin");
+  for (const std::string section : {"run", "run_record"}) {
+    std::string bad = good;
+    ASSERT_TRUE(set_last_byte(bad, section, 81)) << section;
+    const fs::path f = d.write(section + ".bin", bad);
+    Scene s = test::make_scene(1e-5, 1.0);
+    test::add_particle(s, 1, 0.01, {0, 0, 0});
+    test::add_particle(s, 2, 0.01, {0.0199, 0, 0});
+    Simulation sim(std::move(s), RunOptions{{}, false, false});
+    expect_input_error([&] { sim.resume_from(f); }, f, "flag byte 81 in section " + section);
+  }
+  // The same bytes with the flag 1 resume (the patch itself is sound).
+  std::string one = good;
+  ASSERT_TRUE(set_last_byte(one, "run_record", 1));
+  const fs::path f = d.write("one.bin", one);
+  Scene s = test::make_scene(1e-5, 1.0);
+  test::add_particle(s, 1, 0.01, {0, 0, 0});
+  test::add_particle(s, 2, 0.01, {0.0199, 0, 0});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
+  EXPECT_NO_THROW(sim.resume_from(f));
 }

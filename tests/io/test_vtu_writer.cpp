@@ -164,9 +164,9 @@ TEST_F(OutputTest, EmptyParticleVtuIsWellFormed) {
 
 TEST_F(OutputTest, BarrierVtuHasMovedTrianglesAndLoads) {
   Barriers b;
-  const MotionLaw law0{{0.5, 0.0, -0.25}, {0.01, 0.02, 0.0}, 3.0, {0.0, 0.0, 0.003}, 7.0};
+  const MotionLaw law0{{0.5, 0.0, -0.25}, {0.01, 0.02, 0.0}, 3.0, {0.0, 0.0, 0.003}, 7.0, {}};
   const MotionLaw law1{};  // static
-  const MotionLaw law2{{0.0, -1.0 / 3.0, 0.0}, {}, 0.0, {}, 0.0};
+  const MotionLaw law2{{0.0, -1.0 / 3.0, 0.0}, {}, 0.0, {}, 0.0, {}};
   ASSERT_TRUE(b.add(11, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0, 1e9, 0.3, law0, 1e-3, 300.0));
   ASSERT_TRUE(b.add(12, {0.1, 0.2, 0.3}, {1.1, 0.2, 0.3}, {0.1, 0.2, 1.3}, 1, 1e9, 0.3, law1, 1e-3, 300.0));
   ASSERT_TRUE(b.add(13, {-1, -1, 2}, {1.0 / 3.0, -1, 2}, {-1, std::sqrt(2.0), 2.5}, 1, 1e9, 0.3, law2, 1e-3, 300.0));

@@ -18,11 +18,6 @@
 //   MPDEM_FUZZ_WRITE_SEEDS=<dir> build-fuzz/fuzz_checkpoint
 // the target writes <dir>/step_{1,10,200}.ckp and exits (docs/fuzzing.md: regenerate them after
 // a checkpoint format change).
-//
-// Finding 4 (docs/fuzzing.md), not fixed yet, would stop every campaign within seconds: a
-// std::logic_error from resume_from or the step is reported once per message and skipped, unless
-// MPDEM_FUZZ_STRICT=1, which lets it escape (a crash, so a reproducer shows its stack).
-#include <cctype>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -30,7 +25,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -153,61 +147,15 @@ std::vector<char> with_fixed_checksums(const std::uint8_t* data, std::size_t siz
 
 // How far the inputs got, printed at exit: how deep the campaign reaches (docs/fuzzing.md).
 struct Reach {
-  unsigned long inputs = 0, framing_ok = 0, resumed = 0, stepped = 0, run_error = 0, known = 0;
+  unsigned long inputs = 0, framing_ok = 0, resumed = 0, stepped = 0, run_error = 0;
 };
 Reach reach;
 
 void print_reach() {
   std::fprintf(stderr,
                "fuzz_checkpoint: %lu inputs; as given, %lu pass framing and checksums; with checksums fixed, %lu "
-               "resume, %lu of them take the step, %lu end in a RunError, %lu skipped as known finding 4\n",
-               reach.inputs, reach.framing_ok, reach.resumed, reach.stepped, reach.run_error, reach.known);
-}
-
-bool strict() {
-  static const bool s = [] {
-    const char* v = std::getenv("MPDEM_FUZZ_STRICT");
-    return v != nullptr && *v != '\0' && *v != '0';
-  }();
-  return s;
-}
-
-// Finding 4 (docs/fuzzing.md): resume_from does not check the restored values (non-finite
-// positions or forces, negative radii, material indices out of range, ...), which then reach the
-// engine's internal checks and leave as std::logic_error instead of an InputError. Until it is
-// fixed, each distinct message (digits dropped) is reported once on stderr and the input is
-// skipped; with MPDEM_FUZZ_STRICT=1 it is rethrown, so a reproducer shows its stack.
-void known_logic_error(const std::logic_error& e, const char* where) {
-  if (strict()) throw;
-  ++reach.known;
-  static std::set<std::string> seen;
-  std::string key = where;
-  key += ": ";
-  for (const char* c = e.what(); *c != '\0'; ++c)
-    if (!std::isdigit(static_cast<unsigned char>(*c))) key += *c;
-  if (seen.size() < 64 && seen.insert(key).second)
-    std::fprintf(stderr,
-                 "fuzz_checkpoint: known finding 4 (std::logic_error %s; skipped, MPDEM_FUZZ_STRICT=1 aborts)\n",
-                 key.c_str());
-}
-
-// Finding 4 as well: a material index outside the model, which the step's first use
-// (TrapezoidalIntegrator::heating_rate, before the contact code's own check) reads out of bounds
-// - a heap-buffer-overflow under ASan. Skipped (reported once) unless MPDEM_FUZZ_STRICT=1.
-bool materials_in_range(mpdem::Simulation& sim) {
-  const mpdem::Particles& p = sim.particles();
-  const std::size_t materials = sim.model().materials.size();
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.material[i] < 0 || static_cast<std::size_t>(p.material[i]) >= materials) {
-      ++reach.known;
-      static bool reported = false;
-      if (!reported)
-        std::fprintf(stderr, "fuzz_checkpoint: known finding 4 (a particle's material index is out of range after "
-                             "resume_from; skipped, MPDEM_FUZZ_STRICT=1 reaches the out-of-bounds read)\n");
-      reported = true;
-      return false;
-    }
-  return true;
+               "resume, %lu of them take the step, %lu end in a RunError\n",
+               reach.inputs, reach.framing_ok, reach.resumed, reach.stepped, reach.run_error);
 }
 
 void write_seeds(const std::filesystem::path& dir) {
@@ -259,19 +207,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     sim.resume_from(path);
   } catch (const mpdem::InputError&) {
     return 0;  // expected for a bad checkpoint
-  } catch (const std::logic_error& e) {
-    known_logic_error(e, "from resume_from");
-    return 0;
   }
   ++reach.resumed;
-  if (!strict() && !materials_in_range(sim)) return 0;
   try {
     sim.advance(sim.model().params.time.dt);
     ++reach.stepped;
   } catch (const mpdem::RunError&) {
     ++reach.run_error;  // the run refuses the restored state: expected for nonsense values
-  } catch (const std::logic_error& e) {
-    known_logic_error(e, "in the first step");
   }
   return 0;
 }

@@ -8,7 +8,11 @@
 // named, checksummed sections (io/checkpoint_format.hpp).
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <string>
+#include <vector>
 #include <type_traits>
 #include <fstream>
 #include <sstream>
@@ -38,6 +42,37 @@ void for_each_counter(double& time, std::uint64_t& steps, std::uint64_t& evaluat
   f(last_balance);
   f(last_active);
   f(energy_checked);
+}
+
+// The restored particles hold what the engine assumes of every particle (the readers check the
+// same of a scene's): a checkpoint whose checksums are intact may still have been written by
+// another program or patched. Throws std::runtime_error naming the array and the particle id.
+void check_restored(const Particles& p, std::size_t materials) {
+  const auto fail = [&](std::size_t i, const char* array, const char* what) {
+    throw std::runtime_error(fmt::format("particle id {} (index {}): 'particles/{}' {}", p.id[i], i, array, what));
+  };
+  std::vector<std::int64_t> ids(p.id.begin(), p.id.end());
+  std::sort(ids.begin(), ids.end());
+  if (const auto d = std::adjacent_find(ids.begin(), ids.end()); d != ids.end())
+    throw std::runtime_error(fmt::format("particle id {} appears twice in 'particles/id'", *d));
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.material[i] < 0 || static_cast<std::size_t>(p.material[i]) >= materials)
+      fail(i, "material", "is not an index of the scene's materials");
+    if (!(std::isfinite(p.radius[i]) && p.radius[i] > 0.0)) fail(i, "radius", "is not finite and > 0");
+    if (!(std::isfinite(p.mass[i]) && p.mass[i] > 0.0)) fail(i, "mass", "is not finite and > 0");
+    if (!(std::isfinite(p.inertia[i]) && p.inertia[i] > 0.0)) fail(i, "inertia", "is not finite and > 0");
+    if (!std::isfinite(p.charge[i])) fail(i, "charge", "is not finite");
+    if (!isfinite(p.x[i])) fail(i, "x", "is not finite");
+    if (!isfinite(p.v[i])) fail(i, "v", "is not finite");
+    if (!isfinite(p.w[i])) fail(i, "w", "is not finite");
+    const Quat& q = p.q[i];
+    if (!(std::isfinite(q.w) && std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z)))
+      fail(i, "q", "is not finite");
+    if (!std::isfinite(p.T[i])) fail(i, "T", "is not finite");
+    if (!isfinite(p.force[i])) fail(i, "force", "is not finite");
+    if (!isfinite(p.torque[i])) fail(i, "torque", "is not finite");
+    if (!std::isfinite(p.heat[i])) fail(i, "heat", "is not finite");
+  }
 }
 }  // namespace
 
@@ -107,10 +142,19 @@ void Simulation::resume_from(const std::filesystem::path& file) {
     bool sizes_ok = true;
     p.for_each_array([&](const char*, auto& a) { sizes_ok = sizes_ok && a.size() == n; });
     if (!sizes_ok) throw std::runtime_error("particle arrays of different lengths");
+    check_restored(p, scene_.model.materials.size());
+    if (!(std::isfinite(time_) && time_ >= 0.0 && std::isfinite(dt_) && dt_ > 0.0))
+      throw std::runtime_error(
+          fmt::format("the run section's time {} s or step {} s is not finite and >= 0", time_, dt_));
     scene_.barriers.move_to(time_);
     interactions_->restore(r, p, scene_.barriers);
     // The output series are restored once run() has opened the outputs.
-    if (r.has("output")) read("output", [&](BinaryReader& s) { resume_output_state_ = s.rest(); });
+    if (r.has("output")) {
+      read("output", [&](BinaryReader& s) { resume_output_state_ = s.rest(); });
+      if (resume_output_state_.size() != OutputManager::state_bytes())
+        throw std::runtime_error(fmt::format("the section 'output' holds {} bytes, not {}", resume_output_state_.size(),
+                                             OutputManager::state_bytes()));
+    }
     r.finish();
   } catch (const InputError&) {
     throw;

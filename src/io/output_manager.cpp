@@ -108,6 +108,8 @@ void OutputManager::save(BinaryWriter& w) const {
   for (const Series* s : {&particles_vtu_, &barriers_vtu_, &particles_csv_, &barrier_log_}) w.value(*s);
 }
 
+std::size_t OutputManager::state_bytes() { return 4 * sizeof(Series); }
+
 void OutputManager::restore(BinaryReader& r) {
   for (Series* s : {&particles_vtu_, &barriers_vtu_, &particles_csv_, &barrier_log_}) {
     const double every = s->every;  // the scene's interval wins over the checkpoint's

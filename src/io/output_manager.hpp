@@ -49,6 +49,8 @@ class OutputManager {
   // Checkpoints: when each series is next due.
   void save(BinaryWriter& w) const;
   void restore(BinaryReader& r);
+  // Bytes that save() writes (and restore() reads).
+  static std::size_t state_bytes();
   const std::filesystem::path& dir() const { return dir_; }
 
  private:

@@ -1,6 +1,7 @@
 #include "neighbor/neighbor_search.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "neighbor/spatial_order.hpp"
@@ -34,7 +35,15 @@ void NeighborSearch::restore(BinaryReader& r, const Particles& p, const Barriers
   rebuilds_ = r.value<std::uint64_t>();
   if (x.size() != p.size() || at_build.offset.size() != b.size())
     throw std::runtime_error("checkpoint does not match the scene (particle or barrier count)");
-  if (b.rotating()) at_build.turn_to(r.value<double>());
+  for (const Vec3& v : x)
+    if (!isfinite(v)) throw std::runtime_error("a neighbour list's build position is not finite");
+  for (const Vec3& v : at_build.offset)
+    if (!isfinite(v)) throw std::runtime_error("a barrier offset at the last build is not finite");
+  if (b.rotating()) {
+    const double t = r.value<double>();  // s, the barriers' time at the last build
+    if (!std::isfinite(t)) throw std::runtime_error("the barriers' time at the last build is not finite");
+    at_build.turn_to(t);
+  }
   build(x, p.radius, at_build);
 }
 

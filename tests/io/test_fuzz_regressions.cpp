@@ -9,7 +9,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "io/barrier_csv.hpp"
 #include "io/binary_stream.hpp"
@@ -180,9 +182,9 @@ std::string checkpoint_bytes(const fs::path& file) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// Sets the last payload byte of `section` to `byte` and recomputes its CRC-32 (the framing of
-// io/checkpoint_format.hpp: u16 name length, name, u64 payload length, payload, u32 CRC).
-bool set_last_byte(std::string& b, const std::string& section, char byte) {
+// Sets the payload byte `from_end` bytes before the last of `section` to `byte` and recomputes its CRC-32 (the framing
+// of io/checkpoint_format.hpp: u16 name length, name, u64 payload length, payload, u32 CRC).
+bool set_last_byte(std::string& b, const std::string& section, char byte, std::size_t from_end = 0) {
   std::size_t at = 12;  // magic and version
   while (at + 2 <= b.size()) {
     std::uint16_t name_size = 0;
@@ -191,8 +193,8 @@ bool set_last_byte(std::string& b, const std::string& section, char byte) {
     const std::string name = b.substr(at + 2, name_size);
     std::memcpy(&payload_size, b.data() + at + 2 + name_size, 8);
     const std::size_t payload = at + 2 + name_size + 8;
-    if (name == section && payload_size > 0) {
-      b[payload + payload_size - 1] = byte;
+    if (name == section && payload_size > from_end) {
+      b[payload + payload_size - 1 - from_end] = byte;
       const std::uint32_t crc = crc32(b.data() + payload, payload_size, crc32(name.data(), name.size()));
       std::memcpy(b.data() + payload + payload_size, &crc, 4);
       return true;
@@ -238,4 +240,43 @@ TEST(FuzzRegressions, CheckpointWithAFlagByteOf81IsRejected) {
   test::add_particle(s, 2, 0.01, {0.0199, 0, 0});
   Simulation sim(std::move(s), RunOptions{{}, false, false});
   EXPECT_NO_THROW(sim.resume_from(f));
+}
+
+// Finding 4 (fuzz_checkpoint): resume_from took the restored particle values as they came; a
+// material index out of range was then read out of bounds at the first step (ASan
+// heap-buffer-overflow), a negative radius or a non-finite position left as an internal
+// std::logic_error (exit 1). Each is now refused as bad input naming the array and the particle.
+TEST(FuzzRegressions, CheckpointWithImpossibleParticleValuesIsRejected) {
+  TempDir d("mpdem_fuzzreg");
+  const std::string good = checkpoint_bytes(d.path / "good.bin");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::string nan_bytes(8, '\0');
+  std::memcpy(nan_bytes.data(), &nan, 8);
+  struct Case {
+    std::string section, last_bytes, expected;
+  };
+  // The last bytes of a section are its last particle's value (the most significant byte of an
+  // int32 material index, the sign and exponent of a double radius; a whole NaN z coordinate).
+  const std::vector<Case> cases = {{"particles/material", "\x7f", "'particles/material' is not an index"},
+                                   {"particles/radius", "\xbf", "'particles/radius' is not finite and > 0"},
+                                   {"particles/x", nan_bytes, "'particles/x' is not finite"},
+                                   {"particles/force", nan_bytes, "'particles/force' is not finite"}};
+  for (const Case& c : cases) {
+    std::string bad = good;
+    for (std::size_t k = 0; k < c.last_bytes.size(); ++k) {
+      ASSERT_TRUE(set_last_byte(bad, c.section, c.last_bytes[c.last_bytes.size() - 1 - k], k)) << c.section;
+    }
+    const fs::path f = d.write("bad.bin", bad);
+    Scene s = test::make_scene(1e-5, 1.0);
+    test::add_particle(s, 1, 0.01, {0, 0, 0});
+    test::add_particle(s, 2, 0.01, {0.0199, 0, 0});
+    Simulation sim(std::move(s), RunOptions{{}, false, false});
+    expect_input_error([&] { sim.resume_from(f); }, f, c.section);
+    try {
+      sim.resume_from(f);
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(c.expected), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("particle id "), std::string::npos) << e.what();
+    }
+  }
 }

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -81,6 +82,9 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
   near_field_ = near_field_enabled(model.params.near_field);
   thermal_ = model.params.analysis.thermal;
   if (near_field_) log_cols.insert(log_cols.end() - 1, "near_field");  // part of total_energy
+  driven_ = std::any_of(barriers.motion.begin(), barriers.motion.end(),
+                        [](const MotionLaw& m) { return !m.is_static(); });
+  if (driven_) log_cols.insert(log_cols.end() - 1, "barrier_work");  // taken off total_energy
   if (thermal_)
     for (const char* c : {"heat_to_barriers", "heat_convected", "heat_radiated", "thermal_energy"})
       log_cols.push_back(c);
@@ -179,7 +183,7 @@ void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const 
   const double potential = e.potential + scan.electric;  // J, gravitational + electric
   const double nf = near_field_ ? s.near_field_energy : 0.0;
   const double total = e.kinetic + e.rotational + potential + s.elastic_energy + s.damping_dissipated +
-                       s.friction_dissipated + nf;
+                       s.friction_dissipated + nf - s.barrier_work;
   std::vector<double> row{static_cast<double>(r.step),
                           r.time,
                           r.dt,
@@ -198,6 +202,7 @@ void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const 
                           s.damping_dissipated,
                           s.friction_dissipated};
   if (near_field_) row.push_back(nf);
+  if (driven_) row.push_back(s.barrier_work);
   row.push_back(total);
   if (thermal_) {
     row.push_back(s.heat_to_barriers);

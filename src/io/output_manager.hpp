@@ -77,6 +77,7 @@ class OutputManager {
   std::vector<char> group_turns_;          // [groups] 1: a rotating element (torque and power columns)
   std::vector<std::size_t> group_column_;  // [groups] first column of the group in barrier_groups.csv
   bool near_field_ = false;                // log the near-field potential (and count it in total_energy)
+  bool driven_ = false;                    // log the work of the barriers' prescribed motion (some element moves)
   bool thermal_ = false;                   // log the heat exchanged with the outside and the thermal energy
 };
 

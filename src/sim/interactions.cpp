@@ -240,6 +240,11 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
                                   restiffened;
     stats_.damping_power = damping;
     stats_.rolling_power = rolling;
+    // The barriers' loads are this evaluation's: the power their motion puts into the particles.
+    double drive = 0.0;  // W (0 for a resting element)
+    for (std::size_t e = 0; e < b.size(); ++e) drive += b.drive_power(e);
+    stats_.barrier_work += 0.5 * req.dt * (stats_.drive_power + drive);
+    stats_.drive_power = drive;
     stats_.spring_energy = pp.spring_after + pb.spring_after;
   }
 }
@@ -272,6 +277,8 @@ void for_each_stat(S& s, F&& f) {
   f(s.damping_power);
   f(s.rolling_power);
   f(s.spring_energy);
+  f(s.barrier_work);
+  f(s.drive_power);
   f(s.rebuilds);
   f(s.near_field_energy);
   f(s.heat_to_barriers);
@@ -279,7 +286,7 @@ void for_each_stat(S& s, F&& f) {
   f(s.heat_radiated);
 }
 // A field added to InteractionStats must be added to for_each_stat (and is then a format change).
-static_assert(sizeof(InteractionStats) == 13 * 8, "InteractionStats changed: update for_each_stat");
+static_assert(sizeof(InteractionStats) == 15 * 8, "InteractionStats changed: update for_each_stat");
 // Reads one section with `read(BinaryReader&)`, which must consume it whole.
 template <class F>
 void read_section(CheckpointReader& r, const std::string& name, F&& read) {

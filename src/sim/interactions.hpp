@@ -36,8 +36,12 @@ struct InteractionStats {
   double damping_power = 0.0;        // W, normal dashpots, at the last committed evaluation
   double rolling_power = 0.0;        // W, rolling resistance, at the last committed evaluation
   double spring_energy = 0.0;        // J, the tangential springs' energy at the last committed evaluation
-  std::uint64_t rebuilds = 0;        // neighbour list rebuilds
-  double near_field_energy = 0.0;    // J, potential of the near-field pairs within the cutoff
+  // J, cumulative work the barriers' prescribed motion did on the particles (the trapezoid of the
+  // drive power over committed steps): energy that enters an otherwise closed system.
+  double barrier_work = 0.0;
+  double drive_power = 0.0;        // W, sum of Barriers::drive_power at the last committed evaluation
+  std::uint64_t rebuilds = 0;      // neighbour list rebuilds
+  double near_field_energy = 0.0;  // J, potential of the near-field pairs within the cutoff
   // Thermal bookkeeping (physics.md section 8), cumulative over committed steps with the
   // integrator's own weighting of the start and end flows, so that
   //   sum m c T + heat_to_barriers + heat_convected + heat_radiated

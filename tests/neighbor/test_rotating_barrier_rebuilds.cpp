@@ -31,7 +31,6 @@ const double kTurn = 0.5 * kPi;  // rad, a quarter turn: every blade sweeps its 
 Scene impeller(double per_step) {
   Scene s = base_scene(Integrator::Verlet, kDt, {0.0, 0.0, 0.0});
   s.model.params.neighbor.skin = kSkin;
-  s.model.params.checks.energy_jump = 0.0;  // the blades' work is not in the balance
   ContactLawParams& c = s.model.params.contact.particle_barrier;
   c.restitution = 0.5;
   c.mu_static = 0.4;

@@ -192,8 +192,10 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
       }
     }
     if (!hist) {
+      // An element switched off ends its contacts: its spring is not handed on.
+      const std::uint8_t* on = b.timed() ? b.active.data() : nullptr;
       for (int s = 0; s < old_used; ++s) {
-        if (old[s].element < 0) continue;
+        if (old[s].element < 0 || (on && !on[old[s].element])) continue;
         bool still = false;
         for (std::size_t c2 = 0; c2 < count; ++c2)
           still |= found[c2].element == static_cast<std::uint32_t>(old[s].element);

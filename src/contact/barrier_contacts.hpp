@@ -8,7 +8,9 @@
 // History: each particle keeps up to kSlots contacts (element, spring, start-of-step tangential
 // velocity, normal). A contact that moves onto a neighbouring element of the same surface (a
 // sphere rolling across a seam) inherits the spring of the contact that just ended there, so
-// tangential forces do not jump at seams. The records live in a BarrierContactStore, only for
+// tangential forces do not jump at seams. An element switched off (Barriers::active) is in no
+// candidate list, so its contacts end: no force, no load, and its history is neither matched nor
+// inherited (gone at the next commit). The records live in a BarrierContactStore, only for
 // the particles near a barrier; an evaluation visits only those, in parallel. Loads on the
 // elements (force, moment about the centre, pressure) are summed per element in particle order,
 // independent of the thread count.

@@ -140,6 +140,15 @@ FingerprintPart barriers_part(const Barriers& b) {
         h.add(row[0]);
         h.add(row[1]);
       }
+      if (m.rotation->since != 0.0) h.add(m.rotation->since);
+      motion = h.value();
+    }
+    if (m.timed() || m.since != 0.0) {  // the default window and origin keep the earlier hashes
+      Hash h;
+      h.add(motion);
+      h.add(m.active_from);
+      h.add(m.active_until);
+      h.add(m.since);
       motion = h.value();
     }
     p.items.push_back(motion);

@@ -184,6 +184,33 @@ RotationLaw read_rotation(const TomlSection& r) {
   return law;
 }
 
+// [[barriers]] active = [t_start] or [t_start, t_end] and motion_from, into the source's law.
+void read_activity(const TomlSection& s, MotionLaw& law) {
+  if (const auto w = s.numbers("active", 1, 2)) {
+    const double from = (*w)[0];
+    if (!(from >= 0.0))
+      s.fail("active",
+             "expected [t_start] or [t_start, t_end] with t_start >= 0 (s), got t_start = " + number_text(from));
+    law.active_from = from;
+    if (w->size() == 2) {
+      const double until = (*w)[1];
+      if (!(until > from))
+        s.fail("active", "expected [t_start, t_end] with t_start < t_end (s), got t_start = " + number_text(from) +
+                             ", t_end = " + number_text(until));
+      law.active_until = until;
+    }
+  }
+  if (const auto f = s.string("motion_from")) {
+    if (*f == "start") {
+      law.since = law.active_from;  // 0 without `active`: the same as "zero"
+      if (law.rotation) law.rotation->since = law.since;
+    } else if (*f != "zero") {
+      const std::string want = "expected \"zero\" (the motion law runs on t) or \"start\" (on t - t_start)";
+      s.fail("motion_from", want + ", got \"" + *f + "\"");
+    }
+  }
+}
+
 void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene) {
   std::size_t entry = 0;
   for (const TomlSection& s : root.tables("particles", {"file", "generate", "material"})) {
@@ -209,7 +236,7 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
   }
   for (const TomlSection& s :
        root.tables("barriers", {"file", "stl", "group", "material", "rigid", "motion", "thickness", "temperature",
-                                "scale", "rotate_deg", "translate"})) {
+                                "scale", "rotate_deg", "translate", "active", "motion_from"})) {
     BarrierSource src;
     src.origin = root.file();
     src.line = s.line();
@@ -235,6 +262,7 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
       if (const auto r = m->table("rotation", {"axis", "origin", "omega", "omega_table"}))
         src.motion.rotation = read_rotation(*r);
     }
+    read_activity(s, src.motion);
     s.get("thickness", src.thickness, kNonNegative);
     src.temperature = s.number("temperature", kNonNegative);
     s.get("scale", src.scale, kPositive);

@@ -126,6 +126,32 @@ std::optional<std::vector<std::string>> TomlSection::strings(std::string_view k,
   return out;
 }
 
+std::optional<std::vector<double>> TomlSection::numbers(std::string_view k, std::size_t min_count,
+                                                        std::size_t max_count) const {
+  const toml::node* n = node(k);
+  if (!n) return std::nullopt;
+  const auto* a = n->as_array();
+  const std::string count = min_count == max_count
+                                ? std::to_string(min_count)
+                                : std::to_string(min_count) + (min_count + 1 == max_count ? " or " : " to ") +
+                                      std::to_string(max_count);
+  const std::string want = "expected an array of " + count + " numbers";
+  if (!a) fail(k, want + ", got " + type_name(*n));
+  if (a->size() < min_count || a->size() > max_count)
+    fail(k, want + ", got an array of " + std::to_string(a->size()) + " elements");
+  std::vector<double> out;
+  for (std::size_t j = 0; j < a->size(); ++j) {
+    const toml::node& e = *a->get(j);
+    double v = 0.0;
+    if (const auto* i = e.as_integer()) v = static_cast<double>(i->get());
+    else if (const auto* f = e.as_floating_point()) v = f->get();
+    else fail(k, want + ", element " + std::to_string(j + 1) + " is " + type_name(e));
+    if (!std::isfinite(v)) fail(k, want + ", element " + std::to_string(j + 1) + " is not finite");
+    out.push_back(v);
+  }
+  return out;
+}
+
 std::optional<std::vector<std::array<double, 2>>> TomlSection::number_pairs(std::string_view k) const {
   const toml::node* n = node(k);
   if (!n) return std::nullopt;

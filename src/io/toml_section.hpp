@@ -39,6 +39,8 @@ class TomlSection {
   std::optional<Vec3> vec3(std::string_view k) const;
   // An array of `count` strings ("expected an array of 2 strings" otherwise).
   std::optional<std::vector<std::string>> strings(std::string_view k, std::size_t count) const;
+  // An array of min_count to max_count finite numbers.
+  std::optional<std::vector<double>> numbers(std::string_view k, std::size_t min_count, std::size_t max_count) const;
   // A non-empty array of [a, b] rows of finite numbers; a bad row is reported at its own line.
   std::optional<std::vector<std::array<double, 2>>> number_pairs(std::string_view k) const;
   // Sub-table (standard or inline); "expected a table" when k holds anything else.

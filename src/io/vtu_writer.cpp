@@ -206,6 +206,9 @@ void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, do
     vector_array(s, "force", b.force);        // N
     vector_array(s, "moment", b.moment);      // N m, about the element centre
     scalar_array(s, "pressure", b.pressure);  // Pa
+    // Elements with an activity window are all written (at their law's place); 0 marks the
+    // switched-off ones, whose loads are zero.
+    if (b.timed()) int_array(s, "active", "UInt8", std::vector<int>(b.active.begin(), b.active.end()));
     // A rotating element's normal turns and its velocity varies over it: the one at its centre.
     if (b.rotating()) {
       std::vector<Vec3> normal(m), velocity(m);  // [M] -, m/s

@@ -16,7 +16,7 @@ void write_particles_vtu(const std::filesystem::path& file, const Particles& par
 
 // One VTK_TRIANGLE per barrier element at its current position (three unshared points each,
 // since elements may move with different laws). CellData: id, group, force, moment, pressure,
-// normal, velocity. FieldData "TimeValue" = time (s).
+// normal, velocity, and with activity windows active (1 on, 0 off). FieldData "TimeValue" = time (s).
 void write_barriers_vtu(const std::filesystem::path& file, const Barriers& barriers, double time);
 
 }  // namespace mpdem

@@ -84,6 +84,10 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
   perm_.resize(m);
   offset_build_.assign(barriers.offset.begin(), barriers.offset.end());
   vertex_build_.assign(barriers.rotating() ? 3 * m : 0, Vec3{});
+  const bool timed = barriers.timed();
+  if (timed) active_build_.assign(barriers.active.begin(), barriers.active.end());
+  else active_build_.clear();
+  std::size_t live = 0;  // active elements, the only ones in the hierarchy
   double max_grow = 0.0;
   for (std::size_t e = 0; e < m; ++e) {
     const Vec3 a = barriers.vertex(e, 0), b = barriers.vertex(e, 1), c = barriers.vertex(e, 2);
@@ -96,7 +100,7 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
     hi_[e] = vmax(vmax(a, b), c);
     grow_[e] = 0.5 * t + skin;
     centroid_[e] = 0.5 * (lo_[e] + hi_[e]);
-    perm_[e] = static_cast<std::uint32_t>(e);
+    if (!timed || barriers.active[e]) perm_[live++] = static_cast<std::uint32_t>(e);
     max_grow = std::max(max_grow, grow_[e]);
   }
   double rmax = 0.0;
@@ -106,8 +110,9 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
                                   " has a non-finite position or an invalid radius");
     rmax = std::max(rmax, radius[i]);
   }
+  perm_.resize(live);
   nodes_.clear();
-  if (m > 0) build_node(0, static_cast<std::uint32_t>(m), rmax + max_grow);
+  if (live > 0) build_node(0, static_cast<std::uint32_t>(live), rmax + max_grow);
 
   // One query per particle; each thread owns a contiguous block of particles (see VerletList).
   offset_.assign(n + 1, 0);
@@ -169,13 +174,22 @@ double BarrierBroadphase::max_barrier_displacement(const Barriers& barriers) con
   if (!built_ || barriers.size() != offset_build_.size()) return std::numeric_limits<double>::infinity();
   double m2 = 0.0;
   if (barriers.rotating() != !vertex_build_.empty()) return std::numeric_limits<double>::infinity();
+  // An element switched on or off since the build: the lists must follow (an O(M) compare, only
+  // for scenes with activity windows). Otherwise inactive elements are in no list and ignored.
+  const bool timed = barriers.timed();
+  if (timed != !active_build_.empty()) return std::numeric_limits<double>::infinity();
+  if (timed && !std::equal(active_build_.begin(), active_build_.end(), barriers.active.begin()))
+    return std::numeric_limits<double>::infinity();
+  const std::uint8_t* on = timed ? active_build_.data() : nullptr;  // null: all active
   if (barriers.rotating()) {
     // A rigid motion moves a triangle's points by an affine map: the largest move is a vertex's.
     for (std::size_t e = 0; e < barriers.size(); ++e)
-      for (int k = 0; k < 3; ++k) m2 = std::max(m2, norm2(barriers.vertex(e, k) - vertex_build_[3 * e + k]));
+      if (!on || on[e])
+        for (int k = 0; k < 3; ++k) m2 = std::max(m2, norm2(barriers.vertex(e, k) - vertex_build_[3 * e + k]));
     return std::sqrt(m2);
   }
-  for (std::size_t e = 0; e < barriers.size(); ++e) m2 = std::max(m2, norm2(barriers.offset[e] - offset_build_[e]));
+  for (std::size_t e = 0; e < barriers.size(); ++e)
+    if (!on || on[e]) m2 = std::max(m2, norm2(barriers.offset[e] - offset_build_[e]));
   return std::sqrt(m2);
 }
 

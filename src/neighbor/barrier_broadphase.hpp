@@ -19,6 +19,10 @@
 // the barrier displacement being that of the element's farthest-moved vertex when it rotates.
 // The candidate test stays valid up to a combined relative motion of `skin`, so this rule keeps a
 // factor-2 margin, and with still barriers it is exactly the particle list's rule.
+//
+// Elements switched off (Barriers::active) are left out of the hierarchy, so they cost nothing;
+// an element switching on or off between builds makes max_barrier_displacement infinite, which
+// forces the rebuild at the first evaluation that sees the change.
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -48,8 +52,9 @@ class BarrierBroadphase {
   // Particles with at least one candidate, ascending (so per-contact work can skip the rest).
   const std::vector<std::uint32_t>& active() const { return active_; }
 
-  // Largest displacement of an element since the build (m): |u_e - u_e(build)|, or with rotating
-  // barriers that of its vertices; +infinity if the element count changed.
+  // Largest displacement of an active element since the build (m): |u_e - u_e(build)|, or with
+  // rotating barriers that of its vertices; +infinity if the element count or the set of active
+  // elements changed.
   double max_barrier_displacement(const Barriers& barriers) const;
   // True when max_particle_displacement + max_barrier_displacement > skin/2 (or the element
   // count changed, or never built). Pass VerletList::max_displacement(x).
@@ -70,16 +75,17 @@ class BarrierBroadphase {
   double skin_ = 0.0;  // m
   bool built_ = false;
   std::uint64_t generation_ = 0;
-  std::vector<Vec3> lo_, hi_;           // [M] m, vertex box of each element (unexpanded)
-  std::vector<double> grow_;            // [M] m, t_b/2 + skin of each element
-  std::vector<Vec3> centroid_;          // [M] m, box centres, for splitting
-  std::vector<std::uint32_t> perm_;     // [M] element indices in leaf order
-  std::vector<Node> nodes_;             // [< 2M] hierarchy, root at 0
-  std::vector<Vec3> offset_build_;      // [M] m, barrier offsets u(t) at build
-  std::vector<Vec3> vertex_build_;      // [3M] m, vertices at build (only with rotating barriers; else empty)
-  std::vector<std::size_t> offset_{0};  // [N+1] CSR offsets
-  std::vector<std::uint32_t> index_;    // [candidates] element indices
-  std::vector<std::uint32_t> active_;   // [particles with candidates] indices, ascending
+  std::vector<Vec3> lo_, hi_;               // [M] m, vertex box of each element (unexpanded)
+  std::vector<double> grow_;                // [M] m, t_b/2 + skin of each element
+  std::vector<Vec3> centroid_;              // [M] m, box centres, for splitting
+  std::vector<std::uint32_t> perm_;         // [active elements] indices in leaf order
+  std::vector<Node> nodes_;                 // [< 2M] hierarchy, root at 0
+  std::vector<Vec3> offset_build_;          // [M] m, barrier offsets u(t) at build
+  std::vector<Vec3> vertex_build_;          // [3M] m, vertices at build (only with rotating barriers; else empty)
+  std::vector<std::uint8_t> active_build_;  // [M] -, Barriers::active at build (only when timed; else empty)
+  std::vector<std::size_t> offset_{0};      // [N+1] CSR offsets
+  std::vector<std::uint32_t> index_;        // [candidates] element indices
+  std::vector<std::uint32_t> active_;       // [particles with candidates] indices, ascending
   std::vector<std::vector<std::uint32_t>> thread_buf_;
   std::vector<std::vector<std::uint32_t>> thread_active_;
   std::vector<std::size_t> active_start_;  // [threads + 1] where each thread's active particles go

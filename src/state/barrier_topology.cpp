@@ -15,13 +15,17 @@ namespace {
 // Bit pattern for exact comparison; -0.0 and +0.0 are the same coordinate.
 std::uint64_t bits(double v) { return std::bit_cast<std::uint64_t>(v == 0.0 ? 0.0 : v); }
 
-using LawKey = std::array<std::uint64_t, 12>;
+using LawKey = std::array<std::uint64_t, 15>;
 
-// The translation's fields and the rotation law's index (equal index <=> equal RotationLaw).
+// The translation's fields, the rotation law's index (equal index <=> equal RotationLaw) and the
+// activity window and time origin: elements that can switch on and off apart are separate bodies,
+// so an edge contact is not given up to a neighbour that may be switched off.
 LawKey law_key(const MotionLaw& m, std::int32_t rotation) {
-  return {bits(m.a.x), bits(m.a.y), bits(m.a.z), bits(m.A.x),
-          bits(m.A.y), bits(m.A.z), bits(m.w1),  bits(m.B.x),
-          bits(m.B.y), bits(m.B.z), bits(m.w2),  static_cast<std::uint64_t>(static_cast<std::int64_t>(rotation))};
+  return {bits(m.a.x),         bits(m.a.y),          bits(m.a.z),
+          bits(m.A.x),         bits(m.A.y),          bits(m.A.z),
+          bits(m.w1),          bits(m.B.x),          bits(m.B.y),
+          bits(m.B.z),         bits(m.w2),           static_cast<std::uint64_t>(static_cast<std::int64_t>(rotation)),
+          bits(m.active_from), bits(m.active_until), bits(m.since)};
 }
 
 // Motion class per element: equal classes <=> identical MotionLaw fields. Sorting, not pairwise.

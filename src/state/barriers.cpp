@@ -41,6 +41,8 @@ bool Barriers::add(std::int64_t bid, const Vec3& a, const Vec3& b, const Vec3& c
     }
   }
   rotation_of.push_back(l);
+  active.push_back(!law.timed() || law.active_at(time));
+  timed_elements += law.timed();
   offset.push_back(law.displacement(time));
   velocity.push_back(law.velocity(time));
   force.emplace_back();
@@ -62,6 +64,8 @@ void Barriers::move_to(double t) {
     offset[e] = motion[e].displacement(t);
     velocity[e] = motion[e].velocity(t);
   }
+  if (timed())
+    for (std::size_t e = 0; e < size(); ++e) active[e] = !motion[e].timed() || motion[e].active_at(t);
   turn_to(t);
 }
 
@@ -93,8 +97,10 @@ Vec3 Barriers::pivot(std::size_t e) const {
 }
 
 double Barriers::max_point_speed() const {
-  double fastest = 0.0;  // m/s
+  double fastest = 0.0;                                        // m/s
+  const std::uint8_t* on = timed() ? active.data() : nullptr;  // null: all active
   for (std::size_t e = 0; e < size(); ++e) {
+    if (on && !on[e]) continue;
     double v = norm(velocity[e]);
     if (const std::int32_t l = rotation_of[e]; l >= 0) {
       const RotationLaw& r = rotations[static_cast<std::size_t>(l)];

@@ -4,6 +4,8 @@
 // optionally, a rotation R(theta(t)) about an axis through origin + u(t) (state/rotation_law.hpp):
 //   x(t) = u(t) + R (x0 - origin) + origin.
 // Loads (force, moment about the centre, pressure) are accumulated by the contact loop.
+// An element with an activity window (MotionLaw::active_at) takes part only inside it: its
+// state `active` follows the time of move_to, so it is derivable from time alone.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -40,6 +42,9 @@ struct Barriers {
   std::vector<Mat3> turn;     // -, R(theta(t))
   std::vector<Vec3> spin;     // rad/s, omega(t) axis
   double time = 0.0;          // s, of the state (move_to)
+  // --- activity at the current time [M] ---
+  std::vector<std::uint8_t> active;  // -, 1: takes part (always 1 for elements without a window)
+  std::size_t timed_elements = 0;    // elements with an activity window (MotionLaw::timed)
   // --- loads from particles, accumulated per evaluation [M] ---
   std::vector<Vec3> force;       // N
   std::vector<Vec3> moment;      // N m, about the element's current centre
@@ -47,6 +52,7 @@ struct Barriers {
 
   std::size_t size() const { return id.size(); }
   bool rotating() const { return !rotations.empty(); }  // some element has a rotation law
+  bool timed() const { return timed_elements > 0; }     // some element has an activity window
   // Appends a triangle; normal and area are derived. Returns false for a degenerate one.
   bool add(std::int64_t bid, const Vec3& a, const Vec3& b, const Vec3& c, int grp, double E, double nu,
            const MotionLaw& law, double t_b, double temp);
@@ -73,7 +79,8 @@ struct Barriers {
     if (l < 0) return velocity[e];
     return velocity[e] + cross(spin[static_cast<std::size_t>(l)], x - pivot(e));
   }
-  // m/s, the fastest point of any element: |u'| + |omega| x its vertices' largest distance from the axis.
+  // m/s, the fastest point of any active element: |u'| + |omega| x its vertices' largest distance
+  // from the axis (an inactive one is in no list; switching on forces a rebuild).
   double max_point_speed() const;
   // N m, moment of the particles' forces on element e about its rotation axis (along the unit
   // axis; 0 without rotation), from the last evaluation's loads.

@@ -3,6 +3,9 @@
 //   u(t) = a t + A sin(w1 t) + B cos(w2 t)
 // and, optionally, a rotation about an axis through a point that moves with u (RotationLaw).
 // Taken literally, a non-zero B shifts the barrier by B at t = 0 (documented in docs/scene.md).
+// The element takes part only in its activity window [active_from, active_until); with a time
+// origin `since` > 0 (motion_from = "start") the law runs on max(t - since, 0).
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -18,13 +21,29 @@ struct MotionLaw {
   Vec3 B{};                             // m, cosine amplitude
   double w2 = 0.0;                      // rad/s
   std::optional<RotationLaw> rotation;  // none: translation only
+  double active_from = 0.0;             // s, the element switches on at this time
+  double active_until = HUGE_VAL;       // s, ... and off at this one (+inf: never)
+  double since = 0.0;                   // s, the law's time origin (rotation->since must match)
 
-  Vec3 displacement(double t) const { return a * t + A * std::sin(w1 * t) + B * std::cos(w2 * t); }
-  Vec3 velocity(double t) const { return a + A * (w1 * std::cos(w1 * t)) - B * (w2 * std::sin(w2 * t)); }
+  // s, the law's own time; exactly t when since = 0, so a law without origin is unchanged.
+  double law_time(double t) const { return since == 0.0 ? t : std::max(t - since, 0.0); }
+  Vec3 displacement(double t) const {
+    const double s = law_time(t);
+    return a * s + A * std::sin(w1 * s) + B * std::cos(w2 * s);
+  }
+  Vec3 velocity(double t) const {
+    if (since != 0.0 && t < since) return {};  // held before the law starts
+    const double s = law_time(t);
+    return a + A * (w1 * std::cos(w1 * s)) - B * (w2 * std::sin(w2 * s));
+  }
   bool is_static() const {
     return norm2(a) == 0.0 && (norm2(A) == 0.0 || w1 == 0.0) && (norm2(B) == 0.0 || w2 == 0.0) &&
            !(rotation && rotation->turns());
   }
+  // An activity window other than "always" (the default [0, inf)).
+  bool timed() const { return active_from > 0.0 || active_until < HUGE_VAL; }
+  // Whether the element takes part at time t: active_from <= t < active_until.
+  bool active_at(double t) const { return t >= active_from && t < active_until; }
 };
 
 }  // namespace mpdem

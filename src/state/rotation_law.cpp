@@ -22,6 +22,10 @@ double antiderivative(const std::vector<std::array<double, 2>>& tab, double t) {
 }  // namespace
 
 double RotationLaw::rate(double t) const {
+  if (since != 0.0) {
+    if (t < since) return 0.0;
+    t -= since;
+  }
   if (omega_table.empty()) return omega;
   const auto& tab = omega_table;
   if (t <= tab.front()[0]) return tab.front()[1];
@@ -32,6 +36,10 @@ double RotationLaw::rate(double t) const {
 }
 
 double RotationLaw::angle(double t) const {
+  if (since != 0.0) {
+    if (t < since) return 0.0;
+    t -= since;
+  }
   if (omega_table.empty()) return omega * t;
   return antiderivative(omega_table, t) - antiderivative(omega_table, 0.0);
 }

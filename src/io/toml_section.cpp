@@ -164,7 +164,11 @@ std::optional<std::vector<std::array<double, 2>>> TomlSection::number_pairs(std:
     const toml::node& row = *a->get(j);
     const std::string at = ", row " + std::to_string(j + 1);
     const auto bad = [&](const std::string& why) {
-      throw InputError(*file_, row.source().begin.line, key(k), want + at + " " + why);
+      std::string message = want;
+      message += at;
+      message += ' ';
+      message += why;
+      throw InputError(*file_, row.source().begin.line, key(k), message);
     };
     const auto* r = row.as_array();
     if (!r) bad("is " + type_name(row));

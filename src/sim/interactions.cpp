@@ -1,5 +1,7 @@
 #include "sim/interactions.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -11,6 +13,7 @@
 #include "field/near_field_forces.hpp"
 #include "integrate/verlet_drift.hpp"
 #include "neighbor/neighbor_search.hpp"
+#include "sim/run_error.hpp"
 #include "contact/particle_contacts.hpp"
 
 namespace mpdem {
@@ -67,6 +70,13 @@ double Interactions::skin() const { return search_->skin(); }
 
 void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
   next_drift_.valid = false;
+  // A state that diverged within a step (a trapezoidal iteration, an absurd restored velocity)
+  // reaches a rebuild before the step's health scan: say which particle, as the scan would.
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (!isfinite(p.x[i]))
+      throw RunError(fmt::format("particle id {} has a non-finite position at t = {:.9g} s (the state diverged "
+                                 "within the step); reduce time.dt (see `mpdem check` for a recommended step)",
+                                 p.id[i], b.time));
   ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
   std::vector<std::uint32_t> old_index;  // old index of each particle after the rebuild
   if (reorder && p.size() > 1) {

@@ -92,3 +92,27 @@ TEST(Instability, ExcessiveOverlapNamesTheContact) {
     EXPECT_NE(msg.find("between particle id 9 and barrier element id 77"), std::string::npos) << msg;
   }
 }
+
+// A state that diverges within a step reaches a neighbour-list rebuild before the step's health
+// scan (fuzz_checkpoint: a restored state whose trapezoidal iteration overflowed, then the
+// evaluation's in-place rebuild). It is a RunError naming the particle id and the time, not the
+// neighbour search's internal "particle at index N".
+TEST(Instability, NonFinitePositionAtARebuildNamesTheParticle) {
+  Scene s = test::make_scene(1e-4, 1.0);
+  test::add_particle(s, 11, 0.001, {0, 0, 0});
+  test::add_particle(s, 42, 0.001, {1, 0, 0});
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
+  sim.advance(1e-4);
+  Particles& p = sim.particles();
+  const std::size_t i = p.id[0] == 42 ? 0 : 1;
+  p.x[i].y = std::numeric_limits<double>::infinity();
+  try {
+    sim.interactions().force_rebuild(p, sim.barriers(), false);
+    ADD_FAILURE() << "no error";
+  } catch (const RunError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("particle id 42 has a non-finite position at t = "), std::string::npos) << msg;
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "not a RunError: " << e.what();
+  }
+}

@@ -52,13 +52,7 @@ TEST(RotatingBarrierContacts, SphereOnTurntableMovesWithTheSurface) {
 TEST(RotatingBarrierContacts, PaddleGivesTheImpulseOfARigidWall) {
   for (Integrator integ : {Integrator::Verlet, Integrator::Trapezoidal}) {
     const double omega = 2.0, r = 0.06, phi0 = 0.1, e = 0.5, dt = 1e-6;  // rad/s, m, rad, -, s
-    Scene s = base_scene(integ, dt, {0.0, 0.0, 0.0});
-    ContactLawParams& c = s.model.params.contact.particle_barrier;
-    c.restitution = e;
-    c.mu_static = 0.0;
-    c.mu_dynamic = 0.0;
-    add_paddle(s.barriers, "paddle", 0.0, 0.02, 0.1, -0.02, 0.02, kE, kNu, spin_about_z(omega));
-    add_particle(s, 1, kR, {r * std::cos(phi0), r * std::sin(phi0), 0.0});
+    Scene s = paddle_scene(integ, dt, omega, r, phi0, e);
     Simulation sim(std::move(s), RunOptions{{}, false, false});
     const Particles& p = sim.particles();
     bool touched = false;

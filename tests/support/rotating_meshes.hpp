@@ -7,6 +7,8 @@
 #include <string>
 
 #include "state/barriers.hpp"
+#include "support/barrier_mechanics_scene.hpp"
+#include "support/scene_builder.hpp"
 
 namespace mpdem::test {
 
@@ -43,6 +45,20 @@ inline void add_paddle(Barriers& b, const std::string& group, double phi, double
   const Vec3 A = P(r0, z0), B = P(r1, z0), C = P(r1, z1), D = P(r0, z1);
   b.add(static_cast<std::int64_t>(b.size()), A, C, B, g, young, poisson, law, 0.0, nan);
   b.add(static_cast<std::int64_t>(b.size()), A, D, C, g, young, poisson, law, 0.0, nan);
+}
+
+// A frictionless sphere (id 1, radius kR) at rest at distance r from the z axis and angle phi0
+// (rad) ahead of a paddle (r in [0.02, 0.1] m, z in [-0.02, 0.02] m) turning at omega (rad/s),
+// restitution e, no gravity: the paddle-impact scene of the rotating-barrier tests.
+inline Scene paddle_scene(Integrator integ, double dt, double omega, double r, double phi0, double e) {
+  Scene s = base_scene(integ, dt, {0.0, 0.0, 0.0});
+  ContactLawParams& c = s.model.params.contact.particle_barrier;
+  c.restitution = e;
+  c.mu_static = 0.0;
+  c.mu_dynamic = 0.0;
+  add_paddle(s.barriers, "paddle", 0.0, 0.02, 0.1, -0.02, 0.02, kE, kNu, spin_about_z(omega));
+  add_particle(s, 1, kR, {r * std::cos(phi0), r * std::sin(phi0), 0.0});
+  return s;
 }
 
 }  // namespace mpdem::test

@@ -21,6 +21,9 @@ void check_initial_overlaps(const Scene& scene, SceneProblems& out);
 // [[particles]] generate regions that a barrier triangle passes through (errors: the generator
 // places particles without regard to barriers).
 void check_region_walls(const Scene& scene, SceneProblems& out);
+// A periodic [domain] (errors): barrier elements crossing a periodic face at t = 0 (a wall is
+// not copied across the period), and periods shorter than twice the neighbour search's reach.
+void check_periodic_domain(const Scene& scene, SceneProblems& out);
 // Estimated peak overlap of an impact at the expected speed per material pair against
 // checks.max_overlap (warnings).
 void check_impact_overlaps(const Scene& scene, SceneProblems& out);

@@ -50,4 +50,15 @@ SourceLocation barrier_source_location(const Scene& scene, int s) {
   return {scene.file.string(), src.line, "barriers", name};
 }
 
+SceneProblem problem_at(const SourceLocation& where, Severity severity, bool stops_run, std::string message) {
+  SceneProblem pr;
+  pr.severity = severity;
+  pr.file = where.file;
+  pr.line = where.line;
+  pr.key = where.key;
+  pr.stops_run = stops_run;
+  pr.message = std::move(message);
+  return pr;
+}
+
 }  // namespace mpdem

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <string>
 
+#include "check/scene_problem.hpp"
 #include "model/scene.hpp"
 
 namespace mpdem {
@@ -23,5 +24,7 @@ int barrier_source_of(const Scene& scene, std::size_t e);
 // Source s (-1: the scene itself).
 SourceLocation particle_source_location(const Scene& scene, int s);
 SourceLocation barrier_source_location(const Scene& scene, int s);
+// A problem located at `where` (its file, line and key).
+SceneProblem problem_at(const SourceLocation& where, Severity severity, bool stops_run, std::string message);
 
 }  // namespace mpdem

@@ -28,7 +28,7 @@ void ParticleContacts::ensure_history(std::size_t pairs) {
 }
 
 void ParticleContacts::refresh_terms(const Particles& p, std::uint64_t generation) {
-  const std::size_t n = p.size();
+  const std::size_t n = p.size_with_ghosts();  // ghosts are second members
   terms_.resize(n);
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) terms_[i] = {p.radius[i], 1.0 / p.mass[i]};  // (52), (53)
@@ -48,7 +48,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
     throw std::logic_error("particle contacts: phi < 1 needs the step-start history (trapezoidal integrator)");
   const VerletList& list = search.pairs();
   const PairBlocks& blocks = search.blocks();
-  const std::size_t n = p.size();
+  const std::size_t n = p.size_with_ghosts();  // the blocks span the ghosts, which get the second members' shares
   ensure_history(list.num_pairs());
   slipped_.resize(step_start_ ? list.num_pairs() : 0);
   cross_force_.resize(blocks.num_cross());
@@ -167,28 +167,39 @@ ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborS
   if (spring_.size() != list.num_pairs()) return h;
   const auto& off = list.offsets();
   const auto& idx = list.indices();
-  const std::size_t n = list.size();
+  const std::size_t n = list.owned();
+  const PeriodicImages& images = search.images();
   const bool vt = !vt0_.empty(), wr = !wr0_.empty();
+  // Keyed by the owned members' old indices, the smaller first (a ghost stands for its source,
+  // and a pair with one may have its source first: the history is then flipped).
+  const auto members = [&](std::size_t i, std::size_t k) {
+    const std::uint32_t j = idx[k] < n ? idx[k] : images.source(idx[k] - n);
+    return std::pair<std::uint32_t, std::uint32_t>{static_cast<std::uint32_t>(i), j};
+  };
   h.offset.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    std::uint32_t c = 0;
-    for (std::size_t k = off[i]; k < off[i + 1]; ++k) c += holds_history(k);
-    h.offset[i + 1] = h.offset[i] + c;
-  }
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = off[i]; k < off[i + 1]; ++k)
+      if (holds_history(k)) {
+        const auto [a, b] = members(i, k);
+        ++h.offset[std::min(a, b) + 1];
+      }
+  for (std::size_t i = 0; i < n; ++i) h.offset[i + 1] += h.offset[i];
   const std::size_t total = h.offset[n];
   h.second.resize(total);
   h.spring.resize(total);
   if (vt) h.vt0.resize(total);
   if (wr) h.wr0.resize(total);
-  std::size_t c = 0;
+  std::vector<std::uint32_t> fill(h.offset.begin(), h.offset.end() - 1);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
       if (!holds_history(k)) continue;
-      h.second[c] = idx[k];
-      h.spring[c] = spring_[k];
-      if (vt) h.vt0[c] = vt0_[k];
-      if (wr) h.wr0[c] = wr0_[k];
-      ++c;
+      const auto [a, b] = members(i, k);
+      const bool flip = b < a;
+      const std::uint32_t c = fill[flip ? b : a]++;
+      h.second[c] = flip ? a : b;
+      h.spring[c] = flip ? -spring_[k] : spring_[k];
+      if (vt) h.vt0[c] = flip ? -vt0_[k] : vt0_[k];
+      if (wr) h.wr0[c] = flip ? -wr0_[k] : wr0_[k];
     }
   // The slot arrays are rebuilt for the new list; free them now (peak memory).
   spring_ = {};
@@ -206,13 +217,15 @@ void ParticleContacts::restore_history(const NeighborSearch& search, CarriedHist
   if (h.second.empty()) return;
   const auto& off = list.offsets();
   const auto& idx = list.indices();
-  const std::size_t n = list.size();
+  const std::size_t n = list.owned();
+  const PeriodicImages& images = search.images();
   const bool vt = !vt0_.empty() && !h.vt0.empty(), wr = !wr0_.empty() && !h.wr0.empty();
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
       // The old pair was stored under its smaller old index; the spring acts on that member.
-      const std::uint32_t a = old_index[i], b = old_index[idx[k]];
+      const std::uint32_t j = idx[k] < n ? idx[k] : images.source(idx[k] - n);
+      const std::uint32_t a = old_index[i], b = old_index[j];
       const bool flip = a > b;
       const std::uint32_t first = flip ? b : a, second = flip ? a : b;
       if (static_cast<std::size_t>(second) + 1 >= h.offset.size()) continue;  // not in the old list
@@ -237,11 +250,11 @@ void ParticleContacts::restore(BinaryReader& r, const Particles& p, const Neighb
 std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, const NeighborSearch& search) const {
   std::vector<PairHistory> h;
   const VerletList& list = search.pairs();
-  if (spring_.size() != list.num_pairs() || list.size() != p.size()) return h;
+  if (spring_.size() != list.num_pairs() || list.size() != p.size_with_ghosts()) return h;
   const auto& off = list.offsets();
   const auto& idx = list.indices();
   const bool vt = !vt0_.empty(), wr = !wr0_.empty();
-  for (std::size_t i = 0; i < list.size(); ++i)
+  for (std::size_t i = 0; i < list.owned(); ++i)
     for (std::size_t k = off[i]; k < off[i + 1]; ++k)
       if (holds_history(k))
         h.push_back({p.id[i], p.id[idx[k]], spring_[k], vt ? vt0_[k] : Vec3{}, wr ? wr0_[k] : Vec3{}});
@@ -268,9 +281,9 @@ void ParticleContacts::import_history(const Particles& p, const NeighborSearch& 
   std::sort(h.begin(), h.end(), key_less);
   const auto& off = list.offsets();
   const auto& idx = list.indices();
-  for (std::size_t i = 0; i < list.size(); ++i)
+  for (std::size_t i = 0; i < list.owned(); ++i)
     for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
-      const std::int64_t a = p.id[i], b = p.id[idx[k]];
+      const std::int64_t a = p.id[i], b = p.id[idx[k]];  // a ghost carries its source's id
       const bool flip = a > b;
       PairHistory key{flip ? b : a, flip ? a : b, {}, {}, {}};
       auto it = std::lower_bound(h.begin(), h.end(), key, key_less);

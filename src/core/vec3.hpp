@@ -33,6 +33,7 @@ struct Vec3 {
     return *this;
   }
   constexpr double operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+  constexpr double& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
   friend constexpr bool operator==(const Vec3&, const Vec3&) = default;
 };
 

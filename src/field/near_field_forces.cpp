@@ -70,9 +70,11 @@ double NearFieldForces::evaluate(Particles& p, const NeighborSearch& search) {
     }
   });
 
-  // 2. Gather per particle in a fixed order: own slots, then incoming slots (third law).
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-  for (std::size_t i = 0; i < n; ++i) {
+  // 2. Gather per particle in a fixed order: own slots, then incoming slots (third law); ghosts
+  //    too (their share is folded onto their sources afterwards).
+  const std::size_t all = list.size();
+#pragma omp parallel for schedule(static) if (all > kParallelThreshold)
+  for (std::size_t i = 0; i < all; ++i) {
     Vec3 f{};
     for (std::size_t k = off[i]; k < off[i + 1]; ++k) f += force_[k];
     for (std::uint32_t k : search.incoming(i)) f -= force_[k];

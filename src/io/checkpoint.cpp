@@ -86,8 +86,12 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
   w.section("run_record", [&](BinaryWriter& o) { RunRecord::for_each_field(record_, [&](auto& v) { o.value(v); }); });
   // One section per particle array, by name: an array added to Particles adds a section, and a
   // checkpoint without it is refused naming it.
+  // The owned particles only: ghosts are rebuilt from them at the restore.
+  const std::size_t owned = scene_.particles.size();
   scene_.particles.for_each_array([&](const char* name, auto& a) {
-    w.section(std::string("particles/") + name, [&](BinaryWriter& o) { o.vector(a); });
+    w.section(std::string("particles/") + name, [&](BinaryWriter& o) {
+      o.vector(std::decay_t<decltype(a)>(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(owned)));
+    });
   });
   interactions_->save(w, scene_.particles);
   if (output_) w.section("output", [&](BinaryWriter& o) { output_->save(o); });
@@ -134,6 +138,7 @@ void Simulation::resume_from(const std::filesystem::path& file) {
       RunRecord::for_each_field(record_, [&](auto& v) { v = s.value<std::decay_t<decltype(v)>>(); });
     });
     Particles& p = scene_.particles;
+    p.drop_ghosts();
     p.for_each_array([&](const char* array, auto& a) {
       read(std::string("particles/") + array,
            [&](BinaryReader& s) { a = s.template vector<typename std::decay_t<decltype(a)>::value_type>(); });

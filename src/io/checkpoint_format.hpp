@@ -19,7 +19,7 @@
 
 namespace mpdem {
 
-inline constexpr std::uint32_t kCheckpointFormat = 7;
+inline constexpr std::uint32_t kCheckpointFormat = 8;
 
 class CheckpointWriter {
  public:

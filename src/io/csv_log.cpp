@@ -101,9 +101,11 @@ void CsvLog::flush() {
   buffer_.clear();
 }
 
-void write_particles_csv(const std::filesystem::path& file, const Particles& p, double time) {
+void write_particles_csv(const std::filesystem::path& file, const Particles& p, double time, const Vec3& period) {
+  const bool periodic = period.x > 0.0 || period.y > 0.0 || period.z > 0.0;
   write_file_atomically(file, [&](std::ostream& os) {
-    std::string line = "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz\n";
+    std::string line = "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz";
+    line += periodic ? ",ix,iy,iz,xu,yu,zu\n" : "\n";
     auto num = [&line](double v) {
       append_csv_number(line, v);
       line += ',';
@@ -128,6 +130,14 @@ void write_particles_csv(const std::filesystem::path& file, const Particles& p, 
       num(p.T[i]);
       num(p.charge[i]);
       vec(p.force[i]);
+      if (periodic) {
+        const auto& im = p.image[i];
+        for (int c = 0; c < 3; ++c) {
+          line.append(buf, std::to_chars(buf, buf + sizeof buf, im[static_cast<std::size_t>(c)]).ptr);
+          line += ',';
+        }
+        vec(p.x[i] + Vec3{im[0] * period.x, im[1] * period.y, im[2] * period.z});  // m, unwrapped
+      }
       line.back() = '\n';
       if (line.size() >= kFlushBytes) {
         os << line;

@@ -50,6 +50,9 @@ class CsvLog {
 // Writes all particles at one time as a complete CSV file, atomically. Columns:
 // time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz
 // (s, -, m, m/s, rad/s, m, -, K, C, N).
-void write_particles_csv(const std::filesystem::path& file, const Particles& particles, double time);
+// period [m]: the domain's period along its periodic axes, 0 along the others; with any periodic
+// axis the rows add the image counts ix, iy, iz and the unwrapped centre xu, yu, zu (m).
+void write_particles_csv(const std::filesystem::path& file, const Particles& particles, double time,
+                         const Vec3& period = {});
 
 }  // namespace mpdem

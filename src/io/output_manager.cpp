@@ -1,5 +1,7 @@
 #include "io/output_manager.hpp"
 
+#include "neighbor/periodic_images.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -151,7 +153,8 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
     barriers_pvd_->add(t, name);
   }
   if (particles_csv_.every > 0.0 && due(particles_csv_, t, dt, end, force)) {
-    write_particles_csv(dir_ / fmt::format("particles_csv/particles_{:06d}.csv", particles_csv_.count - 1), p, t);
+    write_particles_csv(dir_ / fmt::format("particles_csv/particles_{:06d}.csv", particles_csv_.count - 1), p, t,
+                        PeriodicImages(model_.params.domain).period());
   }
   if (groups_ && due(barrier_log_, t, dt, end, force)) {
     std::vector<double> row(groups_->columns().size(), 0.0);

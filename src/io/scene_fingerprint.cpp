@@ -179,6 +179,7 @@ FingerprintPart domain_part(const DomainParams& d) {
   k.key("[domain] given or not", d.bounded);
   k.key("domain.min", d.bounded ? d.min : Vec3{});
   k.key("domain.max", d.bounded ? d.max : Vec3{});
+  k.key("domain.periodic", d.periodic[0], d.periodic[1], d.periodic[2]);
   return k.finish();
 }
 

@@ -273,7 +273,7 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
 }
 
 void read_domain_neighbor_output(const TomlSection& root, Params& p) {
-  if (const auto s = root.table("domain", {"min", "max", "on_exit"})) {
+  if (const auto s = root.table("domain", {"min", "max", "on_exit", "periodic"})) {
     p.domain.bounded = true;
     p.domain.min = s->require(s->vec3("min"), "min");
     p.domain.max = s->require(s->vec3("max"), "max");
@@ -286,6 +286,14 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
       else if (*e == "stop") p.domain.on_exit = ExitPolicy::Stop;
       else s->fail("on_exit", "expected \"remove\" or \"stop\", got \"" + *e + "\"");
     }
+    p.domain.periodic_line = s->line_of("periodic");
+    if (const auto axes = s->strings("periodic", 0, 3))
+      for (const std::string& a : *axes) {
+        const int c = a == "x" ? 0 : a == "y" ? 1 : a == "z" ? 2 : -1;
+        if (c < 0) s->fail("periodic", "expected axis names \"x\", \"y\" or \"z\", got \"" + a + "\"");
+        if (p.domain.periodic[static_cast<std::size_t>(c)]) s->fail("periodic", "axis \"" + a + "\" is listed twice");
+        p.domain.periodic[static_cast<std::size_t>(c)] = true;
+      }
   }
   if (const auto s = root.table("neighbor", {"skin"})) s->get("skin", p.neighbor.skin, kNonNegative);
   if (const auto s = root.table("checks", {"max_overlap", "energy_jump", "energy_drift"})) {

@@ -109,15 +109,20 @@ std::optional<Vec3> TomlSection::vec3(std::string_view k) const {
   return Vec3{c[0], c[1], c[2]};
 }
 
-std::optional<std::vector<std::string>> TomlSection::strings(std::string_view k, std::size_t count) const {
+std::optional<std::vector<std::string>> TomlSection::strings(std::string_view k, std::size_t min_count,
+                                                             std::size_t max_count) const {
   const toml::node* n = node(k);
   if (!n) return std::nullopt;
   const auto* a = n->as_array();
-  const std::string want = "expected an array of " + std::to_string(count) + " strings";
+  const std::string want = "expected an array of " +
+                           (min_count == max_count ? std::to_string(min_count)
+                                                   : std::to_string(min_count) + " to " + std::to_string(max_count)) +
+                           " strings";
   if (!a) fail(k, want + ", got " + type_name(*n));
-  if (a->size() != count) fail(k, want + ", got an array of " + std::to_string(a->size()) + " elements");
+  if (a->size() < min_count || a->size() > max_count)
+    fail(k, want + ", got an array of " + std::to_string(a->size()) + " elements");
   std::vector<std::string> out;
-  for (std::size_t j = 0; j < count; ++j) {
+  for (std::size_t j = 0; j < a->size(); ++j) {
     const toml::node& e = *a->get(j);
     const auto* str = e.as_string();
     if (!str) fail(k, want + ", element " + std::to_string(j + 1) + " is " + type_name(e));

@@ -38,7 +38,12 @@ class TomlSection {
   std::optional<std::string> string(std::string_view k) const;
   std::optional<Vec3> vec3(std::string_view k) const;
   // An array of `count` strings ("expected an array of 2 strings" otherwise).
-  std::optional<std::vector<std::string>> strings(std::string_view k, std::size_t count) const;
+  std::optional<std::vector<std::string>> strings(std::string_view k, std::size_t count) const {
+    return strings(k, count, count);
+  }
+  // An array of min_count to max_count strings.
+  std::optional<std::vector<std::string>> strings(std::string_view k, std::size_t min_count,
+                                                  std::size_t max_count) const;
   // An array of min_count to max_count finite numbers.
   std::optional<std::vector<double>> numbers(std::string_view k, std::size_t min_count, std::size_t max_count) const;
   // A non-empty array of [a, b] rows of finite numbers; a bad row is reported at its own line.

@@ -159,19 +159,20 @@ constexpr int kVtkTriangle = 5;
 void write_particles_vtu(const std::filesystem::path& file, const Particles& p, double time) {
   write_file_atomically(file, [&](std::ostream& os) {
     TextSink s(os);
-    const std::size_t n = p.size();
+    const std::size_t n = p.size();  // the owned particles: ghosts (periodic images) are not written
+    const auto owned = [n](const auto& a) { return std::span(a.data(), n); };
     header(s, time, n, n);
     s.text("      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n");
-    id_array(s, "id", p.id);                        // -
-    scalar_array(s, "radius", p.radius);            // m
-    int_array(s, "material", "Int32", p.material);  // index into the scene's materials
-    vector_array(s, "velocity", p.v);               // m/s
-    vector_array(s, "angular_velocity", p.w);       // rad/s
-    vector_array(s, "force", p.force);              // N
-    scalar_array(s, "temperature", p.T);            // K
-    scalar_array(s, "charge", p.charge);            // C
-    open_array(s, "Float64", "orientation", 4);     // unit quaternion (w, x, y, z), body -> world
-    for (const Quat& q : p.q) {
+    id_array(s, "id", owned(p.id));                        // -
+    scalar_array(s, "radius", owned(p.radius));            // m
+    int_array(s, "material", "Int32", owned(p.material));  // index into the scene's materials
+    vector_array(s, "velocity", owned(p.v));               // m/s
+    vector_array(s, "angular_velocity", owned(p.w));       // rad/s
+    vector_array(s, "force", owned(p.force));              // N
+    scalar_array(s, "temperature", owned(p.T));            // K
+    scalar_array(s, "charge", owned(p.charge));            // C
+    open_array(s, "Float64", "orientation", 4);            // unit quaternion (w, x, y, z), body -> world
+    for (const Quat& q : owned(p.q)) {
       s.value(q.w);
       s.value(q.x);
       s.value(q.y);
@@ -182,7 +183,7 @@ void write_particles_vtu(const std::filesystem::path& file, const Particles& p, 
     s.text("      </PointData>\n"
            "      <Points>\n");
     open_array(s, "Float64", "Points", 3);  // m, centres
-    for (const Vec3& x : p.x) {
+    for (const Vec3& x : owned(p.x)) {
       s.value(x.x);
       s.value(x.y);
       s.value(x.z);

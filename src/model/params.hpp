@@ -4,6 +4,7 @@
 // near field, contact dissipation, analysis type) plus domain, neighbour search and output.
 // Constant during a run. Every field states its SI unit; defaults here are the documented
 // defaults of docs/scene.md.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -135,6 +136,11 @@ struct DomainParams {
   bool bounded = false;  // false: no domain check
   Vec3 min{}, max{};     // m, axis-aligned box
   ExitPolicy on_exit = ExitPolicy::Stop;
+  // Axes (x, y, z) along which the domain is periodic, with period max - min: particles leaving
+  // through those faces come back through the opposite ones (neighbor/periodic_images.hpp).
+  std::array<bool, 3> periodic{};
+  std::size_t periodic_line = 0;  // line of domain.periodic in the scene file, for messages (0 = none)
+  bool any_periodic() const { return periodic[0] || periodic[1] || periodic[2]; }
 };
 
 struct NeighborParams {

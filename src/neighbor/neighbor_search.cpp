@@ -9,26 +9,29 @@
 namespace mpdem {
 
 bool NeighborSearch::needs_rebuild(const Particles& p, const Barriers& b) const {
-  if (list_.size() != p.size() || broad_.num_elements() != b.size()) return true;
+  if (stale(p) || list_.size() != p.size_with_ghosts() || broad_.num_elements() != b.size()) return true;
   // One pass over the particles: the barrier rule needs the displacement itself.
   if (b.size() == 0) return list_.needs_rebuild(p.x);
   return broad_.needs_rebuild(b, list_.max_displacement(p.x));
 }
 
-void NeighborSearch::rebuild(const Particles& p, const Barriers& b) {
-  build(p.x, p.radius, b);
+void NeighborSearch::rebuild(Particles& p, const Barriers& b) {
+  p.drop_ghosts();
+  build(p, p.x, b);
   ++rebuilds_;
 }
 
 void NeighborSearch::save(BinaryWriter& w) const {
-  w.vector(list_.build_positions());
+  const auto& xb = list_.build_positions();
+  w.vector(std::vector<Vec3>(xb.begin(), xb.begin() + static_cast<std::ptrdiff_t>(list_.owned())));
   w.vector(barrier_offsets_build_);
   w.value(rebuilds_);
   // Only scenes with rotating barriers: their placement at the build needs the time too.
   if (rotating_build_) w.value(barrier_time_build_);
 }
 
-void NeighborSearch::restore(BinaryReader& r, const Particles& p, const Barriers& b) {
+void NeighborSearch::restore(BinaryReader& r, Particles& p, const Barriers& b) {
+  p.drop_ghosts();
   const std::vector<Vec3> x = r.vector<Vec3>();
   Barriers at_build = b;
   at_build.offset = r.vector<Vec3>();
@@ -44,13 +47,28 @@ void NeighborSearch::restore(BinaryReader& r, const Particles& p, const Barriers
     if (!std::isfinite(t)) throw std::runtime_error("the barriers' time at the last build is not finite");
     at_build.turn_to(t);
   }
-  build(x, p.radius, at_build);
+  build(p, x, at_build);
 }
 
-void NeighborSearch::build(std::span<const Vec3> x, std::span<const double> radius, const Barriers& b) {
+void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Barriers& b) {
   ++generation_;
-  list_.build(x, radius, skin_, extra_);
-  broad_.build(x, radius, b, skin_);
+  const std::size_t owned = p.size();
+  std::vector<Vec3> x_all;  // m, build positions of the owned particles and their ghosts
+  std::span<const Vec3> x = x_owned;
+  if (images_.active()) {
+    // x_owned may be p.x, which appending the ghosts reallocates: copied first.
+    x_all.assign(x_owned.begin(), x_owned.end());
+    double rmax = 0.0;
+    for (std::size_t i = 0; i < owned; ++i) rmax = std::max(rmax, p.radius[i]);
+    images_.select(x_all, periodic_image_width(rmax, extra_, skin_));
+    images_.append(p);
+    x_all.reserve(owned + images_.size());
+    for (std::size_t g = 0; g < images_.size(); ++g) x_all.push_back(x_all[images_.source(g)] + images_.shift(g));
+    x = x_all;
+  }
+  const std::span<const double> radius(p.radius.data(), owned);
+  list_.build(x, p.radius, skin_, extra_, owned, p.id);
+  broad_.build(x.first(owned), radius, b, skin_);
   barrier_offsets_build_ = b.offset;
   rotating_build_ = b.rotating();
   barrier_time_build_ = b.time;
@@ -60,7 +78,7 @@ void NeighborSearch::build(std::span<const Vec3> x, std::span<const double> radi
     in_slot_ = {};
     return;
   }
-  const std::size_t n = x.size();
+  const std::size_t n = x.size();  // ghosts included: they are second members too
   // Transposed index: counting sort of the slots by their second member keeps them ascending.
   const auto& idx = list_.indices();
   in_offset_.assign(n + 1, 0);
@@ -73,8 +91,9 @@ void NeighborSearch::build(std::span<const Vec3> x, std::span<const double> radi
 
 std::vector<std::uint32_t> NeighborSearch::spatial_order(const Particles& p) const {
   double rmax = 0.0;
-  for (double r : p.radius) rmax = std::max(rmax, r);
-  return mpdem::spatial_order(p.x, 2.0 * rmax + skin_ + extra_);
+  const std::size_t n = p.size();
+  for (std::size_t i = 0; i < n; ++i) rmax = std::max(rmax, p.radius[i]);
+  return mpdem::spatial_order(std::span<const Vec3>(p.x.data(), n), 2.0 * rmax + skin_ + extra_);
 }
 
 }  // namespace mpdem

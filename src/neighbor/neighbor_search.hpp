@@ -10,6 +10,7 @@
 #include "io/binary_stream.hpp"
 #include "neighbor/barrier_broadphase.hpp"
 #include "neighbor/pair_blocks.hpp"
+#include "neighbor/periodic_images.hpp"
 #include "neighbor/verlet_list.hpp"
 #include "state/barriers.hpp"
 #include "state/particles.hpp"
@@ -18,14 +19,27 @@ namespace mpdem {
 
 class NeighborSearch {
  public:
-  // skin [m] > 0; extra_range [m] >= 0 adds to the contact range (near-field cutoff).
-  NeighborSearch(double skin, double extra_range) : skin_(skin), extra_(extra_range) {}
+  // skin [m] > 0; extra_range [m] >= 0 adds to the contact range (near-field cutoff); the
+  // domain's periodic axes get ghost images (periodic_images.hpp).
+  NeighborSearch(double skin, double extra_range, const DomainParams& domain = {})
+      : skin_(skin), extra_(extra_range), images_(domain) {}
 
+  // The particles changed in count (or lost their ghosts) since the build, or moved too far.
   bool needs_rebuild(const Particles& p, const Barriers& b) const;
-  void rebuild(const Particles& p, const Barriers& b);
-  // Checkpoints: the build positions of both lists, so a resumed run rebuilds at the same steps.
+  bool stale(const Particles& p) const { return list_.owned() != p.size() || images_.size() != p.n_ghost; }
+  // Builds the lists for the current positions, replacing p's ghosts by new ones.
+  void rebuild(Particles& p, const Barriers& b);
+  // Wraps the owned particles into the periodic domain (between steps only; then rebuild).
+  void wrap(Particles& p) const { images_.wrap(p); }
+  // Copies the owned particles' state onto their ghosts (every evaluation) ...
+  void refresh_ghosts(Particles& p) const { images_.refresh(p); }
+  // ... and adds the ghosts' forces, torques and heat flows to their owners after it.
+  void fold_ghosts(Particles& p) const { images_.fold(p); }
+  const PeriodicImages& images() const { return images_; }
+  // Checkpoints: the build positions of both lists, so a resumed run rebuilds at the same steps
+  // (and with the same ghosts).
   void save(BinaryWriter& w) const;
-  void restore(BinaryReader& r, const Particles& p, const Barriers& b);
+  void restore(BinaryReader& r, Particles& p, const Barriers& b);
   // Permutation sorting the particles along a space-filling curve (for cache locality).
   std::vector<std::uint32_t> spatial_order(const Particles& p) const;
 
@@ -51,6 +65,7 @@ class NeighborSearch {
  private:
   double skin_;
   double extra_;
+  PeriodicImages images_;
   std::uint64_t rebuilds_ = 0;
   std::uint64_t generation_ = 0;
   std::vector<Vec3> barrier_offsets_build_;  // [M] m, barrier offsets at the last build
@@ -60,10 +75,11 @@ class NeighborSearch {
   BarrierBroadphase broad_;
   PairBlocks blocks_;
   bool want_incoming_ = false;
-  std::vector<std::size_t> in_offset_;  // [N+1] CSR offsets of the transposed index
+  std::vector<std::size_t> in_offset_;  // [N+1] CSR offsets of the transposed index (ghosts included)
   std::vector<std::uint32_t> in_slot_;  // [pairs] slots, grouped by second member
 
-  void build(std::span<const Vec3> x, std::span<const double> radius, const Barriers& b);
+  // Builds for the owned particles' positions x_owned [N] (m): ghosts, lists, candidates.
+  void build(Particles& p, std::span<const Vec3> x_owned, const Barriers& b);
 };
 
 }  // namespace mpdem

@@ -22,9 +22,13 @@ void sort_short(std::uint32_t* first, std::uint32_t* last) {
 }
 }  // namespace
 
-void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range) {
+void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range,
+                       std::size_t owned, std::span<const std::int64_t> id) {
   const std::size_t n = x.size();
   if (radius.size() != n) throw std::invalid_argument("neighbour list: positions and radii differ in size");
+  const bool ghosts = owned < n;
+  if (owned > n || (ghosts && id.size() != n))
+    throw std::invalid_argument("neighbour list: ghosts need the ids of all particles");
   if (!(skin >= 0.0) || !std::isfinite(skin)) throw std::invalid_argument("neighbour list: skin must be >= 0");
   if (!(extra_range >= 0.0) || !std::isfinite(extra_range))
     throw std::invalid_argument("neighbour list: extra range must be >= 0");
@@ -54,13 +58,16 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
   const auto start = grid.cell_start();
   std::vector<Vec3> xs(n);                             // m
   std::vector<double> rs(n);                           // m
+  std::vector<std::int64_t> ids(ghosts ? n : 0);       // ids in cell order (with ghosts only)
   std::vector<std::vector<std::uint32_t>> thread_buf;  // per-thread pair buffers
 #pragma omp parallel for schedule(static) if (n >= kNeighborParallelMin)
   for (std::size_t k = 0; k < n; ++k) {
     xs[k] = x[sorted[k]];
     rs[k] = radius[sorted[k]];
+    if (ghosts) ids[k] = id[sorted[k]];
   }
   x_build_.assign(x.begin(), x.end());
+  owned_ = owned;
   offset_.assign(n + 1, 0);
 
   // Each thread owns a contiguous block of i: it writes only those counts and its own buffer,
@@ -72,8 +79,8 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
 #pragma omp single
     thread_buf.resize(nt);
     std::vector<std::uint32_t>& buf = thread_buf[t];
-    std::size_t used = 0;  // entries of buf in use
-    const std::size_t lo = n * t / nt, hi = n * (t + 1) / nt;
+    std::size_t used = 0;                                              // entries of buf in use
+    const std::size_t lo = owned * t / nt, hi = owned * (t + 1) / nt;  // ghosts list no pairs
     std::uint32_t cell_buf[27];
     int ncells = 0;
     std::uint32_t last_cell = CellGrid::kNone;
@@ -93,13 +100,27 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
       std::uint32_t* out = buf.data();
       // Branch-free filter: every candidate is written, the slot is kept only on a hit (the
       // j > i and distance tests are data-dependent coin flips a branch predictor loses).
-      for (std::uint32_t nc : cells) {
-        for (std::uint32_t k = start[nc]; k < start[nc + 1]; ++k) {
-          const std::uint32_t j = sorted[k];
-          const Vec3 d = xs[k] - xi;
-          const double cut = ri + rs[k] + extra_range + skin;  // documented pair criterion
-          out[used] = j;
-          used += static_cast<std::size_t>((j > i) & (norm2(d) < cut * cut));
+      if (!ghosts) {
+        for (std::uint32_t nc : cells) {
+          for (std::uint32_t k = start[nc]; k < start[nc + 1]; ++k) {
+            const std::uint32_t j = sorted[k];
+            const Vec3 d = xs[k] - xi;
+            const double cut = ri + rs[k] + extra_range + skin;  // documented pair criterion
+            out[used] = j;
+            used += static_cast<std::size_t>((j > i) & (norm2(d) < cut * cut));
+          }
+        }
+      } else {
+        const std::int64_t idi = id[i];
+        for (std::uint32_t nc : cells) {
+          for (std::uint32_t k = start[nc]; k < start[nc + 1]; ++k) {
+            const std::uint32_t j = sorted[k];
+            const Vec3 d = xs[k] - xi;
+            const double cut = ri + rs[k] + extra_range + skin;
+            const bool second = j < owned ? j > i : idi < ids[k];  // ghosts: one image of the pair
+            out[used] = j;
+            used += static_cast<std::size_t>(second & (norm2(d) < cut * cut));
+          }
         }
       }
       sort_short(out + first, out + used);
@@ -118,9 +139,9 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
 }
 
 double VerletList::max_displacement(std::span<const Vec3> x) const {
-  if (!built_ || x.size() != x_build_.size()) return std::numeric_limits<double>::infinity();
+  if (!built_ || (x.size() != x_build_.size() && x.size() != owned_)) return std::numeric_limits<double>::infinity();
   double m2 = 0.0;
-  const std::size_t n = x.size();
+  const std::size_t n = owned_;
 #pragma omp parallel for schedule(static) reduction(max : m2) if (n >= kNeighborParallelMin)
   for (std::size_t i = 0; i < n; ++i) m2 = std::max(m2, norm2(x[i] - x_build_[i]));
   return std::sqrt(m2);
@@ -128,11 +149,11 @@ double VerletList::max_displacement(std::span<const Vec3> x) const {
 
 bool VerletList::needs_rebuild(std::span<const Vec3> x) const {
   // Compared squared so the threshold is exact: rebuild iff some |dx_i|^2 > (skin/2)^2.
-  if (!built_ || x.size() != x_build_.size()) return true;
+  if (!built_ || (x.size() != x_build_.size() && x.size() != owned_)) return true;
   const double half = 0.5 * skin_;
   const double limit2 = half * half;
   bool exceeded = false;
-  const std::size_t n = x.size();
+  const std::size_t n = owned_;
 #pragma omp parallel for schedule(static) reduction(|| : exceeded) if (n >= kNeighborParallelMin)
   for (std::size_t i = 0; i < n; ++i) exceeded = exceeded || norm2(x[i] - x_build_[i]) > limit2;
   return exceeded;

@@ -27,9 +27,18 @@ class VerletList {
   // x [N] m centres, radius [N] m, skin >= 0 m, extra_range >= 0 m.
   // Throws std::invalid_argument for mismatched sizes, a negative/non-finite skin, extra range
   // or radius, a non-finite position, or more than 2^32 - 1 particles.
-  void build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range = 0.0);
+  void build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range = 0.0) {
+    build(x, radius, skin, extra_range, x.size(), {});
+  }
+  // With ghosts (state/particles.hpp): particles [owned, N) are ghosts, listed only as second
+  // members of owned ones, and pair (i, g) only when id[i] < id[g] (a ghost carries its source's
+  // id): of the two images of a pair across a periodic boundary, (i, ghost of j) and (j, ghost
+  // of i), exactly one is listed. id [N].
+  void build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range,
+             std::size_t owned, std::span<const std::int64_t> id);
 
-  std::size_t size() const { return x_build_.size(); }  // N at the last build
+  std::size_t size() const { return x_build_.size(); }  // N at the last build, ghosts included
+  std::size_t owned() const { return owned_; }          // particles that are not ghosts
   std::size_t num_pairs() const { return index_.size(); }
   // Neighbours j > i of particle i, ascending.
   std::span<const std::uint32_t> neighbors(std::size_t i) const {
@@ -38,14 +47,15 @@ class VerletList {
   const std::vector<std::size_t>& offsets() const { return offset_; }   // [N+1]
   const std::vector<std::uint32_t>& indices() const { return index_; }  // [num_pairs]
 
-  // Largest |x_i - x_i(build)| (m); +infinity if the particle count changed since the build.
+  // Largest |x_i - x_i(build)| (m) over the owned particles (ghosts follow them); x holds the
+  // owned particles, with or without the ghosts. +infinity if the count changed since the build.
   double max_displacement(std::span<const Vec3> x) const;
   // True when some particle has moved strictly more than skin/2 since the build (or the count
   // changed, or the list was never built).
   bool needs_rebuild(std::span<const Vec3> x) const;
 
   double skin() const { return skin_; }                                  // m
-  const std::vector<Vec3>& build_positions() const { return x_build_; }  // [N] m, at the last build
+  const std::vector<Vec3>& build_positions() const { return x_build_; }  // [N] m, at the last build (owned first)
   double extra_range() const { return extra_; }                          // m
   double max_radius() const { return max_radius_; }                      // m, at build
   // The cell grid of the last build. It and the build's scratch are freed when the build ends
@@ -63,6 +73,7 @@ class VerletList {
   double extra_ = 0.0;       // m
   double max_radius_ = 0.0;  // m
   bool built_ = false;
+  std::size_t owned_ = 0;
   GridStats grid_stats_;
   std::vector<Vec3> x_build_;           // [N] m, centres at build time
   std::vector<std::size_t> offset_{0};  // [N+1] CSR offsets

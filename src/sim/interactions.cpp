@@ -55,8 +55,8 @@ double default_skin(const Model& model, const Particles& p) {
 Interactions::Interactions(const Model& model, const Particles& p, const Barriers& b, const StepPolicy& policy)
     : model_(model), policy_(policy), table_(table_for(model)),
       // The list reaches beyond contact by the near-field cutoff (0 when the near field is off).
-      search_(
-          std::make_unique<NeighborSearch>(default_skin(model, p), near_field_extra_range(model.params.near_field, p))),
+      search_(std::make_unique<NeighborSearch>(
+          default_skin(model, p), near_field_extra_range(model.params.near_field, p), model.params.domain)),
       pp_(std::make_unique<ParticleContacts>(table_, policy.step_start)),
       pb_(std::make_unique<BarrierContacts>(table_, b)) {
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
@@ -78,6 +78,10 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
                                  "within the step); reduce time.dt (see `mpdem check` for a recommended step)",
                                  p.id[i], b.time));
   ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
+  p.drop_ghosts();
+  // Between steps the particles are wrapped into a periodic domain (never within a step: the
+  // integrators hold their step-start positions).
+  if (reorder) search_->wrap(p);
   std::vector<std::uint32_t> old_index;  // old index of each particle after the rebuild
   if (reorder && p.size() > 1) {
     old_index = search_->spatial_order(p);
@@ -127,8 +131,7 @@ void Interactions::record_next_drift(const DriftCheck& c, const Particles& p, st
 }
 
 bool Interactions::stale(const Particles& p, const Barriers& b) const {
-  return p.size() == 0 || search_->pairs().size() != p.size() ||
-         search_->barrier_candidates().num_elements() != b.size();
+  return p.size() == 0 || search_->stale(p) || search_->barrier_candidates().num_elements() != b.size();
 }
 
 double Interactions::barrier_reach(const Barriers& b, double dt) const {
@@ -175,6 +178,7 @@ void Interactions::force_rebuild(Particles& p, const Barriers& b, bool reorder) 
 void Interactions::remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep) {
   next_drift_.valid = false;
   ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
+  p.drop_ghosts();
   std::vector<std::uint32_t> old_index;  // old index of each particle kept
   for (std::size_t i = 0; i < keep.size(); ++i)
     if (keep[i]) old_index.push_back(static_cast<std::uint32_t>(i));
@@ -208,6 +212,7 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
       rebuild(p, b, false);
       ++mid_step_rebuilds_;
     }
+    search_->refresh_ghosts(p);  // periodic images take their sources' state
   }
   {
     ScopedTimer timer(times_.fields);
@@ -231,6 +236,7 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     const HeatFlows h = heat_->evaluate(p, b, *search_);
     if (req.commit) commit_heat(h, req);
   }
+  search_->fold_ghosts(p);  // what the periodic images received goes to their sources
 
   stats_.contacts_pp = pp.contacts;
   stats_.contacts_pb = pb.contacts;
@@ -318,7 +324,7 @@ void Interactions::save(CheckpointWriter& w, const Particles& p) const {
   w.section("barrier_contacts", [&](BinaryWriter& o) { pb_->save(o); });
 }
 
-void Interactions::restore(CheckpointReader& r, const Particles& p, const Barriers& b) {
+void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b) {
   next_drift_.valid = false;
   read_section(r, "interactions", [&](BinaryReader& in) {
     for_each_stat(stats_, [&](auto& v) { v = in.value<std::decay_t<decltype(v)>>(); });

@@ -110,7 +110,7 @@ class Interactions {
   // Checkpoints: statistics, neighbour lists and contact history.
   // Checkpoint sections "interactions", "neighbor", "particle_contacts", "barrier_contacts".
   void save(CheckpointWriter& w, const Particles& p) const;
-  void restore(CheckpointReader& r, const Particles& p, const Barriers& b);
+  void restore(CheckpointReader& r, Particles& p, const Barriers& b);
   double skin() const;
   const NeighborSearch& search() const { return *search_; }
   const ParticleContacts& particle_contacts() const { return *pp_; }

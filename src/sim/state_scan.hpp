@@ -13,11 +13,13 @@
 
 namespace mpdem {
 
-// True when x lies in the closed box of a bounded domain (always true when unbounded).
+// True when x lies in the closed box of a bounded domain (always true when unbounded); a
+// periodic axis never leaves (positions are wrapped at the next list rebuild).
 // & and | rather than && and ||: no branch, so the scan's loop vectorises.
 inline bool inside_domain(const DomainParams& d, const Vec3& x) {
-  return (!d.bounded) | ((x.x >= d.min.x) & (x.x <= d.max.x) & (x.y >= d.min.y) & (x.y <= d.max.y) & (x.z >= d.min.z) &
-                         (x.z <= d.max.z));
+  return (!d.bounded) | ((d.periodic[0] | ((x.x >= d.min.x) & (x.x <= d.max.x))) &
+                         (d.periodic[1] | ((x.y >= d.min.y) & (x.y <= d.max.y))) &
+                         (d.periodic[2] | ((x.z >= d.min.z) & (x.z <= d.max.z))));
 }
 
 // True when a particle's position, velocity, spin and temperature are all finite.

@@ -1,10 +1,25 @@
 #include "state/particles.hpp"
 
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace mpdem {
 
+namespace {
+void refuse_ghosts(const Particles& p, const char* what) {
+  if (p.n_ghost > 0) throw std::logic_error(std::string("particles: ") + what + " with ghost particles present");
+}
+}  // namespace
+
+void Particles::drop_ghosts() {
+  const std::size_t n = size();
+  for_each_array([n](const char*, auto& a) { a.resize(n); });
+  n_ghost = 0;
+}
+
 void Particles::resize(std::size_t n) {
+  refuse_ghosts(*this, "resize");
   for_each_array([n](const char*, auto& a) { a.resize(n); });
 }
 
@@ -19,6 +34,7 @@ void Particles::update_mass(std::size_t i, double rho) {
 }
 
 void Particles::add(std::int64_t pid, int mat, double r, double rho, const Vec3& pos, const Vec3& vel) {
+  refuse_ghosts(*this, "add");
   const std::size_t i = size();
   resize(i + 1);
   id[i] = pid;
@@ -31,6 +47,7 @@ void Particles::add(std::int64_t pid, int mat, double r, double rho, const Vec3&
 }
 
 void Particles::permute(const std::vector<std::uint32_t>& order) {
+  refuse_ghosts(*this, "permute");
   for_each_array([&order](const char*, auto& a) {
     auto old = a;
     for (std::size_t k = 0; k < order.size(); ++k) a[k] = old[order[k]];
@@ -38,6 +55,7 @@ void Particles::permute(const std::vector<std::uint32_t>& order) {
 }
 
 void Particles::compact(const std::vector<char>& keep) {
+  refuse_ghosts(*this, "compact");
   for_each_array([&keep](const char*, auto& a) {
     std::size_t k = 0;
     for (std::size_t i = 0; i < a.size(); ++i)

@@ -5,6 +5,12 @@
 // Material constants (density, E, nu, heat capacity, conductivity, emissivity) are not here: they
 // are looked up through `material` in Model::materials. Ids are stable user ids; the array index
 // may change when particles are reordered or removed.
+//
+// Ghost particles (periodic images now, MPI halo copies later) are appended after the owned
+// particles in every array: indices [size(), size_with_ghosts()). Only the neighbour search
+// creates them (neighbor/periodic_images.hpp) and only the interactions read them; everything
+// else - integration, checks, output, checkpoints - loops over the owned particles [0, size()).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <numbers>
@@ -34,12 +40,21 @@ struct Particles {
   std::vector<Vec3> w;    // rad/s, angular velocity
   std::vector<Quat> q;    // orientation (unit quaternion, body -> world)
   std::vector<double> T;  // K, temperature
+  // -, periodic image counter per axis: the unwrapped centre is x + image * period (section 11)
+  std::vector<std::array<std::int32_t, 3>> image;
   // --- accumulators, overwritten by every interaction evaluation [N] ---
   std::vector<Vec3> force;   // N, total force
   std::vector<Vec3> torque;  // N m, total torque about the centre
   std::vector<double> heat;  // W, total heat flow into the particle
 
-  std::size_t size() const { return id.size(); }
+  // Ghosts appended after the owned particles (see above); 0 outside the interactions' rebuilds.
+  std::size_t n_ghost = 0;
+
+  std::size_t size() const { return id.size() - n_ghost; }  // owned particles
+  std::size_t size_with_ghosts() const { return id.size(); }
+  // Removes the ghosts (before particles are added, removed, reordered or written).
+  void drop_ghosts();
+  // resize, add, permute and compact act on the owned particles and refuse while ghosts exist.
   void resize(std::size_t n);
   void reserve(std::size_t n);  // capacity for n particles, so add() does not over-allocate
   // Appends one particle; mass and inertia are computed from its radius and the density rho.
@@ -67,6 +82,7 @@ struct Particles {
     f("w", w);
     f("q", q);
     f("T", T);
+    f("image", image);
     f("force", force);
     f("torque", torque);
     f("heat", heat);

@@ -91,6 +91,11 @@ HeatFlows HeatTransfer::evaluate(Particles& p, const Barriers& b, const Neighbor
     }
     p.heat[i] += q;
   });
+  // Ghosts are second members only: their conduction comes in through incoming slots (and is
+  // folded onto their sources afterwards).
+  if (conduction)
+    for (std::size_t i = n; i < list.size(); ++i)
+      for (std::uint32_t k : search.incoming(i)) p.heat[i] -= pair_heat_[k];
 
   if (sums[3] > 0.0) {
     if (clamped_ == 0)

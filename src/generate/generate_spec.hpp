@@ -34,6 +34,7 @@ struct GenerateSpec {
   std::string material;               // written to the CSV `material` column ("" = column left out)
   std::optional<Vec3> velocity;       // m/s, the same initial velocity for all
   double speed = 0.0;                 // m/s, > 0: random directions with this magnitude instead
+  bool fixed = false;                 // the particles keep their initial velocity (Particles::fixed)
   std::size_t max_attempts = 100000;  // random positions tried per particle before giving up
   std::string origin = "generate";    // file (or "generate") named by error messages
   std::size_t line = 0;               // line in `origin`, 0 = none

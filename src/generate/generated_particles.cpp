@@ -61,6 +61,7 @@ void add_generated_particles(const GenerateSpec& spec, const Model& model, int d
     out.force[i] = Vec3{};
     out.torque[i] = Vec3{};
     out.heat[i] = 0.0;
+    out.fixed[i] = spec.fixed ? 1 : 0;
   }
 }
 

@@ -38,8 +38,10 @@ void TrapezoidalIntegrator::save_start(const Particles& p) {
     force0_[i] = p.force[i];
     torque0_[i] = p.torque[i];
     heat0_[i] = p.heat[i];
-    a0_[i] = p.force[i] / p.mass[i];
-    b0_[i] = p.torque[i] / p.inertia[i];
+    // A fixed particle's rates are zero: nothing accelerates it.
+    const bool held = any_fixed_ && p.fixed[i];
+    a0_[i] = held ? Vec3{} : p.force[i] / p.mass[i];
+    b0_[i] = held ? Vec3{} : p.torque[i] / p.inertia[i];
     h0_[i] = thermal ? heating_rate(p, i) : 0.0;
   }
 }
@@ -78,6 +80,11 @@ void TrapezoidalIntegrator::accept_midpoint(Particles& p) {
 StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& f, double t, double dt, int max_iter) {
   EvalRequest req{t + dt, dt, policy(params_).phi, false};
   StepReport rep;
+  // Checked once per step: without fixed particles the update never reads their flags.
+  any_fixed_ = p.any_fixed();
+  free_ = p.size();
+  if (any_fixed_)
+    for (std::size_t i = 0; i < p.size(); ++i) free_ -= p.fixed[i] ? 1 : 0;
   predict(p, dt);
   if (req.phi > 0.0) {  // phi = 0 is explicit: the predictor is the end state
     rep.converged = false;
@@ -108,29 +115,37 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
     s[4 * field + 3] += value;
   };
   // End state from the end-of-step rates (134)-(138), taken from the accumulators, or from the
-  // start rates for the predictor. The state it replaces becomes the previous iterate.
+  // start rates for the predictor. The state it replaces becomes the previous iterate. A fixed
+  // particle keeps v and w and moves by exactly dt v (not dt ((1 - phi) v + phi v), which may
+  // round differently); it is left out of the mechanical fields' norms, which measure what the
+  // iteration changes (test_convergence divides by the free particles' count).
   return deterministic_sums<4 * kFieldCount>(p.size(), [&](std::size_t i, Sums& s) {
+    const bool held = any_fixed_ && p.fixed[i];
     const Vec3 a1 = predictor ? a0_[i] : p.force[i] / p.mass[i];
-    const Vec3 v = v0_[i] + dt * ((1.0 - phi) * a0_[i] + phi * a1);
-    const Vec3 x = x0_[i] + dt * ((1.0 - phi) * v0_[i] + phi * v);
-    add(s, kPosition, norm2(x - p.x[i]), norm2(x - x0_[i]), norm2(x - xp_[i]), norm2(x));
-    add(s, kVelocity, norm2(v - p.v[i]), norm2(v - v0_[i]), norm2(v - vp_[i]), norm2(v));
+    const Vec3 v = held ? v0_[i] : v0_[i] + dt * ((1.0 - phi) * a0_[i] + phi * a1);
+    const Vec3 x = held ? x0_[i] + dt * v0_[i] : x0_[i] + dt * ((1.0 - phi) * v0_[i] + phi * v);
+    if (!held) {
+      add(s, kPosition, norm2(x - p.x[i]), norm2(x - x0_[i]), norm2(x - xp_[i]), norm2(x));
+      add(s, kVelocity, norm2(v - p.v[i]), norm2(v - v0_[i]), norm2(v - vp_[i]), norm2(v));
+    }
     xp_[i] = p.x[i];
     vp_[i] = p.v[i];
     p.x[i] = x;
     p.v[i] = v;
     if (rotation) {
       const Vec3 b1 = predictor ? b0_[i] : p.torque[i] / p.inertia[i];
-      const Vec3 w = w0_[i] + dt * ((1.0 - phi) * b0_[i] + phi * b1);
-      const Vec3 alpha = dt * ((1.0 - phi) * w0_[i] + phi * w);
+      const Vec3 w = held ? w0_[i] : w0_[i] + dt * ((1.0 - phi) * b0_[i] + phi * b1);
+      const Vec3 alpha = held ? dt * w0_[i] : dt * ((1.0 - phi) * w0_[i] + phi * w);
       // The two-cycle test's magnitudes of the rotational fields count the translational ones in
       // the same units (displacement / R, velocity / R): a contact that starts at the step's end
       // alternates on and off (the damped normal force jumps from 0 to d_n |rate| at any
       // positive overlap), and a sphere without spin then alternates between 0 and a small w.
       const double inv_r2 = 1.0 / (p.radius[i] * p.radius[i]);  // 1/m^2
-      add(s, kRotation, norm2(alpha - alpha_[i]), norm2(alpha), norm2(alpha - alphap_[i]),
-          norm2(alpha) + norm2(x - x0_[i]) * inv_r2);
-      add(s, kAngularVelocity, norm2(w - p.w[i]), norm2(w - w0_[i]), norm2(w - wp_[i]), norm2(w) + norm2(v) * inv_r2);
+      if (!held) {
+        add(s, kRotation, norm2(alpha - alpha_[i]), norm2(alpha), norm2(alpha - alphap_[i]),
+            norm2(alpha) + norm2(x - x0_[i]) * inv_r2);
+        add(s, kAngularVelocity, norm2(w - p.w[i]), norm2(w - w0_[i]), norm2(w - wp_[i]), norm2(w) + norm2(v) * inv_r2);
+      }
       wp_[i] = p.w[i];
       alphap_[i] = alpha_[i];
       p.w[i] = w;
@@ -179,12 +194,15 @@ void TrapezoidalIntegrator::test_convergence(Particles& p, const Sums& s, int k,
   const std::array<double, kFieldCount> floors{tol.position_floor, tol.velocity_floor, tol.rotation_floor,
                                                tol.angular_velocity_floor, tol.temperature_floor};
   const std::array<bool, kFieldCount> active{true, true, rotation, rotation, params_.analysis.thermal};
-  const double inv_n = p.size() > 0 ? 1.0 / static_cast<double>(p.size()) : 0.0;
+  // The mechanical fields' sums hold the free particles only; every temperature is iterated.
+  const double inv_free = free_ > 0 ? 1.0 / static_cast<double>(free_) : 0.0;
+  const double inv_all = p.size() > 0 ? 1.0 / static_cast<double>(p.size()) : 0.0;
   rep.iterations = k;
   bool all = true, cycle = k >= 3;
   double worst = -1.0;
   for (int fld = 0; fld < kFieldCount; ++fld) {
     if (!active[fld]) continue;
+    const double inv_n = fld == kTemperature ? inv_all : inv_free;
     // eps = rms|y_K - y_K-1| / (rms|y_K - y(t)| + floor / TOL): converged when eps <= TOL.
     const double diff = std::sqrt(s[4 * fld] * inv_n);
     const double scale = std::sqrt(s[4 * fld + 1] * inv_n) + floors[fld] / tols[fld];

@@ -5,6 +5,7 @@
 //   x(t+dt) = x(t) + dt [(1-phi) v(t) + phi v(t+dt)],   alpha_D = dt [(1-phi) w(t) + phi w(t+dt)]
 // phi = 0 is explicit (one evaluation per step); phi > 0 iterates on the end-of-step rates.
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "integrate/step_policy.hpp"
@@ -52,6 +53,10 @@ class TrapezoidalIntegrator {
   }
   const Model& model_;
   const Params& params_;
+  // This step's: whether any particle is fixed (update() reads the flags only then), and how many
+  // are free (the mechanical fields' norms are over those).
+  bool any_fixed_ = false;
+  std::size_t free_ = 0;
   // Start-of-step state and rates [N]
   std::vector<Vec3> x0_, v0_, w0_, a0_, b0_;  // m, m/s, rad/s, m/s^2, rad/s^2
   std::vector<Quat> q0_;

@@ -1,6 +1,7 @@
 #include "integrate/verlet.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 #include "core/deterministic_sum.hpp"
 #include "core/parallel.hpp"
@@ -12,20 +13,23 @@ namespace {
 
 // First half kick and drift, and the orientation update, over particles [lo, hi), written so
 // that it vectorises: restrict pointers as arguments (an OpenMP region's captured pointers lose
-// it), no call, no branch. Returns how many particles have an increment too large for the series
-// (rotation.hpp); the caller rotates those exactly, which gives rotate_by_increment's result for
-// every particle.
-template <bool kRotation>
+// it), no call, no branch. With kFixed, a fixed particle's kick is zero (its v and w stay as
+// given, x advances by dt v); without, `fixed` is not read. Returns how many particles have an
+// increment too large for the series (rotation.hpp); the caller rotates those exactly, which
+// gives rotate_by_increment's result for every particle.
+template <bool kRotation, bool kFixed>
 std::size_t kick_drift_range(Vec3* __restrict x, Vec3* __restrict v, Vec3* __restrict w, Quat* __restrict q,
                              const Vec3* __restrict f, const Vec3* __restrict t, const double* __restrict m,
-                             const double* __restrict I, std::size_t lo, std::size_t hi, double dt) {
+                             const double* __restrict I, const std::uint8_t* __restrict fixed, std::size_t lo,
+                             std::size_t hi, double dt) {
   const double half = 0.5 * dt;
   std::size_t fast = 0;
   for (std::size_t i = lo; i < hi; ++i) {
-    v[i] += (half / m[i]) * f[i];
+    const double kick = kFixed && fixed[i] ? 0.0 : half;  // s
+    v[i] += (kick / m[i]) * f[i];
     x[i] += dt * v[i];
     if constexpr (kRotation) {
-      w[i] += (half / I[i]) * t[i];
+      w[i] += (kick / I[i]) * t[i];
       const Vec3 th = dt * w[i];
       const bool small = norm2(th) < kSeriesAngle2;
       const Quat r = rotate_by_small_increment(q[i], th);
@@ -37,24 +41,26 @@ std::size_t kick_drift_range(Vec3* __restrict x, Vec3* __restrict v, Vec3* __res
   return fast;
 }
 
-// The second half kick over [lo, hi), vectorised like kick_drift_range.
+// The second half kick over [lo, hi), vectorised like kick_drift_range (kFixed likewise).
+template <bool kFixed>
 void kick_range(Vec3* __restrict v, Vec3* __restrict w, const Vec3* __restrict f, const Vec3* __restrict t,
-                const double* __restrict m, const double* __restrict I, std::size_t lo, std::size_t hi, double half,
-                bool rotation) {
-  for (std::size_t i = lo; i < hi; ++i) v[i] += (half / m[i]) * f[i];
+                const double* __restrict m, const double* __restrict I, const std::uint8_t* __restrict fixed,
+                std::size_t lo, std::size_t hi, double half, bool rotation) {
+  for (std::size_t i = lo; i < hi; ++i) v[i] += ((kFixed && fixed[i] ? 0.0 : half) / m[i]) * f[i];
   if (rotation)
-    for (std::size_t i = lo; i < hi; ++i) w[i] += (half / I[i]) * t[i];
+    for (std::size_t i = lo; i < hi; ++i) w[i] += ((kFixed && fixed[i] ? 0.0 : half) / I[i]) * t[i];
 }
 
-template <bool kRotation>
+template <bool kRotation, bool kFixed>
 void kick_drift(Particles& p, double dt) {
   constexpr std::size_t kChunk = 1024;  // particles per call
   const std::size_t n = p.size(), chunks = (n + kChunk - 1) / kChunk;
   std::size_t fast = 0;
 #pragma omp parallel for schedule(static) reduction(+ : fast) if (n > kParallelThreshold)
   for (std::size_t c = 0; c < chunks; ++c)
-    fast += kick_drift_range<kRotation>(p.x.data(), p.v.data(), p.w.data(), p.q.data(), p.force.data(), p.torque.data(),
-                                        p.mass.data(), p.inertia.data(), c * kChunk, std::min(n, (c + 1) * kChunk), dt);
+    fast += kick_drift_range<kRotation, kFixed>(p.x.data(), p.v.data(), p.w.data(), p.q.data(), p.force.data(),
+                                                p.torque.data(), p.mass.data(), p.inertia.data(), p.fixed.data(),
+                                                c * kChunk, std::min(n, (c + 1) * kChunk), dt);
   if (fast == 0) return;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
@@ -70,8 +76,10 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
   const bool thermal = params_.analysis.thermal;
   const std::size_t n = p.size();
   const double half = 0.5 * dt;
-  if (rotation) kick_drift<true>(p, dt);
-  else kick_drift<false>(p, dt);
+  // Checked once per step: scenes without fixed particles keep the plain loops.
+  const bool any_fixed = p.any_fixed();
+  if (rotation) any_fixed ? kick_drift<true, true>(p, dt) : kick_drift<true, false>(p, dt);
+  else any_fixed ? kick_drift<false, true>(p, dt) : kick_drift<false, false>(p, dt);
   if (thermal) {
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
     for (std::size_t i = 0; i < n; ++i)
@@ -86,11 +94,16 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
   const auto sums = deterministic_block_sums<kScanSums + 1>(
       n, [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums + 1>& acc) {
         // A block at a time: the kick vectorises, and the scan then reads what is still in cache.
-        kick_range(p.v.data(), p.w.data(), p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(), lo, hi,
-                   half, rotation);
+        const std::uint8_t* fixed = any_fixed ? p.fixed.data() : nullptr;
+        if (any_fixed)
+          kick_range<true>(p.v.data(), p.w.data(), p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(),
+                           fixed, lo, hi, half, rotation);
+        else
+          kick_range<false>(p.v.data(), p.w.data(), p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(),
+                            fixed, lo, hi, half, rotation);
         if (next.x_build)
-          acc[kScanSums] += static_cast<double>(
-              drift_beyond(p.x.data(), next.x_build, p.v.data(), p.force.data(), p.mass.data(), lo, hi, dt, next.lim2));
+          acc[kScanSums] += static_cast<double>(drift_beyond(p.x.data(), next.x_build, p.v.data(), p.force.data(),
+                                                             p.mass.data(), fixed, lo, hi, dt, next.lim2));
         std::array<double, kScanSums> s{};
         scan_range(p, lo, hi, fields, domain, s);
         for (int k = 0; k < kScanSums; ++k) acc[k] += s[k];

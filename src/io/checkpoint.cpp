@@ -23,7 +23,9 @@
 #include "io/input_error.hpp"
 #include "io/output_manager.hpp"
 #include "io/scene_fingerprint.hpp"
+#include "sim/inlets.hpp"
 #include "sim/simulation.hpp"
+#include "sim/sinks.hpp"
 
 namespace mpdem {
 
@@ -62,6 +64,7 @@ void check_restored(const Particles& p, std::size_t materials) {
     if (!(std::isfinite(p.mass[i]) && p.mass[i] > 0.0)) fail(i, "mass", "is not finite and > 0");
     if (!(std::isfinite(p.inertia[i]) && p.inertia[i] > 0.0)) fail(i, "inertia", "is not finite and > 0");
     if (!std::isfinite(p.charge[i])) fail(i, "charge", "is not finite");
+    if (p.fixed[i] > 1) fail(i, "fixed", "is not 0 or 1");
     if (!isfinite(p.x[i])) fail(i, "x", "is not finite");
     if (!isfinite(p.v[i])) fail(i, "v", "is not finite");
     if (!isfinite(p.w[i])) fail(i, "w", "is not finite");
@@ -94,6 +97,9 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
     });
   });
   interactions_->save(w, scene_.particles);
+  // What decides the next insertions and the sinks' totals ([[inlet]], [[sink]]).
+  if (inlets_) w.section("inlets", [&](BinaryWriter& o) { inlets_->save(o); });
+  if (sinks_) w.section("sinks", [&](BinaryWriter& o) { sinks_->save(o); });
   if (output_) w.section("output", [&](BinaryWriter& o) { output_->save(o); });
   write_file_atomically(
       file, [&](std::ostream& os) { os.write(w.bytes().data(), static_cast<std::streamsize>(w.bytes().size())); });
@@ -153,6 +159,8 @@ void Simulation::resume_from(const std::filesystem::path& file) {
           fmt::format("the run section's time {} s or step {} s is not finite and >= 0", time_, dt_));
     scene_.barriers.move_to(time_);
     interactions_->restore(r, p, scene_.barriers);
+    if (inlets_) read("inlets", [&](BinaryReader& s) { inlets_->restore(s); });
+    if (sinks_) read("sinks", [&](BinaryReader& s) { sinks_->restore(s); });
     // The output series are restored once run() has opened the outputs.
     if (r.has("output")) {
       read("output", [&](BinaryReader& s) { resume_output_state_ = s.rest(); });

@@ -19,7 +19,7 @@
 
 namespace mpdem {
 
-inline constexpr std::uint32_t kCheckpointFormat = 8;
+inline constexpr std::uint32_t kCheckpointFormat = 9;
 
 class CheckpointWriter {
  public:

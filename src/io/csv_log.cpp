@@ -104,7 +104,7 @@ void CsvLog::flush() {
 void write_particles_csv(const std::filesystem::path& file, const Particles& p, double time, const Vec3& period) {
   const bool periodic = period.x > 0.0 || period.y > 0.0 || period.z > 0.0;
   write_file_atomically(file, [&](std::ostream& os) {
-    std::string line = "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz";
+    std::string line = "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed";
     line += periodic ? ",ix,iy,iz,xu,yu,zu\n" : "\n";
     auto num = [&line](double v) {
       append_csv_number(line, v);
@@ -130,6 +130,8 @@ void write_particles_csv(const std::filesystem::path& file, const Particles& p, 
       num(p.T[i]);
       num(p.charge[i]);
       vec(p.force[i]);
+      line += p.fixed[i] ? '1' : '0';  // 1: prescribed motion (a rough base, a driven plate)
+      line += ',';
       if (periodic) {
         const auto& im = p.image[i];
         for (int c = 0; c < 3; ++c) {

@@ -32,6 +32,8 @@ std::vector<double> numbers(const TomlSection& s, const toml::table& t, std::str
   return out;
 }
 
+}  // namespace
+
 RadiusDistribution read_radius(const TomlSection& g, const toml::table& t) {
   RadiusDistribution d;
   const toml::node* n = t.get("radius");
@@ -91,33 +93,43 @@ RadiusDistribution read_radius(const TomlSection& g, const toml::table& t) {
   return d;
 }
 
-}  // namespace
+RegionSpec read_box_region(const TomlSection& g) {
+  RegionSpec r{.shape = RegionShape::Box,
+               .min = g.require(g.vec3("min"), "min"),
+               .max = g.require(g.vec3("max"), "max"),
+               .mesh = {}};
+  for (int c = 0; c < 3; ++c)
+    if (!(r.min[c] < r.max[c]))
+      g.fail("max", std::string("expected max > min in every component, got ") + "xyz"[c] + ": min " +
+                        number_text(r.min[c]) + " >= max " + number_text(r.max[c]));
+  return r;
+}
+
+RegionSpec read_cylinder_region(const TomlSection& g) {
+  const Vec3 axis = g.require(g.vec3("axis"), "axis");
+  if (!(norm(axis) > 0.0)) g.fail("axis", "expected a non-zero vector (base centre -> top centre)");
+  return {.shape = RegionShape::Cylinder,
+          .base = g.require(g.vec3("base"), "base"),
+          .axis = axis,
+          .radius = g.require(g.number("cylinder_radius", kPositive), "cylinder_radius"),
+          .mesh = {}};
+}
 
 GenerateSpec read_generate_spec(const std::string& file, const toml::table& table, const std::string& path,
                                 const std::filesystem::path& dir) {
   const TomlSection g(file, table, path,
                       {"region", "min", "max", "base", "axis", "cylinder_radius", "mesh", "count", "solid_fraction",
-                       "radius", "seed", "gap", "material", "velocity", "speed", "max_attempts"});
+                       "radius", "seed", "gap", "material", "velocity", "speed", "max_attempts", "fixed"});
   GenerateSpec spec;
   spec.origin = file;
   spec.line = g.line();
   const std::string region = g.require(g.string("region"), "region");
   std::vector<std::string_view> region_keys;
   if (region == "box") {
-    spec.region.shape = RegionShape::Box;
-    spec.region.min = g.require(g.vec3("min"), "min");
-    spec.region.max = g.require(g.vec3("max"), "max");
-    for (int c = 0; c < 3; ++c)
-      if (!(spec.region.min[c] < spec.region.max[c]))
-        g.fail("max", std::string("expected max > min in every component, got ") + "xyz"[c] + ": min " +
-                          number_text(spec.region.min[c]) + " >= max " + number_text(spec.region.max[c]));
+    spec.region = read_box_region(g);
     region_keys = {"min", "max"};
   } else if (region == "cylinder") {
-    spec.region.shape = RegionShape::Cylinder;
-    spec.region.base = g.require(g.vec3("base"), "base");
-    spec.region.axis = g.require(g.vec3("axis"), "axis");
-    if (!(norm(spec.region.axis) > 0.0)) g.fail("axis", "expected a non-zero vector (base centre -> top centre)");
-    spec.region.radius = g.require(g.number("cylinder_radius", kPositive), "cylinder_radius");
+    spec.region = read_cylinder_region(g);
     region_keys = {"base", "axis", "cylinder_radius"};
   } else if (region == "mesh") {
     spec.region.shape = RegionShape::Mesh;
@@ -149,6 +161,7 @@ GenerateSpec read_generate_spec(const std::string& file, const toml::table& tabl
   if (g.has("velocity") && g.has("speed")) g.fail("speed", "give either velocity or speed, not both");
   spec.velocity = g.vec3("velocity");
   g.get("speed", spec.speed, kNonNegative);
+  g.get("fixed", spec.fixed);
   if (const auto m = g.integer("max_attempts", 1, std::numeric_limits<std::int64_t>::max()))
     spec.max_attempts = static_cast<std::size_t>(*m);
   return spec;

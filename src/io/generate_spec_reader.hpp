@@ -8,8 +8,18 @@
 #include <toml++/toml.h>
 
 #include "generate/generate_spec.hpp"
+#include "io/toml_section.hpp"
 
 namespace mpdem {
+
+// The pieces of a generator table that other tables share ([[inlet]], [[sink]]: io/inlet_reader.hpp),
+// g being the table (its known keys already checked) and t its raw TOML:
+//   `radius`: a number (constant radius, m) or a distribution table;
+RadiusDistribution read_radius(const TomlSection& g, const toml::table& t);
+//   `min`, `max` of a box (max > min in every component);
+RegionSpec read_box_region(const TomlSection& g);
+//   `base`, `axis` (base centre -> top centre), `cylinder_radius` of a cylinder.
+RegionSpec read_cylinder_region(const TomlSection& g);
 
 // `path` is the table's dotted key ("particles.generate"); a relative `mesh` file is resolved
 // against `dir` (the scene file's folder) and must exist.

@@ -15,6 +15,8 @@
 #include "io/pvd_index.hpp"
 #include "io/vtu_writer.hpp"
 #include "sim/energy.hpp"
+#include "sim/inlets.hpp"
+#include "sim/sinks.hpp"
 #include "sim/state_scan.hpp"
 #include "thermal/heat_transfer.hpp"
 #include "field/near_field_forces.hpp"
@@ -90,6 +92,8 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
   if (thermal_)
     for (const char* c : {"heat_to_barriers", "heat_convected", "heat_radiated", "thermal_energy"})
       log_cols.push_back(c);
+  for (auto* columns : {&Inlets::log_columns, &Sinks::log_columns})
+    for (std::string& c : columns(model.params)) log_cols.push_back(std::move(c));
   log_ = log(dir_ / "log.csv", log_cols);
   group_count_ = barriers.group_names.size();
   if (barrier_log_.every > 0.0 && group_count_ > 0) {
@@ -186,7 +190,7 @@ void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const 
   const double potential = e.potential + scan.electric;  // J, gravitational + electric
   const double nf = near_field_ ? s.near_field_energy : 0.0;
   const double total = e.kinetic + e.rotational + potential + s.elastic_energy + s.damping_dissipated +
-                       s.friction_dissipated + nf - s.barrier_work;
+                       s.friction_dissipated + nf - s.barrier_work - s.fixed_work;
   std::vector<double> row{static_cast<double>(r.step),
                           r.time,
                           r.dt,
@@ -213,6 +217,7 @@ void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const 
     row.push_back(s.heat_radiated);
     row.push_back(thermal_energy(model_, p));
   }
+  row.insert(row.end(), r.open_system.begin(), r.open_system.end());
   log_->row(row);
 }
 

@@ -29,6 +29,8 @@ struct GlobalLogRow {
   std::uint64_t evaluations_total = 0;
   std::uint64_t redone_steps = 0;
   std::size_t removed_total = 0;
+  // The inlets' and sinks' columns (Inlets::log_columns, Sinks::log_columns), in that order.
+  std::vector<double> open_system;
 };
 
 class OutputManager {

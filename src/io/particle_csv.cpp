@@ -17,22 +17,22 @@ namespace mpdem {
 
 namespace {
 
-constexpr std::array<std::string_view, 20> kColumns = {
-    "id",           "x",         "y",        "z",       "vx",    "vy",      "vz",     "wx",          "wy",
-    "wz",           "radius",    "material", "density", "young", "poisson", "charge", "temperature", "heat_capacity",
-    "conductivity", "emissivity"};
+constexpr std::array<std::string_view, 21> kColumns = {
+    "id",           "x",          "y",        "z",       "vx",    "vy",      "vz",     "wx",          "wy",
+    "wz",           "radius",     "material", "density", "young", "poisson", "charge", "temperature", "heat_capacity",
+    "conductivity", "emissivity", "fixed"};
 
 // Column indices (-1 when absent), looked up once per file.
 struct Cols {
   int id, x, y, z, vx, vy, vz, wx, wy, wz, radius, material, density, young, poisson, charge, temperature,
-      heat_capacity, conductivity, emissivity;
+      heat_capacity, conductivity, emissivity, fixed;
   explicit Cols(const CsvTable& t)
       : id(t.column("id")), x(t.column("x")), y(t.column("y")), z(t.column("z")), vx(t.column("vx")),
         vy(t.column("vy")), vz(t.column("vz")), wx(t.column("wx")), wy(t.column("wy")), wz(t.column("wz")),
         radius(t.column("radius")), material(t.column("material")), density(t.column("density")),
         young(t.column("young")), poisson(t.column("poisson")), charge(t.column("charge")),
         temperature(t.column("temperature")), heat_capacity(t.column("heat_capacity")),
-        conductivity(t.column("conductivity")), emissivity(t.column("emissivity")) {}
+        conductivity(t.column("conductivity")), emissivity(t.column("emissivity")), fixed(t.column("fixed")) {}
 };
 
 // The row's material: a name, or an integer index into the scene's [[material]] list.
@@ -75,6 +75,15 @@ void check_derived(const CsvTable& t, const CsvRow& row, const Cols& c, std::int
   if (thermal)
     if (const std::string p = thermal_mass_problem(r, own.density, own.heat_capacity); !p.empty())
       fail(c.heat_capacity, "heat_capacity", p);
+}
+
+// The row's `fixed` flag: exactly 0 or 1 (an empty field or no column: 0). Anything else - 2,
+// "yes", "1.0" - is refused rather than read as true, so a misspelt flag cannot pin a particle.
+std::uint8_t row_fixed(const CsvTable& t, const CsvRow& row, int col) {
+  if (t.missing(row, col)) return 0;
+  const std::string& s = t.text(row, col);
+  if (s == "0" || s == "1") return s == "1" ? 1 : 0;
+  t.fail(row, col, "expected 0 (free) or 1 (fixed: moves with its given velocity), got '" + s + "'");
 }
 
 // Value of an optional numeric column, else `fallback` (velocities default to rest).
@@ -147,6 +156,7 @@ void read_particle_csv(const std::filesystem::path& file, Model& model, int defa
     out.force[i] = Vec3{};
     out.torque[i] = Vec3{};
     out.heat[i] = 0.0;
+    out.fixed[i] = row_fixed(t, row, c.fixed);
   }
 }
 

@@ -11,7 +11,7 @@ Progress::Progress(double duration, double plain_every_seconds, bool enabled, do
                    std::uint64_t start_steps)
     : duration_(duration), plain_every_(plain_every_seconds), enabled_(enabled), tty_(isatty(fileno(stderr)) != 0),
       start_time_(start_time), start_steps_(start_steps), start_(Clock::now()), last_(start_), last_steps_(start_steps),
-      removal_window_(start_) {}
+      removal_window_(start_), summary_at_(start_) {}
 
 void Progress::print_line(const std::string& line) {
   if (drawn_) fmt::print(stderr, "\r\x1b[K");
@@ -75,6 +75,17 @@ void Progress::flush_removed() {
                          held_ == 1 ? "" : "s", held_from_, held_to_, ids, removed_total_));
   held_ = 0;
   held_ids_.clear();
+}
+
+bool Progress::summary_due() const {
+  return enabled_ && std::chrono::duration<double>(Clock::now() - summary_at_).count() >= plain_every_;
+}
+
+void Progress::summary(const std::string& line) {
+  summary_at_ = Clock::now();
+  if (!enabled_ || line.empty() || line == last_summary_) return;
+  print_line(line);
+  last_summary_ = line;
 }
 
 void Progress::finish(double sim_time, std::uint64_t steps) {

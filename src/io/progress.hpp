@@ -21,6 +21,10 @@ class Progress {
   // A particle removed at the domain boundary at sim_time (s); removed_total counts the whole run.
   void removed(std::int64_t id, double sim_time, std::size_t removed_total);
   void finish(double sim_time, std::uint64_t steps);
+  // The inlets' and sinks' totals (Simulation): a line at most once per `plain_every` interval of
+  // wall time, and only when it says something new - a thousand removals a second get one line.
+  bool summary_due() const;
+  void summary(const std::string& line);  // prints it unless empty or the same as the last one
 
   static constexpr int kRemovalLines = 3;         // removals printed one by one per interval
   static constexpr std::size_t kRemovalIds = 10;  // ids listed in an interval's summary line
@@ -45,6 +49,8 @@ class Progress {
   std::vector<std::int64_t> held_ids_;      // ids of the first kRemovalIds of them
   double held_from_ = 0.0, held_to_ = 0.0;  // s, simulated time of the first and last of them
   std::size_t removed_total_ = 0;           // particles removed in the whole run so far
+  Clock::time_point summary_at_;            // when the last summary line was printed
+  std::string last_summary_;                // its text
 };
 
 }  // namespace mpdem

@@ -168,8 +168,8 @@ FingerprintPart particles_part(const Particles& q) {
   FingerprintPart p{"particle sources", {}, 0, 1, "particles", {}};
   p.items.reserve(q.size());
   for (std::size_t i = 0; i < q.size(); ++i)
-    p.items.push_back(
-        hash_of(q.id[i], q.material[i], q.radius[i], q.charge[i], q.x[i], q.v[i], q.w[i], q.q[i], q.T[i]));
+    p.items.push_back(hash_of(q.id[i], q.material[i], q.radius[i], q.charge[i], q.x[i], q.v[i], q.w[i], q.q[i], q.T[i],
+                              q.fixed[i] != 0));
   p.label = [ids = q.id](std::size_t k) { return "particle id " + std::to_string(ids[k]); };
   return p;
 }
@@ -243,6 +243,52 @@ FingerprintPart physics_part(const Params& prm) {
   return k.finish("[[near_field.pair]] entries", std::move(labels));
 }
 
+// Every inlet and sink, one item each over all its keys (the end defaults to time.duration, which
+// stays editable: an inlet without `end` follows a longer run).
+FingerprintPart open_boundaries_part(const Params& prm) {
+  FingerprintPart p{"inlets and sinks", {}, 0, 1, "[[inlet]] and [[sink]] entries", {}};
+  std::vector<std::string> labels;
+  const auto region_hash = [](Hash& h, const RegionSpec& r) {
+    h.add(r.shape);
+    h.add(r.min);
+    h.add(r.max);
+    h.add(r.base);
+    h.add(r.axis);
+    h.add(r.radius);
+  };
+  for (const InletSpec& s : prm.inlets) {
+    Hash h;
+    h.add(s.name);
+    h.add(s.volume.shape);
+    region_hash(h, s.volume.region);
+    for (const Vec3& v : {s.volume.origin, s.volume.u, s.volume.v, s.volume.w, s.velocity}) h.add(v);
+    for (const double v : {s.mass_rate, s.count_rate, s.start, s.interval, s.velocity_spread}) h.add(v);
+    h.add(s.end);
+    const RadiusDistribution& d = s.radius;
+    h.add(d.law);
+    for (const double v : {d.value, d.min, d.max, d.mean, d.std}) h.add(v);
+    h.add(std::uint64_t{d.radii.size()});
+    for (std::size_t k = 0; k < d.radii.size(); ++k) h.add(d.radii[k]);
+    h.add(std::uint64_t{d.fractions.size()});
+    for (std::size_t k = 0; k < d.fractions.size(); ++k) h.add(d.fractions[k]);
+    h.add(d.mass_fractions);
+    h.add(s.material);
+    h.add(s.seed);
+    h.add(std::uint64_t{s.max_attempts});
+    p.items.push_back(h.value());
+    labels.push_back("[[inlet]] '" + s.name + "'");
+  }
+  for (const SinkSpec& s : prm.sinks) {
+    Hash h;
+    h.add(s.name);
+    region_hash(h, s.region);
+    p.items.push_back(h.value());
+    labels.push_back("[[sink]] '" + s.name + "'");
+  }
+  p.label = [labels = std::move(labels)](std::size_t k) { return labels[k]; };
+  return p;
+}
+
 // The scheme decides what the checkpoint's contact history holds (the trapezoidal rule's
 // step-start values) and what its dt means; the step lengths themselves stay editable.
 FingerprintPart integration_part(const TimeParams& t) {
@@ -286,6 +332,7 @@ SceneFingerprint fingerprint_scene(const Scene& scene) {
   f.parts.push_back(contact_part(prm.contact));
   f.parts.push_back(physics_part(prm));
   f.parts.push_back(integration_part(prm.time));
+  f.parts.push_back(open_boundaries_part(prm));
   return f;
 }
 

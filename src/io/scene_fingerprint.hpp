@@ -10,6 +10,7 @@
 //   contact laws       [contact] per key, each [[contact.pair]] entry
 //   physics            [analysis], gravity, [fields], [near_field], [thermal] per key
 //   time integration   time.integrator, time.phi, time.adaptive
+//   inlets and sinks   each [[inlet]] and [[sink]] entry (all its keys)
 // What is not here (time.duration, time.dt and the step controls, [tolerance], neighbor.skin,
 // domain.on_exit, [output], [checks], the command's options) may be edited on resume.
 #include <cstddef>

@@ -1,6 +1,7 @@
 // TOML scene reader: maps every table and key of the scene file (docs/scene.md) onto Params,
 // Materials and the particle/barrier sources, validating types and ranges as it goes, then
 // (load_scene) reads the CSV sources into the particle and barrier arrays.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "io/barrier_csv.hpp"
 #include "io/contact_reader.hpp"
 #include "io/generate_spec_reader.hpp"
+#include "io/inlet_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/input_file.hpp"
 #include "io/particle_csv.hpp"
@@ -213,7 +215,7 @@ void read_activity(const TomlSection& s, MotionLaw& law) {
 
 void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene) {
   std::size_t entry = 0;
-  for (const TomlSection& s : root.tables("particles", {"file", "generate", "material"})) {
+  for (const TomlSection& s : root.tables("particles", {"file", "generate", "material", "fixed"})) {
     if (scene.model.materials.empty())
       throw InputError(root.file(), s.line(), "material",
                        "at least one [[material]] is required when particles are given");
@@ -232,6 +234,7 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
     ++entry;
     s.get("material", src.material);
     if (!src.material.empty()) check_material(s, "material", src.material, scene.model);
+    s.get("fixed", src.fixed);
     scene.particle_sources.push_back(src);
   }
   for (const TomlSection& s :
@@ -340,7 +343,8 @@ Scene parse_scene_file(const std::filesystem::path& file) {
   scene.dir = scene.file.parent_path();
   const TomlSection root(name, doc, "",
                          {"time", "tolerance", "analysis", "gravity", "fields", "near_field", "contact", "thermal",
-                          "material", "particles", "barriers", "domain", "neighbor", "output", "checks"});
+                          "material", "particles", "barriers", "domain", "neighbor", "output", "checks", "inlet",
+                          "sink"});
   Params& p = scene.model.params;
   read_time(root, p.time);
   read_tolerance(root, p.tolerance);
@@ -349,6 +353,7 @@ Scene parse_scene_file(const std::filesystem::path& file) {
   read_contact_and_thermal(root, scene.model, p);
   read_near_field(root, scene.model, p.near_field);
   read_sources(root, doc, scene);
+  read_inlets_and_sinks(root, doc, scene.model);
   read_domain_neighbor_output(root, p);
   return scene;
 }
@@ -361,6 +366,9 @@ Scene load_scene(const std::filesystem::path& file) {
     if (src.generate) add_generated_particles(*src.generate, scene.model, mat, scene.particles);
     else read_particle_csv(src.file, scene.model, mat, scene.particles);
     src.count = scene.particles.size() - src.first;
+    // The entry's flag on top of a CSV `fixed` column or the generator's own.
+    if (src.fixed)
+      std::fill(scene.particles.fixed.begin() + static_cast<std::ptrdiff_t>(src.first), scene.particles.fixed.end(), 1);
   }
   for (BarrierSource& src : scene.barrier_sources) {
     src.first = scene.barriers.size();

@@ -166,12 +166,15 @@ void write_particles_vtu(const std::filesystem::path& file, const Particles& p, 
     id_array(s, "id", owned(p.id));                        // -
     scalar_array(s, "radius", owned(p.radius));            // m
     int_array(s, "material", "Int32", owned(p.material));  // index into the scene's materials
-    vector_array(s, "velocity", owned(p.v));               // m/s
-    vector_array(s, "angular_velocity", owned(p.w));       // rad/s
-    vector_array(s, "force", owned(p.force));              // N
-    scalar_array(s, "temperature", owned(p.T));            // K
-    scalar_array(s, "charge", owned(p.charge));            // C
-    open_array(s, "Float64", "orientation", 4);            // unit quaternion (w, x, y, z), body -> world
+    int_array(
+        s, "fixed", "UInt8",
+        std::vector<int>(p.fixed.begin(), p.fixed.begin() + static_cast<std::ptrdiff_t>(n)));  // 1: prescribed motion
+    vector_array(s, "velocity", owned(p.v));                                                   // m/s
+    vector_array(s, "angular_velocity", owned(p.w));                                           // rad/s
+    vector_array(s, "force", owned(p.force));                                                  // N
+    scalar_array(s, "temperature", owned(p.T));                                                // K
+    scalar_array(s, "charge", owned(p.charge));                                                // C
+    open_array(s, "Float64", "orientation", 4);  // unit quaternion (w, x, y, z), body -> world
     for (const Quat& q : owned(p.q)) {
       s.value(q.w);
       s.value(q.x);

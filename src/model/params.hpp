@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/vec3.hpp"
+#include "model/open_boundaries.hpp"
 
 namespace mpdem {
 
@@ -180,6 +181,8 @@ struct Params {
   NeighborParams neighbor;
   OutputParams output;
   CheckParams checks;
+  std::vector<InletSpec> inlets;  // [[inlet]] entries, in scene order
+  std::vector<SinkSpec> sinks;    // [[sink]] entries, in scene order
 };
 
 }  // namespace mpdem

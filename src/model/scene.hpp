@@ -22,6 +22,7 @@ struct ParticleSource {
   std::filesystem::path file;            // absolute (resolved against the scene file's folder), or empty
   std::optional<GenerateSpec> generate;  // set instead of `file` for generated particles
   std::string material;                  // default material name ("" = first material)
+  bool fixed = false;                    // every particle of the entry fixed (Particles::fixed)
   std::size_t line = 0;                  // line of the entry in the scene file, for messages
   std::size_t first = 0, count = 0;      // its particles [first, first + count) as loaded (before any reordering)
 };

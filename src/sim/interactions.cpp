@@ -4,7 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
+#include <type_traits>
 
+#include "core/deterministic_sum.hpp"
 #include "core/parallel.hpp"
 #include "core/scoped_timer.hpp"
 #include "physics/field_forces.hpp"
@@ -28,6 +32,16 @@ ContactTable table_for(const Model& model) {
   ContactTable t;
   t.build(model);
   return t;
+}
+
+// W, -sum (F.v + T.w) over the fixed particles: the power of what holds them to their motion
+// (T.w only with rotation: without it every particle's w is held, unbooked). Summed in fixed
+// blocks, so independent of the thread count.
+double fixed_particle_power(const Particles& p, bool rotation) {
+  return deterministic_block_sums<1>(p.size(), [&](std::size_t lo, std::size_t hi, std::array<double, 1>& acc) {
+    for (std::size_t i = lo; i < hi; ++i)
+      if (p.fixed[i]) acc[0] -= dot(p.force[i], p.v[i]) + (rotation ? dot(p.torque[i], p.w[i]) : 0.0);
+  })[0];
 }
 
 // True when some particle i in [lo, hi) has |x_i - x_build_i| + t |v_i| > limit (> 0). Only a
@@ -145,11 +159,12 @@ bool Interactions::drift_within(const Particles& p, double dt, double limit, boo
   const double lim2 = limit * limit / kDriftMargin2;  // m^2
   constexpr std::size_t kChunk = 1024;                // particles per call
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  const std::uint8_t* fixed = p.any_fixed() ? p.fixed.data() : nullptr;  // the kick leaves these alone
   std::size_t beyond = 0;
 #pragma omp parallel for schedule(static) reduction(+ : beyond) if (n > kParallelThreshold)
   for (std::size_t c = 0; c < chunks; ++c)
     beyond += drift_beyond(p.x.data(), since_build ? search_->pairs().build_positions().data() : p.x.data(), p.v.data(),
-                           p.force.data(), p.mass.data(), c * kChunk, std::min(n, (c + 1) * kChunk), dt, lim2);
+                           p.force.data(), p.mass.data(), fixed, c * kChunk, std::min(n, (c + 1) * kChunk), dt, lim2);
   return beyond == 0;
 }
 
@@ -184,6 +199,31 @@ void Interactions::remove_particles(Particles& p, const Barriers& b, const std::
     if (keep[i]) old_index.push_back(static_cast<std::uint32_t>(i));
   p.compact(keep);
   pb_->compact(keep);
+  search_->rebuild(p, b);
+  pp_->restore_history(*search_, std::move(history), old_index);
+  stats_.rebuilds = search_->rebuilds();
+}
+
+void Interactions::add_particles(Particles& p, const Barriers& b, Particles fresh) {
+  next_drift_.valid = false;
+  ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
+  p.drop_ghosts();
+  const std::size_t old_n = p.size();
+  // Each array of `fresh` onto the end of p's: both lists name the arrays in the same order.
+  std::size_t k = 0;
+  p.for_each_array([&](const char*, auto& to) {
+    std::size_t j = 0;
+    fresh.for_each_array([&](const char*, auto& from) {
+      if constexpr (std::is_same_v<decltype(to), decltype(from)>)
+        if (j == k) to.insert(to.end(), from.begin(), from.end());
+      ++j;
+    });
+    ++k;
+  });
+  // The others keep their indices (and so their barrier contact records); a new particle has
+  // no old index (beyond any old list, ghosts included: no carried pair is found for it).
+  std::vector<std::uint32_t> old_index(p.size(), std::numeric_limits<std::uint32_t>::max());
+  std::iota(old_index.begin(), old_index.begin() + static_cast<std::ptrdiff_t>(old_n), std::uint32_t{0});
   search_->rebuild(p, b);
   pp_->restore_history(*search_, std::move(history), old_index);
   stats_.rebuilds = search_->rebuilds();
@@ -261,6 +301,11 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     for (std::size_t e = 0; e < b.size(); ++e) drive += b.drive_power(e);
     stats_.barrier_work += 0.5 * req.dt * (stats_.drive_power + drive);
     stats_.drive_power = drive;
+    // A fixed particle's velocity is held against the force and torque acting on it (contacts
+    // and fields): the holding force -F does the work -F.v (and -T.w) on the system.
+    const double held = p.any_fixed() ? fixed_particle_power(p, model_.params.analysis.rotation) : 0.0;  // W
+    stats_.fixed_work += 0.5 * req.dt * (stats_.fixed_power + held);
+    stats_.fixed_power = held;
     stats_.spring_energy = pp.spring_after + pb.spring_after;
   }
 }
@@ -295,6 +340,8 @@ void for_each_stat(S& s, F&& f) {
   f(s.spring_energy);
   f(s.barrier_work);
   f(s.drive_power);
+  f(s.fixed_work);
+  f(s.fixed_power);
   f(s.rebuilds);
   f(s.near_field_energy);
   f(s.heat_to_barriers);
@@ -302,7 +349,7 @@ void for_each_stat(S& s, F&& f) {
   f(s.heat_radiated);
 }
 // A field added to InteractionStats must be added to for_each_stat (and is then a format change).
-static_assert(sizeof(InteractionStats) == 15 * 8, "InteractionStats changed: update for_each_stat");
+static_assert(sizeof(InteractionStats) == 17 * 8, "InteractionStats changed: update for_each_stat");
 // Reads one section with `read(BinaryReader&)`, which must consume it whole.
 template <class F>
 void read_section(CheckpointReader& r, const std::string& name, F&& read) {

@@ -39,7 +39,11 @@ struct InteractionStats {
   // J, cumulative work the barriers' prescribed motion did on the particles (the trapezoid of the
   // drive power over committed steps): energy that enters an otherwise closed system.
   double barrier_work = 0.0;
-  double drive_power = 0.0;        // W, sum of Barriers::drive_power at the last committed evaluation
+  double drive_power = 0.0;  // W, sum of Barriers::drive_power at the last committed evaluation
+  // J, cumulative work the fixed particles' prescribed motion did on the rest (the trapezoid of
+  // fixed_power over committed steps, as barrier_work): what holds them to their constant v and w.
+  double fixed_work = 0.0;
+  double fixed_power = 0.0;        // W, -sum (F.v + T.w) over fixed particles at the last committed evaluation
   std::uint64_t rebuilds = 0;      // neighbour list rebuilds
   double near_field_energy = 0.0;  // J, potential of the near-field pairs within the cutoff
   // Thermal bookkeeping (physics.md section 8), cumulative over committed steps with the
@@ -99,6 +103,9 @@ class Interactions {
   void evaluate(Particles& p, Barriers& b, const EvalRequest& req);
   // Removes the particles whose keep[i] is 0, keeping everyone else's contact history.
   void remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep);
+  // Appends the particles `fresh` (an inlet's, sim/inlets.hpp) after the others, keeping every
+  // existing contact's history; the new ones start without any.
+  void add_particles(Particles& p, const Barriers& b, Particles fresh);
   // Rebuilds now (optionally reordering) - for tests of rebuild invariance.
   void force_rebuild(Particles& p, const Barriers& b, bool reorder);
 

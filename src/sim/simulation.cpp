@@ -14,7 +14,9 @@
 #include "io/output_manager.hpp"
 #include "contact/particle_contacts.hpp"
 #include "io/progress.hpp"
+#include "sim/inlets.hpp"
 #include "sim/run_error.hpp"
+#include "sim/sinks.hpp"
 #include "sim/stop_signal.hpp"
 
 namespace mpdem {
@@ -38,7 +40,10 @@ Simulation::Simulation(Scene&& scene, RunOptions options)
       options_(std::move(options)),
       interactions_(std::make_unique<Interactions>(scene_.model, scene_.particles, scene_.barriers,
                                                    integrator_policy(scene_.model.params))),
-      trapezoidal_(scene_.model), verlet_(scene_.model), dt_(scene_.model.params.time.dt) {}
+      trapezoidal_(scene_.model), verlet_(scene_.model), dt_(scene_.model.params.time.dt) {
+  if (!scene_.model.params.inlets.empty()) inlets_ = std::make_unique<Inlets>(scene_.model, scene_.particles);
+  if (!scene_.model.params.sinks.empty()) sinks_ = std::make_unique<Sinks>(scene_.model);
+}
 
 Simulation::~Simulation() = default;
 
@@ -117,8 +122,9 @@ StepReport Simulation::advance_adaptive(double limit) {
 
 double Simulation::energy_balance(const StateScan& s) const {
   const InteractionStats& st = interactions_->stats();
-  return s.energy.kinetic + s.energy.rotational + s.energy.potential + s.electric + st.elastic_energy +
-         st.damping_dissipated + st.friction_dissipated + record_.removed_energy - st.barrier_work;
+  const double inserted = inlets_ ? inlets_->inserted_energy() : 0.0;  // J, what inlets brought in
+  return -inserted + s.energy.kinetic + s.energy.rotational + s.energy.potential + s.electric + st.elastic_energy +
+         st.damping_dissipated + st.friction_dissipated + record_.removed_energy - st.barrier_work - st.fixed_work;
 }
 
 void Simulation::record_state(const StateScan& s) {
@@ -151,9 +157,11 @@ void Simulation::check_energy(const StateScan& s) {
     const double rise = balance - last_balance_;
     // Round-off of the balance is relative to its largest term.
     const double noise = 1e-9 * (std::abs(e.potential) + active + std::abs(balance)) + 1e-15;
-    // A moving barrier feeds energy in: what it put in during the step (its drive power x dt) is
-    // part of the scale, so a particle at rest that a wall sets moving is not a jump.
-    const double driven = std::abs(interactions_->stats().drive_power) * dt_;  // J
+    // A moving barrier (or fixed particle) feeds energy in: what it put in during the step (its
+    // drive power x dt) is part of the scale, so a particle at rest that a wall sets moving is not
+    // a jump.
+    const InteractionStats& st = interactions_->stats();
+    const double driven = (std::abs(st.drive_power) + std::abs(st.fixed_power)) * dt_;  // J
     if (rise > prm.checks.energy_jump * (last_active_ + driven) + noise) {
       // Name the fastest particles: an exploding contact throws them apart.
       const Particles& p = scene_.particles;
@@ -207,6 +215,8 @@ void Simulation::check_state(const StepReport& rep) {
   check_energy(scan);
   record_state(scan);
   if (scan.outside > 0) remove_outside();
+  if (sinks_) remove_in_sinks();
+  if (inlets_) insert_from_inlets();
 }
 
 void Simulation::remove_outside() {
@@ -224,19 +234,52 @@ void Simulation::remove_outside() {
                       p.id[i], steps_, time_, x.x, x.y, x.z));
     keep[i] = 0;
     ++gone;
+    if (progress_) progress_->removed(p.id[i], time_, removed_ + gone);
+  }
+  if (gone == 0) return;
+  removed_ += gone;
+  remove_marked(keep);
+}
+
+void Simulation::remove_in_sinks() {
+  std::vector<char> keep(scene_.particles.size(), 1);
+  if (sinks_->mark(scene_.particles, keep) > 0) remove_marked(keep);  // stderr: the summary line
+}
+
+void Simulation::remove_marked(const std::vector<char>& keep) {
+  Particles& p = scene_.particles;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (keep[i]) continue;
     // The energy it takes along stays in the balance, which would otherwise drop (or rise) by it.
     std::array<double, kScanSums> e{};
     scan_range(p, i, i + 1, scene_.model.params.fields, DomainParams{}, e);
     record_.removed_energy += e[0] + e[1] + e[2] + e[3];
-    if (output_) output_->removed(p.id[i], time_, x);
-    if (progress_) progress_->removed(p.id[i], time_, removed_ + gone);
+    if (output_) output_->removed(p.id[i], time_, p.x[i]);
   }
-  if (gone == 0) return;
   interactions_->remove_particles(p, scene_.barriers, keep);
-  removed_ += gone;
   // The removed particles' forces on the others are gone: re-evaluate the rates (no increment).
   interactions_->evaluate(p, scene_.barriers, EvalRequest{time_, 0.0, 1.0, true});
   ++evaluations_;
+}
+
+void Simulation::insert_from_inlets() {
+  Particles fresh = inlets_->insert(time_, scene_.particles, scene_.barriers);
+  if (fresh.size() == 0) return;
+  interactions_->add_particles(scene_.particles, scene_.barriers, std::move(fresh));
+  // The new particles' forces (gravity, fields; no contact yet): re-evaluate the rates.
+  interactions_->evaluate(scene_.particles, scene_.barriers, EvalRequest{time_, 0.0, 1.0, true});
+  ++evaluations_;
+}
+
+void Simulation::log_row(GlobalLogRow row) {
+  if (inlets_) inlets_->log_values(row.open_system);
+  if (sinks_) sinks_->log_values(row.time, row.open_system);
+  output_->global_log(row, scene_.particles, interactions_->stats());
+}
+
+std::string Simulation::open_system_summary() const {
+  const std::string in = inlets_ ? inlets_->summary() : "", out = sinks_ ? sinks_->summary() : "";
+  return in.empty() || out.empty() ? in + out : in + "; " + out;
 }
 
 RunSummary Simulation::run() {
@@ -255,7 +298,7 @@ RunSummary Simulation::run() {
   const double dt = prm.time.dt;
   if (output_ && !resumed_) {
     output_->snapshots(time_, dt, scene_.particles, scene_.barriers, true);
-    output_->global_log({0, time_, dt, nullptr, evaluations_, 0, removed_}, scene_.particles, interactions_->stats());
+    log_row({0, time_, dt, nullptr, evaluations_, 0, removed_, {}});
   }
   install_stop_handlers();
   const auto every = static_cast<std::uint64_t>(prm.output.checkpoint_every);
@@ -274,11 +317,11 @@ RunSummary Simulation::run() {
     if (output_) {
       output_->snapshots(time_, h, scene_.particles, scene_.barriers, false);
       if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) == 0)
-        output_->global_log({steps_, time_, h, &last, evaluations_, redone_, removed_}, scene_.particles,
-                            interactions_->stats());
+        log_row({steps_, time_, h, &last, evaluations_, redone_, removed_, {}});
     }
     const auto& st = interactions_->stats();
     progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, scene_.particles.size());
+    if ((inlets_ || sinks_) && progress_->summary_due()) progress_->summary(open_system_summary());
     if (output_ && every > 0 && steps_ % every == 0) {
       write_checkpoint(dir / "checkpoint.bin");
       output_->flush();
@@ -296,10 +339,10 @@ RunSummary Simulation::run() {
   if (output_) {
     output_->snapshots(time_, dt, scene_.particles, scene_.barriers, true);
     if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) != 0)
-      output_->global_log({steps_, time_, dt_, &last, evaluations_, redone_, removed_}, scene_.particles,
-                          interactions_->stats());
+      log_row({steps_, time_, dt_, &last, evaluations_, redone_, removed_, {}});
     output_->flush();
   }
+  if (inlets_ || sinks_) progress_->summary(open_system_summary());  // the final totals
   progress_->finish(time_, steps_);
   RunSummary sum{time_, steps_, steps_ - first_step, evaluations_, removed_, record_, prm.checks.energy_drift, ""};
   // Work and potential the balance leaves out make its drift meaningless as a measure of the step.

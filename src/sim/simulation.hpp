@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "integrate/step_report.hpp"
 #include "integrate/trapezoidal.hpp"
@@ -20,6 +22,9 @@ namespace mpdem {
 
 class OutputManager;
 class Progress;
+class Inlets;
+class Sinks;
+struct GlobalLogRow;
 
 struct RunOptions {
   std::filesystem::path output_dir;  // empty: the scene's [output] dir, relative to the scene
@@ -61,6 +66,8 @@ class Simulation {
   Particles& particles() { return scene_.particles; }
   Barriers& barriers() { return scene_.barriers; }
   Interactions& interactions() { return *interactions_; }
+  const Inlets* inlets() const { return inlets_.get(); }  // null without [[inlet]]
+  const Sinks* sinks() const { return sinks_.get(); }     // null without [[sink]]
   const Model& model() const { return scene_.model; }
   Model& model() { return scene_.model; }  // a material edited between steps acts at the next step
 
@@ -71,6 +78,13 @@ class Simulation {
   void record_state(const StateScan& s);        // the balance and active energy into record_
   void record_overlap(const OverlapReport& r);  // r into record_ when it is the deepest yet
   void remove_outside();                        // domain.on_exit: stop or remove
+  void remove_in_sinks();                       // [[sink]]: the particles in a sink, between steps
+  void insert_from_inlets();                    // [[inlet]]: the particles due, between steps
+  // Removes the particles whose keep[i] is 0: removed.csv, their energy into the balance, the
+  // others' contact history kept, the rates re-evaluated.
+  void remove_marked(const std::vector<char>& keep);
+  void log_row(GlobalLogRow row);           // a global log row, with the inlets' and sinks' columns
+  std::string open_system_summary() const;  // the inlets' and sinks' line for stderr ("" = none)
   // J, mechanical energy + cumulative dissipation + what removed particles took along, from the
   // scan of the particles.
   double energy_balance(const StateScan& s) const;
@@ -85,6 +99,8 @@ class Simulation {
   VerletIntegrator verlet_;
   std::unique_ptr<OutputManager> output_;
   std::unique_ptr<Progress> progress_;  // set while run() runs
+  std::unique_ptr<Inlets> inlets_;      // null without [[inlet]]
+  std::unique_ptr<Sinks> sinks_;        // null without [[sink]]
   double time_ = 0.0;                   // s
   std::uint64_t steps_ = 0;
   std::uint64_t evaluations_ = 0;

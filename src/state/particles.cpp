@@ -54,6 +54,14 @@ void Particles::permute(const std::vector<std::uint32_t>& order) {
   });
 }
 
+bool Particles::any_fixed() const {
+  // An OR over all of them rather than a search that stops early: it vectorises, and most scenes
+  // have none.
+  std::uint8_t any = 0;
+  for (std::size_t i = 0; i < size(); ++i) any |= fixed[i];
+  return any != 0;
+}
+
 void Particles::compact(const std::vector<char>& keep) {
   refuse_ghosts(*this, "compact");
   for_each_array([&keep](const char*, auto& a) {

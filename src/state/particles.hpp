@@ -34,6 +34,8 @@ struct Particles {
   std::vector<double> mass;      // kg, 4/3 pi R^3 rho (rho of the material at load)
   std::vector<double> inertia;   // kg m^2, 2/5 m R^2   (32)
   std::vector<double> charge;    // C
+  // -, 1: prescribed motion (v and w constant, x advanced by v dt; forces do not act), 0: free
+  std::vector<std::uint8_t> fixed;
   // --- state [N] ---
   std::vector<Vec3> x;    // m, centre
   std::vector<Vec3> v;    // m/s, velocity
@@ -65,6 +67,8 @@ struct Particles {
   void permute(const std::vector<std::uint32_t>& order);
   // Keeps particles whose keep[i] is true, in order.
   void compact(const std::vector<char>& keep);
+  // True when some owned particle is fixed: the integrators take their masked paths only then.
+  bool any_fixed() const;
 
   // f(name, array) for every per-particle array: the one list that resizing, reordering,
   // removal, checkpoints (one section per array, by name) and later MPI packing use, so that an
@@ -77,6 +81,7 @@ struct Particles {
     f("mass", mass);
     f("inertia", inertia);
     f("charge", charge);
+    f("fixed", fixed);
     f("x", x);
     f("v", v);
     f("w", w);

@@ -106,9 +106,11 @@ TEST_F(OutputTest, ParticleVtuRoundTripsThroughMeshio) {
   std::vector<std::string> keys;
   for (const auto& [k, a] : r) keys.push_back(k);
   const std::vector<std::string> expected_keys = {
-      "cells/vertex",      "field_data/TimeValue",   "point_data/angular_velocity", "point_data/charge",
-      "point_data/force",  "point_data/id",          "point_data/material",         "point_data/orientation",
-      "point_data/radius", "point_data/temperature", "point_data/velocity",         "points/Points"};
+      "cells/vertex",      "field_data/TimeValue",   "point_data/angular_velocity",
+      "point_data/charge", "point_data/fixed",       "point_data/force",
+      "point_data/id",     "point_data/material",    "point_data/orientation",
+      "point_data/radius", "point_data/temperature", "point_data/velocity",
+      "points/Points"};
   ASSERT_EQ(keys, expected_keys);  // std::map keeps them sorted
 
   ASSERT_EQ(r.at("field_data/TimeValue").tokens.size(), 1u);
@@ -126,6 +128,7 @@ TEST_F(OutputTest, ParticleVtuRoundTripsThroughMeshio) {
     expect_vec(r.at("points/Points"), i, p.x[i]);
     EXPECT_EQ(r.at("point_data/id").i(i, 0), p.id[i]);
     EXPECT_EQ(r.at("point_data/material").i(i, 0), p.material[i]);
+    EXPECT_EQ(r.at("point_data/fixed").i(i, 0), p.fixed[i]);
     EXPECT_EQ(r.at("point_data/radius").d(i, 0), p.radius[i]);
     expect_vec(r.at("point_data/velocity"), i, p.v[i]);
     expect_vec(r.at("point_data/angular_velocity"), i, p.w[i]);
@@ -159,7 +162,7 @@ TEST_F(OutputTest, EmptyParticleVtuIsWellFormed) {
     EXPECT_EQ(count, name == "TimeValue" ? 1u : 0u) << lines[k];
     ++arrays;
   }
-  EXPECT_EQ(arrays, 1 + 9 + 1 + 3);  // time, 9 point arrays, points, 3 cell arrays
+  EXPECT_EQ(arrays, 1 + 10 + 1 + 3);  // time, 10 point arrays, points, 3 cell arrays
 }
 
 TEST_F(OutputTest, BarrierVtuHasMovedTrianglesAndLoads) {

@@ -124,10 +124,10 @@ TEST(PeriodicBoundaries, CrossingParticleKeepsVelocityAndMeetsTheOtherSide) {
     std::vector<std::string> cells;
     std::stringstream ss(row);
     for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    if (cells.size() < 24 || cells[1] != "1") continue;
+    if (cells.size() < 25 || cells[1] != "1") continue;
     found = true;
-    EXPECT_EQ(cells[18], "1");                       // ix
-    EXPECT_NEAR(std::stod(cells[21]), ua.x, 1e-15);  // xu, m
+    EXPECT_EQ(cells[19], "1");                       // ix (after the fixed flag)
+    EXPECT_NEAR(std::stod(cells[22]), ua.x, 1e-15);  // xu, m
   }
   EXPECT_TRUE(found);
   fs::remove_all(dir);

@@ -1,0 +1,77 @@
+#pragma once
+// Inlets: the particles a scene's [[inlet]] entries insert during the run (docs/scene.md
+// "[[inlet]]"), decided between steps from the state then.
+//
+// An inlet inserts at its insertion times t_k = start + k interval (t_k < end), each at the first
+// step end at or after it, what is due up to the next one: mass_rate (or count_rate) x
+// (min(t_k + interval, end) - start) in all, less what it inserted before. The particles come
+// one by one: the next radius is drawn ahead and inserted while the inlet's total stays within
+// half that particle of what is due, at a random position of its volume where it overlaps no
+// particle and no active barrier element (InsertionSpace). A particle that finds no room in
+// max_attempts positions ends the insertion time: what is still due is the inlet's shortfall,
+// logged and carried to the next insertion time, never dropped.
+//
+// Deterministic: insertion time k of inlet j draws from its own Rng seeded by (seed, j, k), and
+// the state that decides the next insertion (the next k, the totals, the radius drawn ahead, the
+// next id) is checkpointed (section "inlets"), so a resumed run inserts bitwise the same
+// particles. Ids continue after the largest id the run has had (never one a removed particle had).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "generate/region.hpp"
+#include "io/binary_stream.hpp"
+#include "model/scene.hpp"
+
+namespace mpdem {
+
+class Inlets {
+ public:
+  // The scene's inlets (model.params.inlets); `p`: the particles at the start (the first id).
+  Inlets(const Model& model, const Particles& p);
+
+  // The particles every inlet inserts at the step end at time t (s), given the particles and
+  // barriers then: appended by the caller (Interactions::add_particles). Empty when none is due.
+  Particles insert(double t, const Particles& p, const Barriers& b);
+
+  // J, kinetic + rotational + potential energy the inserted particles brought in (the energy
+  // balance takes it off, as it adds what removed particles take along).
+  double inserted_energy() const { return inserted_energy_; }
+  // Global log: per inlet "<name>.inserted" (-), "<name>.inserted_mass" (kg), "<name>.shortfall"
+  // (kg with mass_rate, particles with count_rate).
+  static std::vector<std::string> log_columns(const Params& prm);
+  void log_values(std::vector<double>& out) const;  // appends one value per column
+  std::string summary() const;                      // one line for stderr, "" when nothing inserted
+  void save(BinaryWriter& w) const;                 // checkpoint section "inlets"
+  void restore(BinaryReader& r);
+
+  struct State {                 // of one inlet (checkpointed byte for byte)
+    std::uint64_t next_k = 0;    // index of its next insertion time
+    std::uint64_t inserted = 0;  // particles inserted
+    double inserted_mass = 0.0;  // kg
+    double shortfall = 0.0;      // kg or particles: due but not placed at the last insertion time
+    double next_radius = 0.0;    // m, radius of the next particle (0: not drawn yet)
+  };
+  const std::vector<State>& states() const { return state_; }
+
+ private:
+  struct Inlet {
+    const InletSpec* spec;
+    Region region;    // the volume in its frame coordinates
+    int material;     // index into Model::materials
+    double density;   // kg/m^3
+    double end;       // s, end of the insertions
+    double interval;  // s (a default one: the checkpoint's after a resume)
+    Vec3 lo, hi;      // m, world bounding box of the volume
+  };
+  // Inserts inlet j's particles due at its insertion time k into `fresh`.
+  void insert_due(std::size_t j, std::uint64_t k, const Particles& p, const Barriers& b, Particles& fresh);
+
+  const Model& model_;
+  std::vector<Inlet> inlets_;
+  std::vector<State> state_;      // [inlets]
+  std::int64_t next_id_ = 0;      // id of the next inserted particle
+  double inserted_energy_ = 0.0;  // J
+};
+
+}  // namespace mpdem

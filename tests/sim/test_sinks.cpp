@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -14,6 +15,7 @@
 #include "sim/simulation.hpp"
 #include "sim/sinks.hpp"
 #include "support/scene_builder.hpp"
+#include "support/timed_barrier_scenes.hpp"
 #include "support/temp_dir.hpp"
 
 using namespace mpdem;
@@ -105,4 +107,38 @@ TEST(Sinks, RemoveExactlyTheParticlesThatEnterThem) {
   EXPECT_NEAR(rec.balance, rec.start_balance, 1e-9 * std::abs(rec.start_balance));
   std::printf("%zu of 100 spheres removed (%.6g kg), rate integral %.6g kg, balance %.12g -> %.12g J\n",
               expected.size(), st.removed_mass, integral, rec.start_balance, rec.balance);
+}
+
+// A silo's lid switched off at t = 0.5 s over a sink (issue 17): nothing reaches the sink while
+// the lid holds the settled column, the lid carries no force once off, the first removal comes
+// after the switch, and the sink takes every sphere, with their mass.
+TEST(Sinks, LidSwitchedOffFeedsTheSinkOnlyAfterwards) {
+  Scene s = test::lid_scene(Integrator::Verlet);
+  s.model.params.domain = DomainParams{};  // no domain exit: the sink is the outlet
+  SinkSpec sink;
+  sink.name = "outlet";
+  sink.region.shape = RegionShape::Box;
+  sink.region.min = {-0.05, -0.05, -0.05};
+  sink.region.max = {0.05, 0.05, -0.01};
+  s.model.params.sinks.push_back(sink);
+  const double mass = 3.0 * s.particles.mass[0];  // kg
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
+  const Barriers& b = sim.barriers();
+  double first_removal = -1.0;  // s
+  while (sim.time() < 0.8 && sim.particles().size() > 0) {
+    sim.advance(test::kTimedDt);
+    const std::uint64_t removed = sim.sinks()->states()[0].removed;
+    if (sim.time() < test::kLidOff) {
+      ASSERT_EQ(removed, 0u) << "t = " << sim.time();
+    } else {
+      for (std::size_t e = 0; e < b.size(); ++e) ASSERT_EQ(b.force[e], (Vec3{})) << "t = " << sim.time();
+    }
+    if (removed > 0 && first_removal < 0.0) first_removal = sim.time();
+  }
+  EXPECT_GT(first_removal, test::kLidOff);
+  EXPECT_EQ(sim.particles().size(), 0u);
+  EXPECT_EQ(sim.sinks()->states()[0].removed, 3u);
+  EXPECT_NEAR(sim.sinks()->states()[0].removed_mass, mass, 1e-15 * mass);
+  std::printf("lid off at %.3f s: first removal by the sink at %.4f s, %llu spheres removed\n", test::kLidOff,
+              first_removal, static_cast<unsigned long long>(sim.sinks()->states()[0].removed));
 }

@@ -1,6 +1,8 @@
 // Radius distributions (docs/tools.md "Radius distributions").
 #include "generate/radius_distribution.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -144,6 +146,17 @@ std::string RadiusDistribution::describe() const {
     case RadiusLaw::Discrete: return "discrete (" + std::to_string(radii.size()) + " radii)";
   }
   return "";
+}
+
+double RadiusDistribution::smallest() const {
+  switch (law) {
+    case RadiusLaw::Constant: return value;
+    case RadiusLaw::Discrete: return radii.empty() ? 0.0 : *std::min_element(radii.begin(), radii.end());
+    case RadiusLaw::Uniform:
+    case RadiusLaw::Normal:
+    case RadiusLaw::LogNormal: return min > 0.0 ? min : 0.5 * mean;
+  }
+  return 0.0;
 }
 
 }  // namespace mpdem

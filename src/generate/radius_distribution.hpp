@@ -28,6 +28,9 @@ struct RadiusDistribution {
   double sample(Rng& rng) const;
   // Number probabilities of the discrete radii: fractions, or mass fractions / r^3, normalised.
   std::vector<double> number_fractions() const;
+  // m, the smallest radius it gives (its lower bound; for a log-normal without one, half its
+  // mean), for defaults that scale with the particles (the neighbour skin).
+  double smallest() const;
   // Human-readable summary for messages and the CLI ("uniform [0.001, 0.002] m").
   std::string describe() const;
 };

@@ -63,6 +63,9 @@ double default_skin(const Model& model, const Particles& p) {
   if (model.params.neighbor.skin > 0.0) return model.params.neighbor.skin;
   double rmin = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) rmin = i == 0 ? p.radius[i] : std::min(rmin, p.radius[i]);
+  // Inlets add particles later (a silo filled from empty): their smallest radius counts too.
+  for (const InletSpec& in : model.params.inlets)
+    if (const double r = in.radius.smallest(); r > 0.0) rmin = rmin > 0.0 ? std::min(rmin, r) : r;
   return rmin > 0.0 ? 0.2 * rmin : 1e-3;
 }
 

@@ -207,3 +207,18 @@ TEST(Inlets, AddingParticlesKeepsContactHistory) {
     EXPECT_LE(norm(a.particles().x[i] - b.particles().x[j]), 1e-12 * norm(a.particles().x[i])) << "id " << id;
   }
 }
+
+// A scene filled from empty by an inlet gets its default skin from the inlet's particles (0.2 x
+// the smallest radius), not the 1 mm fallback of a scene without any particle.
+TEST(Inlets, DefaultSkinFollowsTheInletRadii) {
+  Scene s = test::fed_box_scene(0.01, 0.01);
+  s.model.params.neighbor.skin = 0.0;  // derived
+  EXPECT_DOUBLE_EQ(default_skin(s.model, s.particles), 0.2 * 0.001);
+  RadiusDistribution& r = s.model.params.inlets[0].radius;
+  r.law = RadiusLaw::Uniform;
+  r.min = 0.0004;
+  r.max = 0.0008;
+  EXPECT_DOUBLE_EQ(default_skin(s.model, s.particles), 0.2 * 0.0004);
+  s.model.params.inlets.clear();
+  EXPECT_DOUBLE_EQ(default_skin(s.model, s.particles), 1e-3);
+}

@@ -1,0 +1,232 @@
+#!/usr/bin/env python3
+"""Silo discharge (examples/silo_beverloo): bulk density of the settled fill, the steady mass flow
+rate W of every orifice from the sink's log columns, Beverloo fits, plot and table. Run by run.sh:
+
+    plot_silo.py --width L --fill output/fill output/runs.txt
+
+runs.txt has one line per orifice: NAME D0 T_OPEN OUTPUT_DIR. Writes silo_beverloo.png (next to
+this file) and prints the table that run.sh saves as results.txt.
+
+Definitions (README.md):
+- d = mean bead diameter (2 x mean radius of the fill);
+- fill height H = mean over 7 x 7 columns of the silo of the highest bead top (z + r) in the
+  column; rho_b = fill mass / (L^2 H);
+- W = slope of a least-squares line through the sink's `out.removed_mass` (kg) against time over
+  the window [T_OPEN + T_TRANS, end]; the mean of `out.mass_rate` over the same rows is printed as
+  a check; the +- is the scatter of the slopes of the window's four quarters / 2;
+- D0 = side of the square orifice (= its hydraulic diameter 4 A / P);
+- free-exponent fit  W = C' (D0 - k d)^a  (least squares in ln W; for every k of a fine grid the
+  best a, ln C' are linear, the k of the smallest residual is kept; standard errors from the
+  Jacobian of the residuals);
+- Beverloo fit (a = 5/2): W^(2/5) = (C rho_b sqrt(g))^(2/5) (D0 - k d), a straight line in D0.
+"""
+import argparse
+import csv
+import glob
+import math
+import os
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+G = 9.81          # m/s^2
+RHO_P = 2500.0    # kg/m^3, bead density (silo.toml.in)
+T_TRANS = 0.15    # s after the lid opens: flow established at the orifice and beads fallen into the sink
+SINK = "out"
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(line for line in f if line.strip() and not line.startswith("#")))
+    return [{k.strip(): v.strip() for k, v in r.items()} for r in rows]
+
+
+def last_snapshot(folder):
+    files = sorted(glob.glob(os.path.join(folder, "particles_csv", "particles_*.csv")))
+    return read_csv(files[-1])
+
+
+def fill_state(folder, width):
+    rows = last_snapshot(folder)
+    x = np.array([float(r["x"]) for r in rows])
+    y = np.array([float(r["y"]) for r in rows])
+    z = np.array([float(r["z"]) for r in rows])
+    r = np.array([float(r["radius"]) for r in rows])
+    t = float(rows[0]["time"])
+    mass = float(np.sum(4.0 / 3.0 * math.pi * r**3 * RHO_P))
+    nc = 7
+    ix = np.clip(((x + width / 2) / width * nc).astype(int), 0, nc - 1)
+    iy = np.clip(((y + width / 2) / width * nc).astype(int), 0, nc - 1)
+    top = np.zeros((nc, nc))
+    np.maximum.at(top, (ix, iy), z + r)
+    h = float(np.mean(top))
+    d = 2.0 * float(np.mean(r))
+    # interior solid fraction (centres in a box 2 d from the walls and floor, 3 d below the surface)
+    m = (np.abs(x) < width / 2 - 2 * d) & (np.abs(y) < width / 2 - 2 * d) & (z > 2 * d) & (z < h - 3 * d)
+    vol = (width - 4 * d) ** 2 * (h - 5 * d)
+    phi_in = float(np.sum(4.0 / 3.0 * math.pi * r[m] ** 3) / vol)
+    log = read_csv(os.path.join(folder, "log.csv"))
+    ke = float(log[-1]["kinetic"])
+    return dict(t=t, n=len(rows), mass=mass, h=h, top_min=float(top.min()), top_max=float(top.max()),
+                d=d, rmin=float(r.min()), rmax=float(r.max()), phi_in=phi_in, ke=ke,
+                rho_b=mass / (width * width * h))
+
+
+def slope(t, m):
+    a = np.polyfit(t, m, 1)
+    return float(a[0])
+
+
+def discharge(name, d0, t_open, folder, fill, width):
+    log = read_csv(os.path.join(folder, "log.csv"))
+    t = np.array([float(r["time"]) for r in log])
+    m = np.array([float(r[SINK + ".removed_mass"]) for r in log])
+    rate = np.array([float(r[SINK + ".mass_rate"]) for r in log])
+    n = np.array([int(r["particles"]) for r in log])
+    before = m[t < t_open]
+    first = t[m > 0][0] if np.any(m > 0) else float("nan")
+    w0 = t_open + T_TRANS
+    sel = t >= w0
+    tw, mw = t[sel], m[sel]
+    w = slope(tw, mw)
+    q = np.array_split(np.arange(len(tw)), 4)
+    ws = [slope(tw[i], mw[i]) for i in q]
+    err = float(np.std(ws, ddof=1) / 2.0)
+    left_end = fill["mass"] - float(mw[-1])
+    h_end = left_end / (fill["rho_b"] * width * width)
+    return dict(name=name, d0=d0, t_open=t_open, t=t, m=m, W=w, err=err, rate=float(np.mean(rate[sel])),
+                before=float(before.max()) if len(before) else 0.0, first=first, w0=float(tw[0]),
+                w1=float(tw[-1]), removed=float(mw[-1]) - float(mw[0]), h_end=h_end, n_end=int(n[-1]),
+                n_removed=int(log[-1][SINK + ".removed"]))
+
+
+def fit_free(d0, w, d):
+    """W = Cp (D0 - k d)^a, least squares in ln W; returns a, k, Cp and their standard errors."""
+    lw = np.log(w)
+    best = None
+    for k in np.arange(-3.0, min(d0) / d - 0.2, 0.0005):
+        x = np.log(d0 - k * d)
+        A = np.vstack([np.ones_like(x), x]).T
+        coef, res, *_ = np.linalg.lstsq(A, lw, rcond=None)
+        sse = float(np.sum((A @ coef - lw) ** 2))
+        if best is None or sse < best[0]:
+            best = (sse, k, coef[1], coef[0])
+    sse, k, a, lc = best
+    u = d0 - k * d
+    J = np.vstack([-np.ones_like(u), -np.log(u), a * d / u]).T   # d residual / d (ln Cp, a, k)
+    dof = max(len(w) - 3, 1)
+    cov = sse / dof * np.linalg.inv(J.T @ J)
+    se = np.sqrt(np.diag(cov))
+    return dict(a=a, k=k, cp=math.exp(lc), se_a=float(se[1]), se_k=float(se[2]), se_lc=float(se[0]),
+                rms=math.sqrt(sse / len(w)))
+
+
+def fit_beverloo(d0, w, d, rho_b):
+    """a = 5/2: W^(2/5) linear in D0 (weights: W^(2/5) has relative errors 2/5 of W's)."""
+    y = w ** 0.4
+    s, b = np.polyfit(d0, y, 1)
+    k = -b / s / d
+    c = s ** 2.5 / (rho_b * math.sqrt(G))
+    res = y - (s * d0 + b)
+    return dict(s=float(s), b=float(b), k=float(k), C=float(c), rel=float(np.max(np.abs(res / y))))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("runs")
+    ap.add_argument("--width", type=float, required=True)
+    ap.add_argument("--fill", required=True)
+    ap.add_argument("--png", default=os.path.join(HERE, "silo_beverloo.png"))
+    a = ap.parse_args()
+    L = a.width
+    fill = fill_state(a.fill, L)
+    d = fill["d"]
+    runs = []
+    with open(a.runs) as f:
+        for line in f:
+            if line.strip():
+                name, d0, t_open, folder = line.split()
+                runs.append(discharge(name, float(d0), float(t_open), folder, fill, L))
+    runs.sort(key=lambda r: r["d0"])
+    d0 = np.array([r["d0"] for r in runs])
+    w = np.array([r["W"] for r in runs])
+
+    print(f"silo: square, width L = {L} m, flat floor, square orifice of side D0 in its centre (D0 = side = hydraulic diameter)")
+    print(f"beads: {fill['n']}, radius {fill['rmin']*1e3:.3f}-{fill['rmax']*1e3:.3f} mm, mean diameter d = {d*1e3:.4f} mm, "
+          f"density {RHO_P:g} kg/m^3, E = 2e6 Pa, e = 0.5, mu = 0.5")
+    print(f"settled fill (t = {fill['t']:.3f} s, kinetic energy {fill['ke']:.3g} J): mass {fill['mass']:.4f} kg, "
+          f"fill height H = {fill['h']*1e3:.1f} mm (column tops {fill['top_min']*1e3:.1f}-{fill['top_max']*1e3:.1f} mm) "
+          f"= {fill['h']/L:.2f} L = {fill['h']/d:.1f} d")
+    print(f"bulk density rho_b = mass / (L^2 H) = {fill['rho_b']:.1f} kg/m^3 (solid fraction {fill['rho_b']/RHO_P:.3f}; "
+          f"interior solid fraction {fill['phi_in']:.3f})")
+    print(f"W: slope of {SINK}.removed_mass over [t_open + {T_TRANS} s, end]; H_end = fill height left at the "
+          "window's end (mass left / (rho_b L^2))")
+    print()
+    print(f"{'D0 (m)':>8} {'D0/d':>6} {'W (kg/s)':>10} {'+-':>8} {'mean rate':>10} {'window (s)':>13} "
+          f"{'removed (kg)':>12} {'H_end/D0':>8} {'first out (s)':>13} {'before open':>11}")
+    for r in runs:
+        print(f"{r['d0']:8.4f} {r['d0']/d:6.2f} {r['W']:10.4f} {r['err']:8.4f} {r['rate']:10.4f} "
+              f"{r['w0']:6.3f}-{r['w1']:5.3f} {r['removed']:12.4f} {r['h_end']/r['d0']:8.2f} {r['first']:13.4f} "
+              f"{r['before']:11.3g}")
+    print()
+    ff = fit_free(d0, w, d)
+    print(f"free-exponent fit W = C' (D0 - k d)^a: a = {ff['a']:.3f} +- {ff['se_a']:.3f}, k = {ff['k']:.3f} +- {ff['se_k']:.3f}, "
+          f"C' = {ff['cp']:.4g} kg s^-1 m^-a, C = C' / (rho_b sqrt(g)) = {ff['cp']/(fill['rho_b']*math.sqrt(G)):.4g} m^(a-5/2); "
+          f"rms residual {100*ff['rms']:.2f} % in W")
+    prof = []
+    for k in (0.0, 1.0, 1.5, 2.0):
+        x = np.log(d0 - k * d)
+        a_k, lc_k = np.polyfit(x, np.log(w), 1)
+        prof.append(f"k = {k:g}: a = {a_k:.2f}")
+    print("  a and k are strongly correlated over this range of D0; best a at fixed k: " + ", ".join(prof))
+    if len(w) >= 5:
+        f4 = fit_free(d0[:-1], w[:-1], d)
+        print(f"  without the largest orifice (L/D0 = {L/d0[-1]:.2f}): a = {f4['a']:.3f} +- {f4['se_a']:.3f}, "
+              f"k = {f4['k']:.3f}")
+    bf = fit_beverloo(d0, w, d, fill["rho_b"])
+    ca = bf["C"] / (2 / math.sqrt(math.pi)) ** 2.5
+    print(f"Beverloo fit (a = 5/2): C = {bf['C']:.4f}, k = {bf['k']:.3f} (D0 = side); largest residual of W^(2/5) "
+          f"{100*bf['rel']:.2f} %")
+    print(f"  as a circle of the same area (D_A = 2 D0 / sqrt(pi)): C = {ca:.4f}, k = {bf['k']*2/math.sqrt(math.pi):.3f}"
+          "  (Beverloo et al. 1961: C = 0.58, k ~ 1.5 for circular orifices)")
+
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.6))
+    xs = np.linspace(0, d0.max() * 1.05, 100)
+    ax[0].plot(d0 * 1e3, w ** 0.4, "o", label="simulation")
+    ax[0].plot(xs * 1e3, np.clip(bf["s"] * xs + bf["b"], 0, None), "-",
+               label=f"Beverloo, a = 5/2: C = {bf['C']:.3f}, k = {bf['k']:.2f}")
+    ax[0].set_xlabel("orifice side D0 (mm)")
+    ax[0].set_ylabel("W^(2/5) (kg/s)^(2/5)")
+    ax[0].set_xlim(0, None)
+    ax[0].set_ylim(0, None)
+    ax[0].legend(fontsize=8)
+    ax[0].set_title("W^(2/5) against D0: straight for a = 5/2")
+    u = d0 - ff["k"] * d
+    us = np.linspace(u.min() * 0.9, u.max() * 1.1, 50)
+    ax[1].loglog(u * 1e3, w, "o", label="simulation")
+    ax[1].loglog(us * 1e3, ff["cp"] * us ** ff["a"], "-",
+                 label=f"fit: a = {ff['a']:.2f} +- {ff['se_a']:.2f}, k = {ff['k']:.2f}")
+    ax[1].loglog(us * 1e3, ff["cp"] * u[-1] ** ff["a"] * (us / u[-1]) ** 2.5, ":", color="gray", label="slope 5/2")
+    ax[1].set_xlabel("D0 - k d (mm)")
+    ax[1].set_ylabel("W (kg/s)")
+    ax[1].legend(fontsize=8)
+    ax[1].set_title("free exponent W = C' (D0 - k d)^a")
+    for r in runs:
+        line, = ax[2].plot(r["t"] - r["t_open"], r["m"], label=f"D0 = {r['d0']*1e3:.1f} mm")
+        tt = np.array([r["w0"], r["w1"]])
+        m0 = r["m"][np.searchsorted(r["t"], r["w0"])]
+        ax[2].plot(tt - r["t_open"], m0 + r["W"] * (tt - r["w0"]), "k--", lw=0.8)
+    ax[2].axvline(T_TRANS, color="gray", lw=0.8)
+    ax[2].set_xlabel("time after the lid opens (s)")
+    ax[2].set_ylabel(f"mass in the sink (kg)")
+    ax[2].legend(fontsize=8)
+    ax[2].set_title("sink mass; dashed: fitted W over the window")
+    fig.tight_layout()
+    fig.savefig(a.png, dpi=110)
+
+
+if __name__ == "__main__":
+    main()

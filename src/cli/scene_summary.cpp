@@ -35,19 +35,31 @@ TimeStepAdvice time_step_advice(const Scene& scene) {
       stiffest_barrier = b.young[e];
       stiffest_nu = b.poisson[e];
     }
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    const Material& m = scene.model.materials[static_cast<std::size_t>(p.material[i])];
-    a.rayleigh = std::min(a.rayleigh, rayleigh_time(p.radius[i], m.density, m.young, m.poisson));
+  // One sphere of radius r (m), mass (kg) and material m: the smallest Rayleigh and contact times.
+  bool any = false;
+  const auto take = [&](double r, double mass, const Material& m) {
+    any = true;
+    a.rayleigh = std::min(a.rayleigh, rayleigh_time(r, m.density, m.young, m.poisson));
     const double Epp = effective_modulus(m.young, m.poisson, m.young, m.poisson);
-    a.hertz_pp = std::min(a.hertz_pp, hertz_contact_time(0.5 * p.mass[i], Epp, 0.5 * p.radius[i], a.reference_speed));
+    a.hertz_pp = std::min(a.hertz_pp, hertz_contact_time(0.5 * mass, Epp, 0.5 * r, a.reference_speed));
     if (stiffest_barrier > 0.0) {
       // A rigid barrier (E = +inf) is the stiffest; E* is then the particle's E/(1 - nu^2).
       const double Epb = barrier_effective_modulus(m.young, m.poisson, stiffest_barrier, stiffest_nu);
-      hertz_pb = std::min(hertz_pb, hertz_contact_time(p.mass[i], Epb, p.radius[i], a.reference_speed));
+      hertz_pb = std::min(hertz_pb, hertz_contact_time(mass, Epb, r, a.reference_speed));
     }
+  };
+  for (std::size_t i = 0; i < p.size(); ++i)
+    take(p.radius[i], p.mass[i], scene.model.materials[static_cast<std::size_t>(p.material[i])]);
+  // The inlets' smallest particles (a silo filled from empty has none at t = 0).
+  for (const InletSpec& in : scene.model.params.inlets) {
+    const int k = in.material.empty() ? 0 : scene.model.material_index(in.material);
+    const double r = in.radius.smallest();
+    if (k < 0 || static_cast<std::size_t>(k) >= scene.model.materials.size() || !(r > 0.0)) continue;
+    const Material& m = scene.model.materials[static_cast<std::size_t>(k)];
+    take(r, sphere_mass(r, m.density), m);
   }
   a.hertz_pb = std::isfinite(hertz_pb) ? hertz_pb : 0.0;
-  if (p.size() == 0) {
+  if (!any) {
     a.rayleigh = a.hertz_pp = 0.0;
     return a;
   }

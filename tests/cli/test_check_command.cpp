@@ -111,3 +111,21 @@ TEST(CheckCommand, RunWarnsAboutParticlesItWillRemoveAndStarts) {
   EXPECT_EQ(run_mpdem("check scene.toml", d).status, 2);
   fs::remove_all(d);
 }
+
+// A scene filled from empty by an inlet gets a time step recommendation from the inlet's
+// particles (it printed "recommended dt <= 0 s" before).
+TEST(CheckCommand, InletOnlySceneRecommendsAStepFromTheInletParticles) {
+  const fs::path d = scene_dir("check_inlet", "x,y,z,radius\n");
+  write_text(d / "scene.toml",
+             "[time]\nduration = 0.1\ndt = 1e-5\n[[material]]\nname = \"beads\"\nyoung = 2e6\n"
+             "[[inlet]]\nregion = \"box\"\nmin = [0, 0, 0]\nmax = [0.05, 0.05, 0.05]\ncount_rate = 1000\n"
+             "radius = 0.0025\n");
+  const CommandResult r = run_mpdem("check scene.toml", d);
+  EXPECT_EQ(r.status, 0) << r.err;
+  const auto at = r.out.find("recommended dt <= ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const double dt = std::stod(r.out.substr(at + 18));
+  // 0.2 x the Rayleigh time of a 2.5 mm bead of E = 2e6 Pa (4.8e-4 s): 9.7e-5 s, or less.
+  EXPECT_GT(dt, 1e-6) << r.out;
+  EXPECT_LT(dt, 1e-4) << r.out;
+}

@@ -252,7 +252,7 @@ void Simulation::remove_marked(const std::vector<char>& keep) {
     if (keep[i]) continue;
     // The energy it takes along stays in the balance, which would otherwise drop (or rise) by it.
     std::array<double, kScanSums> e{};
-    scan_range(p, i, i + 1, scene_.model.params.fields, DomainParams{}, e);
+    scan_range(p, i, i + 1, scene_.model.params.fields, scene_.model.params.domain, e);  // potentials unwrapped
     record_.removed_energy += e[0] + e[1] + e[2] + e[3];
     if (output_) output_->removed(p.id[i], time_, p.x[i]);
   }

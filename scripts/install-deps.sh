@@ -9,6 +9,7 @@ pkgs=(
   libfmt-dev            # formatting
   libgtest-dev libgmock-dev   # unit and physics tests
   libbenchmark-dev      # micro-benchmarks
+  libopenmpi-dev openmpi-bin   # MPI domain decomposition (MPDEM_MPI, mpirun)
   clang-format clang-tidy libomp-dev   # scripts/lint.sh (Debian 12: version 14); omp.h for clang-tidy
   python3 python3-numpy python3-matplotlib python3-meshio   # plots; VTU read-back in tests
 )

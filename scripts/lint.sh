@@ -86,7 +86,7 @@ tidy_check() {
   command -v ninja >/dev/null 2>&1 && gen=(-G Ninja)
   [ -f "$LINT_BUILD/CMakeCache.txt" ] && gen=()
   mkdir -p "$LINT_BUILD"
-  if ! cmake -S "$ROOT" -B "$LINT_BUILD" "${gen[@]}" -DCMAKE_BUILD_TYPE=Release -DMPDEM_BUILD_BENCH=OFF \
+  if ! cmake -S "$ROOT" -B "$LINT_BUILD" "${gen[@]}" -DCMAKE_BUILD_TYPE=Release -DMPDEM_BUILD_BENCH=OFF -DMPDEM_MPI=ON \
     > "$LINT_BUILD/lint-configure.log" 2>&1; then
     cat "$LINT_BUILD/lint-configure.log" >&2
     echo "clang-tidy: configuring $LINT_BUILD failed" >&2

@@ -1,25 +1,42 @@
 #include <fmt/core.h>
 #include <omp.h>
 
+#include <algorithm>
+
 #include "check/scene_checks.hpp"
 #include "cli/commands.hpp"
 #include "cli/output_folder.hpp"
 #include "cli/run_paths.hpp"
 #include "cli/scene_summary.hpp"
+#include "io/input_error.hpp"
+#include "parallel/communicator.hpp"
 #include "sim/simulation.hpp"
 
 namespace mpdem::cli {
 
 int run_command(const RunArgs& args) {
   if (args.threads > 0) omp_set_num_threads(args.threads);
+  // On several ranks every rank loads and checks the whole scene and takes the same decisions;
+  // rank 0 alone speaks and prepares the output folder.
+  const Communicator& comm = Communicator::world();
+  const bool speaks = comm.rank() == 0;
   Scene scene = load_scene(args.scene);  // InputError propagates to main: exit 2, nothing written
-  warn_about_time_step(scene);
+  if (speaks) warn_about_time_step(scene);
+  if (!comm.serial() && !args.resume.empty())
+    throw InputError(
+        args.resume.string(), 0, "--resume",
+        fmt::format("resuming on {} ranks is not available yet (docs/parallel.md); resume on one rank", comm.size()));
   // A resumed run continues from the checkpoint's state, not the scene's initial one.
   if (args.resume.empty()) {
-    const std::size_t stopping = print_problems(check_scene(scene), true);
+    const auto problems = check_scene(scene);
+    const std::size_t stopping = speaks ? print_problems(problems, true)
+                                        : static_cast<std::size_t>(
+                                              std::count_if(problems.begin(), problems.end(),
+                                                            [](const SceneProblem& p) { return p.stops_run; }));
     if (stopping > 0) {
-      fmt::print(stderr, "error: the run would stop at its first step ({} problem{} above); nothing was run\n",
-                 stopping, stopping == 1 ? "" : "s");
+      if (speaks)
+        fmt::print(stderr, "error: the run would stop at its first step ({} problem{} above); nothing was run\n",
+                   stopping, stopping == 1 ? "" : "s");
       return 2;
     }
   }
@@ -27,10 +44,12 @@ int run_command(const RunArgs& args) {
   opt.output_dir = args.output;
   opt.progress = !args.quiet;
   // A resumed run continues in its own (non-empty) output folder.
-  if (args.resume.empty()) prepare_output_folder(output_dir_for(scene, opt), args.overwrite);
+  if (args.resume.empty() && speaks) prepare_output_folder(output_dir_for(scene, opt), args.overwrite);
+  comm.barrier();  // (a refused folder throws on rank 0 alone: main then stops every rank)
   Simulation sim(std::move(scene), opt);
   if (!args.resume.empty()) sim.resume_from(args.resume);
   const RunSummary s = sim.run();
+  if (!speaks) return 0;
   if (!args.quiet) {
     fmt::print(stderr, "{} steps, {} interaction evaluations, {} particles removed\n", s.steps, s.evaluations,
                s.removed);

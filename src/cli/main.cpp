@@ -10,6 +10,7 @@
 #include "cli/run_paths.hpp"
 #include "cli/tool_commands.hpp"
 #include "io/input_error.hpp"
+#include "parallel/communicator.hpp"
 #include "sim/run_error.hpp"
 
 namespace {
@@ -64,26 +65,43 @@ int dispatch(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  const mpdem::Communicator& comm = mpdem::Communicator::world();
+  if (!comm.serial() && !*run_cmd) {
+    if (comm.rank() == 0)
+      fmt::print(stderr, "error: only `mpdem run` runs on several ranks (mpirun -np {})\n", comm.size());
+    return 2;
+  }
+  // Several ranks: bad input is found by every rank alike (each reads the whole scene): rank 0
+  // reports it and every rank exits 2. Any other failure may be one rank's alone; it is reported
+  // with the rank and stops all ranks (MPI_Abort), so none waits forever for the others.
+  const auto fail = [&](int code, const std::string& text) {
+    if (comm.serial()) {
+      fmt::print(stderr, "\nerror: {}\n", text);
+      return code;
+    }
+    fmt::print(stderr, "\nerror (rank {} of {}): {}\n", comm.rank(), comm.size(), text);
+    std::fflush(stderr);
+    comm.abort(code);
+  };
   try {
     if (*run_cmd) return mpdem::cli::run_command(run);
     if (*check_cmd) return mpdem::cli::check_command(check_scene);
     if (*bench_cmd) return mpdem::cli::bench_command(bench);
     if (tool) return tool();
   } catch (const mpdem::InputError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+    if (comm.rank() == 0) fmt::print(stderr, "error: {}\n", e.what());
     return 2;
   } catch (const mpdem::Interrupted& e) {
+    if (comm.rank() != 0) return 128 + e.signal;  // every rank stops at the same step
     fmt::print(stderr, "\nstopped by signal {} at t = {:.9g} s (step {}).\n", e.signal, e.time, e.step);
     if (!e.checkpoint.empty())
       fmt::print(stderr, "checkpoint written to {}\nresume with: {}\n", e.checkpoint.string(),
                  mpdem::cli::resume_command(argc > 0 ? argv[0] : "mpdem", run, e.checkpoint));
     return 128 + e.signal;
   } catch (const mpdem::RunError& e) {
-    fmt::print(stderr, "\nerror: {}\n", e.what());
-    return 1;
+    return fail(1, e.what());
   } catch (const std::exception& e) {
-    fmt::print(stderr, "\nerror: {}\n", e.what());
-    return 1;
+    return fail(1, e.what());
   }
   return 0;
 }
@@ -94,6 +112,7 @@ int dispatch(int argc, char** argv) {
 // memory, a closed stderr); the exit status then still says "failed".
 int main(int argc, char** argv) {
   try {
+    const mpdem::MpiSession mpi(argc, argv);
     return dispatch(argc, argv);
   } catch (...) {
     std::fputs("error: unexpected failure\n", stderr);

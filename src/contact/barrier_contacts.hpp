@@ -29,6 +29,7 @@
 #include "physics/barrier_contact_detect.hpp"
 #include "contact/contact_table.hpp"
 #include "contact/barrier_contact_store.hpp"
+#include "parallel/attached_records.hpp"
 #include "sim/interactions.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "contact/particle_contacts.hpp"
@@ -55,6 +56,10 @@ class BarrierContacts {
   OverlapReport max_overlap(const Particles& p, const Barriers& b) const;
   void save(BinaryWriter& w) const;  // checkpoints: the committed history
   void restore(BinaryReader& r, std::size_t particles);
+  // The committed history keyed by particle id (barrier_contact_migration.cpp), for particles
+  // that change rank, and back onto the particles' current indices (replacing every record).
+  AttachedRecords export_records(const Particles& p) const;
+  void import_records(const Particles& p, const AttachedRecords& records);
   std::size_t memory_bytes() const { return store_.bytes(); }  // B, held by the contact records
 
  private:

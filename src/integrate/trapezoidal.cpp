@@ -186,7 +186,14 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::iterate(Particles& p, Barrier
   return update(p, req.dt, false);
 }
 
-void TrapezoidalIntegrator::test_convergence(Particles& p, const Sums& s, int k, StepReport& rep) {
+void TrapezoidalIntegrator::test_convergence(Particles& p, const Sums& local, int k, StepReport& rep) {
+  Sums s = local;
+  std::size_t free = free_, all_particles = p.size();
+  if (comm_ && !comm_->serial()) {
+    comm_->sum(s);
+    free = static_cast<std::size_t>(comm_->sum(static_cast<std::uint64_t>(free)));
+    all_particles = static_cast<std::size_t>(comm_->sum(static_cast<std::uint64_t>(all_particles)));
+  }
   const ToleranceParams& tol = params_.tolerance;
   const bool rotation = params_.analysis.rotation;
   const std::array<double, kFieldCount> tols{tol.position, tol.velocity, tol.rotation, tol.angular_velocity,
@@ -195,8 +202,8 @@ void TrapezoidalIntegrator::test_convergence(Particles& p, const Sums& s, int k,
                                                tol.angular_velocity_floor, tol.temperature_floor};
   const std::array<bool, kFieldCount> active{true, true, rotation, rotation, params_.analysis.thermal};
   // The mechanical fields' sums hold the free particles only; every temperature is iterated.
-  const double inv_free = free_ > 0 ? 1.0 / static_cast<double>(free_) : 0.0;
-  const double inv_all = p.size() > 0 ? 1.0 / static_cast<double>(p.size()) : 0.0;
+  const double inv_free = free > 0 ? 1.0 / static_cast<double>(free) : 0.0;
+  const double inv_all = all_particles > 0 ? 1.0 / static_cast<double>(all_particles) : 0.0;
   rep.iterations = k;
   bool all = true, cycle = k >= 3;
   double worst = -1.0;

@@ -12,6 +12,7 @@
 #include "integrate/step_report.hpp"
 #include "model/params.hpp"
 #include "model/scene.hpp"
+#include "parallel/communicator.hpp"
 #include "sim/interactions.hpp"
 
 namespace mpdem {
@@ -29,6 +30,9 @@ class TrapezoidalIntegrator {
   // evaluation stores contact history). When the iteration does not converge within max_iter,
   // the start state and its rates are restored and the report says converged = false.
   StepReport step(Particles& p, Barriers& b, Interactions& f, double t, double dt, int max_iter);
+  // A run over several ranks: the convergence norms are summed over all of them, so that every
+  // rank iterates as often and accepts (or rejects) the same steps.
+  void set_communicator(const Communicator* comm) { comm_ = comm; }
 
  private:
   // Per field: sums of |y_K - y_(K-1)|^2, |y_K - y(t)|^2, |y_K - y_(K-2)|^2 and |y_K|^2.
@@ -53,6 +57,7 @@ class TrapezoidalIntegrator {
   }
   const Model& model_;
   const Params& params_;
+  const Communicator* comm_ = nullptr;  // null: one rank
   // This step's: whether any particle is fixed (update() reads the flags only then), and how many
   // are free (the mechanical fields' norms are over those).
   bool any_fixed_ = false;

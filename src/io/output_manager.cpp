@@ -144,6 +144,12 @@ bool OutputManager::due(Series& s, double t, double dt, double end, bool force) 
   return true;
 }
 
+bool OutputManager::particles_due(double t, double dt, bool force) const {
+  const double end = model_.params.time.duration;
+  Series vtu = particles_vtu_, csv = particles_csv_;
+  return (particles_pvd_ && due(vtu, t, dt, end, force)) || (csv.every > 0.0 && due(csv, t, dt, end, force));
+}
+
 void OutputManager::snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force) {
   const double end = model_.params.time.duration;
   if (particles_pvd_ && due(particles_vtu_, t, dt, end, force)) {

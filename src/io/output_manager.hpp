@@ -46,6 +46,9 @@ class OutputManager {
   // half a step of it).
   void snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force);
   void global_log(const GlobalLogRow& row, const Particles& p, const InteractionStats& stats);
+  // Whether snapshots(t, dt, ..., force) would write a particle file (changes nothing): a run on
+  // several ranks gathers its particles only then.
+  bool particles_due(double t, double dt, bool force) const;
   void removed(std::int64_t id, double t, const Vec3& x);
   void flush();
   // Checkpoints: when each series is next due.

@@ -4,6 +4,7 @@
 // barrier displacement since the last build exceeds skin/2. Also the transposed pair index used
 // to gather pair forces deterministically.
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "neighbor/pair_blocks.hpp"
 #include "neighbor/periodic_images.hpp"
 #include "neighbor/verlet_list.hpp"
+#include "parallel/halo_exchange.hpp"
 #include "state/barriers.hpp"
 #include "state/particles.hpp"
 
@@ -24,17 +26,36 @@ class NeighborSearch {
   NeighborSearch(double skin, double extra_range, const DomainParams& domain = {})
       : skin_(skin), extra_(extra_range), images_(domain) {}
 
+  // A run over several ranks (docs/parallel.md): the ghosts are the halo of the neighbouring
+  // bricks (and the periodic images, through the same exchange) instead of PeriodicImages.
+  // Every build is then collective: all ranks rebuild together.
+  void decompose(const Communicator& comm, BrickGrid grid);
+  const HaloExchange* halo() const { return halo_.get(); }
+  // Sends the owned particles that left this rank's brick to their new owners (between steps,
+  // no ghosts held), with the records in `attached` whose anchor id leaves.
+  void migrate(Particles& p, std::span<AttachedRecords* const> attached) {
+    if (halo_) halo_->migrate(p, attached);
+  }
+
   // The particles changed in count (or lost their ghosts) since the build, or moved too far.
   bool needs_rebuild(const Particles& p, const Barriers& b) const;
-  bool stale(const Particles& p) const { return list_.owned() != p.size() || images_.size() != p.n_ghost; }
+  bool stale(const Particles& p) const {
+    return list_.owned() != p.size() || (halo_ ? halo_->size() : images_.size()) != p.n_ghost;
+  }
   // Builds the lists for the current positions, replacing p's ghosts by new ones.
   void rebuild(Particles& p, const Barriers& b);
   // Wraps the owned particles into the periodic domain (between steps only; then rebuild).
   void wrap(Particles& p) const { images_.wrap(p); }
   // Copies the owned particles' state onto their ghosts (every evaluation) ...
-  void refresh_ghosts(Particles& p) const { images_.refresh(p); }
+  void refresh_ghosts(Particles& p) const {
+    if (halo_) halo_->refresh(p);
+    else images_.refresh(p);
+  }
   // ... and adds the ghosts' forces, torques and heat flows to their owners after it.
-  void fold_ghosts(Particles& p) const { images_.fold(p); }
+  void fold_ghosts(Particles& p) const {
+    if (halo_) halo_->fold(p);
+    else images_.fold(p);
+  }
   const PeriodicImages& images() const { return images_; }
   // Checkpoints: the build positions of both lists, so a resumed run rebuilds at the same steps
   // (and with the same ghosts).
@@ -66,6 +87,7 @@ class NeighborSearch {
   double skin_;
   double extra_;
   PeriodicImages images_;
+  std::unique_ptr<HaloExchange> halo_;  // several ranks: the ghosts' source instead of images_
   std::uint64_t rebuilds_ = 0;
   std::uint64_t generation_ = 0;
   std::vector<Vec3> barrier_offsets_build_;  // [M] m, barrier offsets at the last build

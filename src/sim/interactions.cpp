@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <type_traits>
 
 #include "core/deterministic_sum.hpp"
@@ -94,6 +95,10 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
       throw RunError(fmt::format("particle id {} has a non-finite position at t = {:.9g} s (the state diverged "
                                  "within the step); reduce time.dt (see `mpdem check` for a recommended step)",
                                  p.id[i], b.time));
+  if (comm_) {
+    rebuild_decomposed(p, b, reorder);
+    return;
+  }
   ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
   p.drop_ghosts();
   // Between steps the particles are wrapped into a periodic domain (never within a step: the
@@ -116,7 +121,8 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
 void Interactions::prepare_step(Particles& p, const Barriers& b, double dt) {
   ScopedTimer timer(times_.search);
   predicted_displacement_ = -1.0;
-  if (policy_.drift_known && dt > 0.0 && !stale(p, b)) {
+  // On several ranks every decision is taken over all of them (the rebuild is collective).
+  if (policy_.drift_known && dt > 0.0 && !any_rank(stale(p, b))) {
     // Every particle's displacement since the build at the step's evaluation within `limit`
     // leaves the barriers their allowance (checked again at that evaluation).
     const double limit = 0.5 * search_->skin() - barrier_reach(b, dt);  // m
@@ -125,15 +131,15 @@ void Interactions::prepare_step(Particles& p, const Barriers& b, double dt) {
     // The last step's final pass checked these very drifts (record_next_drift) when it assumed
     // this step's length and no more room than there is now; otherwise one pass here.
     const bool checked = known.valid && known.dt == dt && known.n == p.size() && known.limit <= limit;
-    if (limit > 0.0 && (checked ? known.within : drift_within(p, dt, limit, true))) {
+    if (all_ranks(limit > 0.0 && (checked ? known.within : drift_within(p, dt, limit, true)))) {
       predicted_displacement_ = limit;
       return;
     }
     rebuild(p, b, true);
-    if (limit > 0.0 && drift_within(p, dt, limit, false)) predicted_displacement_ = limit;
+    if (all_ranks(limit > 0.0 && drift_within(p, dt, limit, false))) predicted_displacement_ = limit;
     return;
   }
-  if (rebuild_due(p, b, dt)) rebuild(p, b, true);
+  if (any_rank(rebuild_due(p, b, dt))) rebuild(p, b, true);
 }
 
 Interactions::DriftCheck Interactions::next_drift_check(const Particles& p, const Barriers& b, double dt) const {
@@ -148,7 +154,8 @@ void Interactions::record_next_drift(const DriftCheck& c, const Particles& p, st
 }
 
 bool Interactions::stale(const Particles& p, const Barriers& b) const {
-  return p.size() == 0 || search_->stale(p) || search_->barrier_candidates().num_elements() != b.size();
+  // A rank may hold no particle for a while: that alone does not make its lists stale.
+  return (p.size() == 0 && !comm_) || search_->stale(p) || search_->barrier_candidates().num_elements() != b.size();
 }
 
 double Interactions::barrier_reach(const Barriers& b, double dt) const {
@@ -195,6 +202,17 @@ void Interactions::force_rebuild(Particles& p, const Barriers& b, bool reorder) 
 
 void Interactions::remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep) {
   next_drift_.valid = false;
+  if (comm_) {
+    // Collective (the lists are rebuilt on every rank); the ghosts' sources are remote: by ids.
+    std::vector<PairHistory> kept = pp_->export_history(p, *search_);
+    p.drop_ghosts();
+    p.compact(keep);
+    pb_->compact(keep);
+    search_->rebuild(p, b);
+    pp_->import_history(p, *search_, std::move(kept));
+    stats_.rebuilds = search_->rebuilds();
+    return;
+  }
   ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
   p.drop_ghosts();
   std::vector<std::uint32_t> old_index;  // old index of each particle kept
@@ -209,6 +227,7 @@ void Interactions::remove_particles(Particles& p, const Barriers& b, const std::
 
 void Interactions::add_particles(Particles& p, const Barriers& b, Particles fresh) {
   next_drift_.valid = false;
+  if (comm_) throw std::logic_error("inlets on several ranks are not available yet");
   ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
   p.drop_ghosts();
   const std::size_t old_n = p.size();
@@ -251,7 +270,7 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     const bool due = known >= 0.0 && !stale(p, b)
                          ? b.size() > 0 && search_->barrier_candidates().needs_rebuild(b, known)
                          : search_->needs_rebuild(p, b);
-    if (due) {
+    if (any_rank(due)) {
       rebuild(p, b, false);
       ++mid_step_rebuilds_;
     }
@@ -273,6 +292,7 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   {
     ScopedTimer timer(times_.barriers);
     pb = pb_->evaluate(p, b, *search_, req);
+    if (comm_) reduce_barrier_loads(b);
   }
   if (heat_) {
     ScopedTimer timer(times_.other);

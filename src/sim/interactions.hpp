@@ -66,6 +66,8 @@ struct PhaseTimes {
 };
 
 struct OverlapReport;
+class BrickGrid;
+class Communicator;
 class NeighborSearch;
 class ParticleContacts;
 class BarrierContacts;
@@ -109,6 +111,18 @@ class Interactions {
   // Rebuilds now (optionally reordering) - for tests of rebuild invariance.
   void force_rebuild(Particles& p, const Barriers& b, bool reorder);
 
+  // A run over the ranks of `comm` (interactions_decomposed.cpp, docs/parallel.md): p holds this
+  // rank's particles (those in its brick of `grid`); ghosts come from the neighbouring bricks,
+  // rebuilds are collective, particles migrate at the reordering rebuilds with their history,
+  // and every decision (rebuild, stale lists) is taken over all ranks.
+  void decompose(const Communicator& comm, const BrickGrid& grid);
+  bool decomposed() const { return comm_ != nullptr; }
+  // Statistics summed over the ranks (the barriers' drive power and work are already global:
+  // their loads are summed over the ranks at every evaluation). Collective.
+  InteractionStats global_stats() const;
+  // The deepest contact over all ranks (collective).
+  OverlapReport global_max_overlap(const Particles& p, const Barriers& b) const;
+
   const InteractionStats& stats() const { return stats_; }
   const PhaseTimes& times() const { return times_; }
   // Rebuilds evaluate() had to do (prepare_step's criterion should make them rare; not
@@ -139,6 +153,12 @@ class Interactions {
   // Whether velocity Verlet's drift dx = dt (v + dt/2 F/m) leaves every particle within limit (m)
   // of its position at the last build (since_build) or of its present position.
   bool drift_within(const Particles& p, double dt, double limit, bool since_build) const;
+  // Several ranks: v on every rank when some rank has it (any) or all have it (all); else v.
+  bool any_rank(bool v) const;
+  bool all_ranks(bool v) const { return !any_rank(!v); }
+  // The decomposed rebuild: history keyed by ids, migration at reordering rebuilds.
+  void rebuild_decomposed(Particles& p, const Barriers& b, bool reorder);
+  void reduce_barrier_loads(Barriers& b) const;  // element loads summed over the ranks
 
   const Model& model_;
   StepPolicy policy_;
@@ -158,6 +178,7 @@ class Interactions {
     double dt = 0.0;      // s
     std::size_t n = 0;    // particles
   } next_drift_;
+  const Communicator* comm_ = nullptr;  // several ranks (decompose()); null in a one-rank run
   std::unique_ptr<NeighborSearch> search_;
   std::unique_ptr<ParticleContacts> pp_;
   std::unique_ptr<BarrierContacts> pb_;

@@ -41,6 +41,8 @@ Simulation::Simulation(Scene&& scene, RunOptions options)
       interactions_(std::make_unique<Interactions>(scene_.model, scene_.particles, scene_.barriers,
                                                    integrator_policy(scene_.model.params))),
       trapezoidal_(scene_.model), verlet_(scene_.model), dt_(scene_.model.params.time.dt) {
+  if (const Communicator& comm = options_.comm ? *options_.comm : Communicator::world(); !comm.serial())
+    decompose(comm);
   if (!scene_.model.params.inlets.empty()) inlets_ = std::make_unique<Inlets>(scene_.model, scene_.particles);
   if (!scene_.model.params.sinks.empty()) sinks_ = std::make_unique<Sinks>(scene_.model);
 }
@@ -55,10 +57,11 @@ void Simulation::initialize() {
   ++evaluations_;
   initialized_ = true;
   const Params& prm = scene_.model.params;
-  const StateScan scan = scan_state(scene_.particles, prm.fields, prm.domain);
+  refresh_stats();
+  const StateScan scan = global_scan(scan_state(scene_.particles, prm.fields, prm.domain));
   check_energy(scan);  // the reference for the first step
   record_state(scan);  // the start of the run's drift
-  record_overlap(interactions_->max_overlap(scene_.particles, scene_.barriers));
+  record_overlap(interactions_->global_max_overlap(scene_.particles, scene_.barriers));
 }
 
 StepReport Simulation::advance(double dt) {
@@ -121,7 +124,7 @@ StepReport Simulation::advance_adaptive(double limit) {
 }
 
 double Simulation::energy_balance(const StateScan& s) const {
-  const InteractionStats& st = interactions_->stats();
+  const InteractionStats& st = stats();
   const double inserted = inlets_ ? inlets_->inserted_energy() : 0.0;  // J, what inlets brought in
   return -inserted + s.energy.kinetic + s.energy.rotational + s.energy.potential + s.electric + st.elastic_energy +
          st.damping_dissipated + st.friction_dissipated + record_.removed_energy - st.barrier_work - st.fixed_work;
@@ -129,7 +132,7 @@ double Simulation::energy_balance(const StateScan& s) const {
 
 void Simulation::record_state(const StateScan& s) {
   const double balance = energy_balance(s);
-  const double active = s.energy.kinetic + s.energy.rotational + interactions_->stats().elastic_energy;
+  const double active = s.energy.kinetic + s.energy.rotational + stats().elastic_energy;
   if (!record_.started) {
     record_.start_balance = balance;
     record_.start_active = active;
@@ -146,64 +149,16 @@ void Simulation::record_overlap(const OverlapReport& r) {
   }
 }
 
-void Simulation::check_energy(const StateScan& s) {
-  const Params& prm = scene_.model.params;
-  // The near field's potential is not in the balance, so its scenes cannot be checked this way.
-  if (!(prm.checks.energy_jump > 0.0) || prm.near_field.cutoff > 0.0) return;
-  const ParticleEnergy& e = s.energy;
-  const double balance = energy_balance(s);
-  const double active = e.kinetic + e.rotational + interactions_->stats().elastic_energy;
-  if (energy_checked_) {
-    const double rise = balance - last_balance_;
-    // Round-off of the balance is relative to its largest term.
-    const double noise = 1e-9 * (std::abs(e.potential) + active + std::abs(balance)) + 1e-15;
-    // A moving barrier (or fixed particle) feeds energy in: what it put in during the step (its
-    // drive power x dt) is part of the scale, so a particle at rest that a wall sets moving is not
-    // a jump.
-    const InteractionStats& st = interactions_->stats();
-    const double driven = (std::abs(st.drive_power) + std::abs(st.fixed_power)) * dt_;  // J
-    if (rise > prm.checks.energy_jump * (last_active_ + driven) + noise) {
-      // Name the fastest particles: an exploding contact throws them apart.
-      const Particles& p = scene_.particles;
-      std::vector<std::size_t> idx(p.size());
-      for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
-      const std::size_t k = std::min<std::size_t>(3, idx.size());
-      std::partial_sort(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(k), idx.end(),
-                        [&](std::size_t a, std::size_t b) { return norm2(p.v[a]) > norm2(p.v[b]); });
-      std::string ids;
-      for (std::size_t j = 0; j < k; ++j) ids += (j ? ", " : "") + std::to_string(p.id[idx[j]]);
-      throw RunError(fmt::format(
-          "energy jump at step {} (t = {:.9g} s): the energy balance rose by {:.4g} J in one step, more than "
-          "checks.energy_jump = {} x the kinetic + elastic energy {:.4g} J; fastest particles: ids {}. The step "
-          "is too large for the contacts; reduce time.dt (see `mpdem check` for a recommended step).",
-          steps_, time_, rise, prm.checks.energy_jump, last_active_, ids));
-    }
-  }
-  last_balance_ = balance;
-  last_active_ = active;
-  energy_checked_ = true;
-}
-
-void Simulation::check_overlap() {
-  const OverlapReport r = interactions_->max_overlap(scene_.particles, scene_.barriers);
-  record_overlap(r);
-  const double limit = scene_.model.params.checks.max_overlap;
-  if (!(limit > 0.0)) return;
-  if (!(r.ratio > limit)) return;
-  const std::string between = r.element >= 0
-                                  ? fmt::format("particle id {} and barrier element id {}", r.particle, r.element)
-                                  : fmt::format("particles id {} and id {}", r.particle, r.other);
-  throw RunError(fmt::format(
-      "overlap of {:.3g}% of the radius between {} at step {} (t = {:.9g} s), more than checks.max_overlap = {:.3g}%. "
-      "The contact is not resolved: reduce time.dt (see `mpdem check` for a recommended step) or raise young.",
-      100.0 * r.ratio, between, steps_, time_, 100.0 * limit));
-}
-
 void Simulation::check_state(const StepReport& rep) {
   Particles& p = scene_.particles;
   const Params& prm = scene_.model.params;
   // One pass (or none, when the integrator fused it into its own); culprits searched only if needed.
-  const StateScan scan = rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain);
+  refresh_stats();
+  const StateScan scan = global_scan(rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain));
+  if (scan.nonfinite > 0 && comm_)
+    throw RunError(fmt::format("non-finite state of particle id {} at step {} (t = {:.9g} s). The run is unstable; "
+                               "reduce time.dt.",
+                               first_nonfinite(), steps_, time_));
   if (scan.nonfinite > 0)
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (!finite_state(p, i))
@@ -224,38 +179,73 @@ void Simulation::remove_outside() {
   const DomainParams& d = scene_.model.params.domain;
   std::vector<char> keep(p.size(), 1);
   std::size_t gone = 0;
+  struct Exit {
+    std::int64_t id = -1;
+    Vec3 x;
+  } first;  // the first particle outside (on the lowest rank that has one)
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const Vec3& x = p.x[i];
-    if (inside_domain(d, x)) continue;
-    if (d.on_exit == ExitPolicy::Stop)
-      throw RunError(
-          fmt::format("particle id {} left the domain at step {} (t = {:.9g} s) at ({:.6g}, {:.6g}, {:.6g}); "
-                      "domain.on_exit = \"stop\"",
-                      p.id[i], steps_, time_, x.x, x.y, x.z));
+    if (inside_domain(d, p.x[i])) continue;
+    if (first.id < 0) first = {p.id[i], p.x[i]};
     keep[i] = 0;
     ++gone;
-    if (progress_) progress_->removed(p.id[i], time_, removed_ + gone);
   }
-  if (gone == 0) return;
-  removed_ += gone;
-  remove_marked(keep);
+  if (comm_)
+    for (const auto& b : comm_->all_gather(std::as_bytes(std::span(&first, 1)))) {
+      Exit e;
+      std::memcpy(&e, b.data(), sizeof e);
+      if (e.id >= 0) {
+        first = e;
+        break;
+      }
+    }
+  if (d.on_exit == ExitPolicy::Stop && first.id >= 0)
+    throw RunError(fmt::format("particle id {} left the domain at step {} (t = {:.9g} s) at ({:.6g}, {:.6g}, {:.6g}); "
+                               "domain.on_exit = \"stop\"",
+                               first.id, steps_, time_, first.x.x, first.x.y, first.x.z));
+  remove_marked(keep, true);
 }
 
 void Simulation::remove_in_sinks() {
   std::vector<char> keep(scene_.particles.size(), 1);
-  if (sinks_->mark(scene_.particles, keep) > 0) remove_marked(keep);  // stderr: the summary line
+  if (sinks_->mark(scene_.particles, keep) > 0) remove_marked(keep, false);  // stderr: the summary line
 }
 
-void Simulation::remove_marked(const std::vector<char>& keep) {
+void Simulation::remove_marked(const std::vector<char>& keep, bool exits) {
   Particles& p = scene_.particles;
+  // Every rank's removals, named on rank 0 (removed.csv, the progress line).
+  struct Removed {
+    std::int64_t id;
+    Vec3 x;
+  };
+  std::vector<Removed> gone;
+  double energy = 0.0;  // J, what the removed particles take along
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (keep[i]) continue;
     // The energy it takes along stays in the balance, which would otherwise drop (or rise) by it.
     std::array<double, kScanSums> e{};
     scan_range(p, i, i + 1, scene_.model.params.fields, scene_.model.params.domain, e);  // potentials unwrapped
-    record_.removed_energy += e[0] + e[1] + e[2] + e[3];
-    if (output_) output_->removed(p.id[i], time_, p.x[i]);
+    energy += e[0] + e[1] + e[2] + e[3];
+    gone.push_back({p.id[i], p.x[i]});
   }
+  std::uint64_t count = gone.size();
+  if (comm_) {
+    energy = comm_->sum(energy);
+    count = comm_->sum(count);
+    std::vector<Removed> all;
+    for (const auto& b : comm_->gather(std::as_bytes(std::span(gone)), 0)) {
+      const std::size_t at = all.size(), n = b.size() / sizeof(Removed);
+      all.resize(at + n);
+      if (n > 0) std::memcpy(all.data() + at, b.data(), b.size());
+    }
+    gone = std::move(all);  // on rank 0; empty elsewhere
+  }
+  if (count == 0) return;  // nobody removed anything (on any rank): no rebuild either
+  record_.removed_energy += energy;
+  for (std::size_t k = 0; k < gone.size(); ++k) {
+    if (output_) output_->removed(gone[k].id, time_, gone[k].x);
+    if (exits && progress_) progress_->removed(gone[k].id, time_, removed_ + k + 1);
+  }
+  if (exits) removed_ += count;
   interactions_->remove_particles(p, scene_.barriers, keep);
   // The removed particles' forces on the others are gone: re-evaluate the rates (no increment).
   interactions_->evaluate(p, scene_.barriers, EvalRequest{time_, 0.0, 1.0, true});
@@ -274,7 +264,23 @@ void Simulation::insert_from_inlets() {
 void Simulation::log_row(GlobalLogRow row) {
   if (inlets_) inlets_->log_values(row.open_system);
   if (sinks_) sinks_->log_values(row.time, row.open_system);
-  output_->global_log(row, scene_.particles, interactions_->stats());
+  if (!comm_) {
+    output_->global_log(row, scene_.particles, stats());
+    return;
+  }
+  const Particles all = gathered();  // collective
+  if (output_) output_->global_log(row, all, stats());
+}
+
+void Simulation::snapshots(double h, bool force) {
+  if (!comm_) {
+    output_->snapshots(time_, h, scene_.particles, scene_.barriers, force);
+    return;
+  }
+  const bool due = particles_due(h, force);
+  // The barriers are the same on every rank (their loads summed): rank 0 writes them as they are.
+  const Particles all = due ? gathered() : Particles{};
+  if (output_) output_->snapshots(time_, h, all, scene_.barriers, force);
 }
 
 std::string Simulation::open_system_summary() const {
@@ -285,7 +291,8 @@ std::string Simulation::open_system_summary() const {
 RunSummary Simulation::run() {
   const Params& prm = scene_.model.params;
   const std::filesystem::path dir = output_dir_for(scene_, options_);
-  if (options_.write_output) {
+  const bool out = options_.write_output;  // on every rank; rank 0 alone writes
+  if (out && root()) {
     output_ = std::make_unique<OutputManager>(scene_.model, dir, scene_.barriers,
                                               resumed_ ? std::optional<double>(time_) : std::nullopt);
     if (!resume_output_state_.empty()) {
@@ -296,14 +303,15 @@ RunSummary Simulation::run() {
   initialize();
   const double duration = prm.time.duration;
   const double dt = prm.time.dt;
-  if (output_ && !resumed_) {
-    output_->snapshots(time_, dt, scene_.particles, scene_.barriers, true);
+  if (out && !resumed_) {
+    snapshots(dt, true);
     log_row({0, time_, dt, nullptr, evaluations_, 0, removed_, {}});
   }
   install_stop_handlers();
   const auto every = static_cast<std::uint64_t>(prm.output.checkpoint_every);
   const std::uint64_t first_step = steps_;
-  progress_ = std::make_unique<Progress>(duration, prm.output.progress_every, options_.progress, time_, steps_);
+  progress_ = std::make_unique<Progress>(duration, prm.output.progress_every, options_.progress && root(), time_,
+                                         steps_);
   struct Release {  // no progress reports from steps taken outside run()
     std::unique_ptr<Progress>& p;
     ~Release() { p.reset(); }
@@ -314,21 +322,21 @@ RunSummary Simulation::run() {
     if (prm.time.adaptive && prm.time.integrator == Integrator::Trapezoidal) last = advance_adaptive(duration - time_);
     else last = advance(std::min(dt, duration - time_));  // the last step ends exactly at duration
     const double h = time_ - t0;
-    if (output_) {
-      output_->snapshots(time_, h, scene_.particles, scene_.barriers, false);
+    if (out) {
+      snapshots(h, false);
       if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) == 0)
         log_row({steps_, time_, h, &last, evaluations_, redone_, removed_, {}});
     }
-    const auto& st = interactions_->stats();
-    progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, scene_.particles.size());
+    const auto& st = stats();
+    progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count());
     if ((inlets_ || sinks_) && progress_->summary_due()) progress_->summary(open_system_summary());
     if (output_ && every > 0 && steps_ % every == 0) {
       write_checkpoint(dir / "checkpoint.bin");
       output_->flush();
     }
-    if (const int sig = stop_signal()) {
+    if (const int sig = comm_ ? stop_across_ranks() : stop_signal()) {
       std::filesystem::path ck;
-      if (output_) {
+      if (output_ && !comm_) {  // several ranks: no checkpoints yet (docs/parallel.md)
         ck = dir / "checkpoint.bin";
         write_checkpoint(ck);
         output_->flush();
@@ -336,11 +344,11 @@ RunSummary Simulation::run() {
       throw Interrupted(sig, time_, steps_, ck);
     }
   }
-  if (output_) {
-    output_->snapshots(time_, dt, scene_.particles, scene_.barriers, true);
+  if (out) {
+    snapshots(dt, true);
     if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) != 0)
       log_row({steps_, time_, dt_, &last, evaluations_, redone_, removed_, {}});
-    output_->flush();
+    if (output_) output_->flush();
   }
   if (inlets_ || sinks_) progress_->summary(open_system_summary());  // the final totals
   progress_->finish(time_, steps_);

@@ -16,6 +16,7 @@
 #include "sim/energy.hpp"
 #include "sim/run_record.hpp"
 #include "sim/state_scan.hpp"
+#include "parallel/communicator.hpp"
 #include "sim/interactions.hpp"
 
 namespace mpdem {
@@ -30,6 +31,8 @@ struct RunOptions {
   std::filesystem::path output_dir;  // empty: the scene's [output] dir, relative to the scene
   bool progress = true;              // progress line on stderr
   bool write_output = true;          // false: no files at all (tests)
+  // The ranks that share the run (docs/parallel.md); null: Communicator::world(), all of them.
+  const Communicator* comm = nullptr;
 };
 
 // Output folder of a run: options.output_dir, else the scene's [output] dir relative to the scene.
@@ -81,19 +84,41 @@ class Simulation {
   void remove_in_sinks();                       // [[sink]]: the particles in a sink, between steps
   void insert_from_inlets();                    // [[inlet]]: the particles due, between steps
   // Removes the particles whose keep[i] is 0: removed.csv, their energy into the balance, the
-  // others' contact history kept, the rates re-evaluated.
-  void remove_marked(const std::vector<char>& keep);
+  // others' contact history kept, the rates re-evaluated; exits: domain exits (counted, one
+  // progress line each), else a sink's. Collective on several ranks.
+  void remove_marked(const std::vector<char>& keep, bool exits);
   void log_row(GlobalLogRow row);           // a global log row, with the inlets' and sinks' columns
   std::string open_system_summary() const;  // the inlets' and sinks' line for stderr ("" = none)
   // J, mechanical energy + cumulative dissipation + what removed particles took along, from the
   // scan of the particles.
   double energy_balance(const StateScan& s) const;
 
+  // --- several ranks (simulation_decomposed.cpp) ---
+  void decompose(const Communicator& comm);  // keeps this rank's particles, splits the work
+  StateScan global_scan(const StateScan& s) const;
+  // The statistics of the last evaluation over all ranks (refresh_stats: collective).
+  const InteractionStats& stats() const;
+  void refresh_stats();
+  // Every rank's particles in id order on rank 0 (collective; empty on the other ranks).
+  Particles gathered();
+  // Whether rank 0 writes a particle snapshot after a step of h (s) now, on every rank, and the
+  // signal that stops the run (0: none) if any rank received one (both collective).
+  bool particles_due(double h, bool force) const;
+  int stop_across_ranks() const;
+  std::size_t particle_count() const { return comm_ ? global_count_ : scene_.particles.size(); }
+  void snapshots(double h, bool force);  // the snapshot outputs due after a step of h (s)
+  // Id of the first particle (by rank) with a non-finite state, on every rank; -1 if none.
+  std::int64_t first_nonfinite() const;
+  bool root() const { return comm_ == nullptr || comm_->rank() == 0; }
+
   // The scene as given, before any step: checkpoints carry it, a resume compares it. Declared
   // before scene_ so that it is taken from the constructor's argument before that is moved.
   SceneFingerprint fingerprint_;
   Scene scene_;
   RunOptions options_;
+  const Communicator* comm_ = nullptr;  // several ranks; null in a one-rank run
+  InteractionStats stats_now_;          // several ranks: stats() of the last refresh_stats()
+  std::size_t global_count_ = 0;        // several ranks: particles on all ranks at refresh_stats()
   std::unique_ptr<Interactions> interactions_;
   TrapezoidalIntegrator trapezoidal_;
   VerletIntegrator verlet_;

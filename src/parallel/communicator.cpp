@@ -1,0 +1,238 @@
+#include "parallel/communicator.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+#ifdef MPDEM_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace mpdem {
+
+namespace {
+// Combines every rank's copy of v element-wise in rank order: the same bits on every rank.
+template <class Op>
+void reduce_in_rank_order(const Communicator& c, std::span<double> v, Op op) {
+  if (c.serial() || v.empty()) return;
+  const auto all = c.all_gather(std::as_bytes(v));
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    double acc = 0.0;
+    for (std::size_t r = 0; r < all.size(); ++r) {
+      double x = 0.0;
+      std::memcpy(&x, all[r].data() + k * sizeof(double), sizeof(double));
+      acc = r == 0 ? x : op(acc, x);
+    }
+    v[k] = acc;
+  }
+}
+
+bool mpi_running() {
+#ifdef MPDEM_HAVE_MPI
+  int init = 0, fin = 0;
+  MPI_Initialized(&init);
+  MPI_Finalized(&fin);
+  return init != 0 && fin == 0;
+#else
+  return false;
+#endif
+}
+
+#ifdef MPDEM_HAVE_MPI
+int checked_count(std::size_t n) {
+  if (n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw std::length_error("an MPI message of more than 2^31 bytes");
+  return static_cast<int>(n);
+}
+#endif
+}  // namespace
+
+const Communicator& Communicator::single() {
+  static const Communicator one(0, 1);
+  return one;
+}
+
+const Communicator& Communicator::world() {
+  const Communicator& serial = single();
+#ifdef MPDEM_HAVE_MPI
+  if (mpi_running()) {
+    static const Communicator world = [] {
+      int rank = 0, size = 1;
+      MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+      MPI_Comm_size(MPI_COMM_WORLD, &size);
+      return Communicator(rank, size);
+    }();
+    return world;
+  }
+#endif
+  return serial;
+}
+
+void Communicator::sum(std::span<double> v) const {
+  reduce_in_rank_order(*this, v, [](double a, double b) { return a + b; });
+}
+void Communicator::max(std::span<double> v) const {
+  // NaN wins, so that a non-finite value on one rank is seen by all.
+  reduce_in_rank_order(*this, v, [](double a, double b) { return a != a || b != b ? a + b : std::max(a, b); });
+}
+void Communicator::min(std::span<double> v) const {
+  reduce_in_rank_order(*this, v, [](double a, double b) { return a != a || b != b ? a + b : std::min(a, b); });
+}
+double Communicator::sum(double v) const {
+  sum(std::span<double>(&v, 1));
+  return v;
+}
+double Communicator::max(double v) const {
+  max(std::span<double>(&v, 1));
+  return v;
+}
+double Communicator::min(double v) const {
+  min(std::span<double>(&v, 1));
+  return v;
+}
+std::uint64_t Communicator::sum(std::uint64_t v) const {
+  if (serial()) return v;
+  const auto all = all_gather(std::as_bytes(std::span<const std::uint64_t>(&v, 1)));
+  std::uint64_t s = 0;
+  for (const auto& b : all) {
+    std::uint64_t x = 0;
+    std::memcpy(&x, b.data(), sizeof x);
+    s += x;
+  }
+  return s;
+}
+bool Communicator::any(bool v) const { return sum(std::uint64_t{v ? 1u : 0u}) > 0; }
+
+std::vector<std::byte> Communicator::exchange(int to, std::span<const std::byte> out, int from, int tag) const {
+  const bool to_self = to == rank_ || to < 0, from_self = from == rank_ || from < 0;
+  if (serial() || (to_self && from_self)) {
+    // Without another rank, a message sent to this rank is the one received from it.
+    if ((to == rank_) != (from == rank_) || (serial() && (to > 0 || from > 0)))
+      throw std::logic_error("Communicator::exchange: a message to this rank must be received by it");
+    if (from < 0) return {};
+    return {out.begin(), out.end()};
+  }
+#ifdef MPDEM_HAVE_MPI
+  // Sizes first, then the bytes: a receiver cannot know a message's length in advance.
+  const int dest = to < 0 ? MPI_PROC_NULL : to, source = from < 0 ? MPI_PROC_NULL : from;
+  std::uint64_t n_out = out.size(), n_in = 0;
+  MPI_Sendrecv(&n_out, 1, MPI_UINT64_T, dest, tag, &n_in, 1, MPI_UINT64_T, source, tag, MPI_COMM_WORLD,
+               MPI_STATUS_IGNORE);
+  if (source == MPI_PROC_NULL) n_in = 0;
+  std::vector<std::byte> in(static_cast<std::size_t>(n_in));
+  MPI_Sendrecv(out.data(), checked_count(out.size()), MPI_BYTE, dest, tag + 1, in.data(), checked_count(in.size()),
+               MPI_BYTE, source, tag + 1, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return in;
+#else
+  (void)tag;
+  throw std::logic_error("Communicator::exchange: built without MPI");
+#endif
+}
+
+std::vector<std::vector<std::byte>> Communicator::all_gather(std::span<const std::byte> mine) const {
+  if (serial()) return {std::vector<std::byte>(mine.begin(), mine.end())};
+#ifdef MPDEM_HAVE_MPI
+  const int n = checked_count(mine.size());
+  std::vector<int> counts(static_cast<std::size_t>(size_)), displs(static_cast<std::size_t>(size_));
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  std::size_t total = 0;
+  for (int r = 0; r < size_; ++r) {
+    displs[static_cast<std::size_t>(r)] = checked_count(total);
+    total += static_cast<std::size_t>(counts[static_cast<std::size_t>(r)]);
+  }
+  std::vector<std::byte> all(total);
+  MPI_Allgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, MPI_COMM_WORLD);
+  std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(size_));
+  for (std::size_t r = 0; r < out.size(); ++r) {
+    const auto* b = all.data() + displs[r];
+    out[r].assign(b, b + counts[r]);
+  }
+  return out;
+#else
+  throw std::logic_error("Communicator::all_gather: built without MPI");
+#endif
+}
+
+std::vector<std::vector<std::byte>> Communicator::gather(std::span<const std::byte> mine, int root) const {
+  if (serial()) return {std::vector<std::byte>(mine.begin(), mine.end())};
+#ifdef MPDEM_HAVE_MPI
+  const int n = checked_count(mine.size());
+  const bool at_root = rank_ == root;
+  std::vector<int> counts(at_root ? static_cast<std::size_t>(size_) : 0), displs(counts.size());
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, root, MPI_COMM_WORLD);
+  std::size_t total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    displs[r] = checked_count(total);
+    total += static_cast<std::size_t>(counts[r]);
+  }
+  std::vector<std::byte> all(total);
+  MPI_Gatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, root, MPI_COMM_WORLD);
+  std::vector<std::vector<std::byte>> out(counts.size());
+  for (std::size_t r = 0; r < out.size(); ++r) {
+    const auto* b = all.data() + displs[r];
+    out[r].assign(b, b + counts[r]);
+  }
+  return out;
+#else
+  (void)root;
+  throw std::logic_error("Communicator::gather: built without MPI");
+#endif
+}
+
+void Communicator::broadcast(std::vector<std::byte>& bytes, int root) const {
+  if (serial()) return;
+#ifdef MPDEM_HAVE_MPI
+  std::uint64_t n = bytes.size();
+  MPI_Bcast(&n, 1, MPI_UINT64_T, root, MPI_COMM_WORLD);
+  bytes.resize(static_cast<std::size_t>(n));
+  MPI_Bcast(bytes.data(), checked_count(bytes.size()), MPI_BYTE, root, MPI_COMM_WORLD);
+#else
+  (void)root;
+#endif
+}
+
+void Communicator::barrier() const {
+#ifdef MPDEM_HAVE_MPI
+  if (!serial()) MPI_Barrier(MPI_COMM_WORLD);
+#endif
+}
+
+void Communicator::abort(int code) const {
+#ifdef MPDEM_HAVE_MPI
+  if (!serial()) MPI_Abort(MPI_COMM_WORLD, code);
+#endif
+  std::exit(code);
+}
+
+MpiSession::MpiSession([[maybe_unused]] int& argc, [[maybe_unused]] char**& argv) {
+#ifdef MPDEM_HAVE_MPI
+  if (!launched_by_mpi()) return;
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+#endif
+}
+
+bool MpiSession::launched_by_mpi() {
+  // Open MPI's mpirun, PMIx (Slurm's srun --mpi=pmix) and PMI-1/2 launchers set these.
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+    if (std::getenv(v) != nullptr) return true;
+  return false;
+}
+
+MpiSession::~MpiSession() {
+#ifdef MPDEM_HAVE_MPI
+  if (mpi_running()) MPI_Finalize();
+#endif
+}
+
+bool MpiSession::built_with_mpi() {
+#ifdef MPDEM_HAVE_MPI
+  return true;
+#else
+  return false;
+#endif
+}
+
+}  // namespace mpdem

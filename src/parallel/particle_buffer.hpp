@@ -1,0 +1,62 @@
+#pragma once
+// Particles as bytes, for messages between ranks (halo ghosts and migration): every array of
+// Particles::for_each_array, array by array, so that an array added there travels too. Native
+// byte order: the ranks of one run share a machine kind.
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <stdexcept>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+#include "core/vec3.hpp"
+#include "state/particles.hpp"
+
+namespace mpdem {
+
+// Appends particles idx of p to out: a count, then each array's values; x shifted by `shift` (m).
+inline void pack_particles(Particles& p, std::span<const std::uint32_t> idx, const Vec3& shift,
+                           std::vector<std::byte>& out) {
+  const std::uint64_t n = idx.size();
+  const std::size_t at = out.size();
+  out.resize(at + sizeof n);
+  std::memcpy(out.data() + at, &n, sizeof n);
+  p.for_each_array([&](const char* name, auto& a) {
+    using T = typename std::decay_t<decltype(a)>::value_type;
+    const std::size_t base = out.size();
+    out.resize(base + idx.size() * sizeof(T));
+    for (std::size_t k = 0; k < idx.size(); ++k) {
+      T value = a[idx[k]];
+      if constexpr (std::is_same_v<T, Vec3>)
+        if (std::string_view(name) == "x") value += shift;
+      std::memcpy(out.data() + base + k * sizeof(T), &value, sizeof(T));
+    }
+  });
+}
+
+// Reads one block written by pack_particles from bytes at `pos` (advanced past it) into every
+// array of p: appended, or overwriting [at, at + n) when `at` is given (a ghost refresh); returns
+// how many. Throws on a truncated message or a range past the arrays' end.
+inline std::size_t unpack_particles(Particles& p, std::span<const std::byte> bytes, std::size_t& pos,
+                                    std::size_t at = static_cast<std::size_t>(-1)) {
+  std::uint64_t n = 0;
+  if (bytes.size() - pos < sizeof n) throw std::runtime_error("truncated particle message");
+  std::memcpy(&n, bytes.data() + pos, sizeof n);
+  pos += sizeof n;
+  const bool append = at == static_cast<std::size_t>(-1);
+  if (!append && (at > p.size_with_ghosts() || p.size_with_ghosts() - at < n))
+    throw std::runtime_error("particle message longer than the ghosts it refreshes");
+  p.for_each_array([&](const char*, auto& a) {
+    using T = typename std::decay_t<decltype(a)>::value_type;
+    if ((bytes.size() - pos) / sizeof(T) < n) throw std::runtime_error("truncated particle message");
+    const std::size_t base = append ? a.size() : at;
+    if (append) a.resize(base + static_cast<std::size_t>(n));
+    for (std::size_t k = 0; k < n; ++k) std::memcpy(&a[base + k], bytes.data() + pos + k * sizeof(T), sizeof(T));
+    pos += static_cast<std::size_t>(n) * sizeof(T);
+  });
+  return static_cast<std::size_t>(n);
+}
+
+}  // namespace mpdem

@@ -1,0 +1,107 @@
+// Interactions over several ranks (docs/parallel.md): the decomposition's set-up, the collective
+// decisions, the rebuild that migrates particles with their contact history keyed by ids, and
+// the reductions of the barrier loads, statistics and deepest overlap.
+#include <cstring>
+#include <iterator>
+#include <vector>
+
+#include "contact/barrier_contacts.hpp"
+#include "contact/particle_contacts.hpp"
+#include "neighbor/neighbor_search.hpp"
+#include "parallel/brick_grid.hpp"
+#include "parallel/communicator.hpp"
+#include "sim/interactions.hpp"
+
+namespace mpdem {
+
+void Interactions::decompose(const Communicator& comm, const BrickGrid& grid) {
+  comm_ = &comm;
+  search_->decompose(comm, grid);
+}
+
+bool Interactions::any_rank(bool v) const { return comm_ ? comm_->any(v) : v; }
+
+void Interactions::rebuild_decomposed(Particles& p, const Barriers& b, bool reorder) {
+  // A pair's history lives on the rank of its lower-id particle, which this rank owns: it is
+  // anchored there and travels with it. Barrier contacts travel with their particle.
+  std::vector<PairHistory> pairs = pp_->export_history(p, *search_);
+  p.drop_ghosts();
+  if (reorder) {
+    AttachedRecords pair_records = AttachedRecords::of<PairHistory>();
+    for (const PairHistory& h : pairs) pair_records.push(std::min(h.id_first, h.id_second), h);
+    AttachedRecords barrier_records = pb_->export_records(p);
+    search_->wrap(p);
+    AttachedRecords* const attached[] = {&pair_records, &barrier_records};
+    search_->migrate(p, attached);
+    if (p.size() > 1) p.permute(search_->spatial_order(p));
+    search_->rebuild(p, b);
+    pairs.clear();
+    for (std::size_t r = 0; r < pair_records.size(); ++r) pairs.push_back(pair_records.get<PairHistory>(r));
+    pb_->import_records(p, barrier_records);
+  } else {
+    // Within a step: the owned particles keep their indices (and barrier records); the ghosts change.
+    search_->rebuild(p, b);
+  }
+  pp_->import_history(p, *search_, std::move(pairs));
+  stats_.rebuilds = search_->rebuilds();
+}
+
+void Interactions::reduce_barrier_loads(Barriers& b) const {
+  // One message: forces, moments, pressures.
+  const std::size_t m = b.size();
+  std::vector<double> v(7 * m);
+  for (std::size_t e = 0; e < m; ++e) {
+    for (int c = 0; c < 3; ++c) {
+      v[7 * e + static_cast<std::size_t>(c)] = b.force[e][c];
+      v[7 * e + 3 + static_cast<std::size_t>(c)] = b.moment[e][c];
+    }
+    v[7 * e + 6] = b.pressure[e];
+  }
+  comm_->sum(v);
+  for (std::size_t e = 0; e < m; ++e) {
+    for (int c = 0; c < 3; ++c) {
+      b.force[e][c] = v[7 * e + static_cast<std::size_t>(c)];
+      b.moment[e][c] = v[7 * e + 3 + static_cast<std::size_t>(c)];
+    }
+    b.pressure[e] = v[7 * e + 6];
+  }
+}
+
+InteractionStats Interactions::global_stats() const {
+  if (!comm_) return stats_;
+  // Summed over the ranks. drive_power and barrier_work come from the summed loads: already the
+  // same on every rank.
+  static constexpr double InteractionStats::*kSummed[] = {
+      &InteractionStats::elastic_energy,      &InteractionStats::damping_dissipated,
+      &InteractionStats::friction_dissipated, &InteractionStats::damping_power,
+      &InteractionStats::rolling_power,       &InteractionStats::spring_energy,
+      &InteractionStats::fixed_work,          &InteractionStats::fixed_power,
+      &InteractionStats::near_field_energy,   &InteractionStats::heat_to_barriers,
+      &InteractionStats::heat_convected,      &InteractionStats::heat_radiated};
+  InteractionStats s = stats_;
+  std::vector<double> v{static_cast<double>(s.contacts_pp), static_cast<double>(s.contacts_pb)};
+  for (auto m : kSummed) v.push_back(s.*m);
+  comm_->sum(v);
+  s.contacts_pp = static_cast<std::size_t>(v[0]);
+  s.contacts_pb = static_cast<std::size_t>(v[1]);
+  for (std::size_t k = 0; k < std::size(kSummed); ++k) s.*kSummed[k] = v[2 + k];
+  return s;
+}
+
+OverlapReport Interactions::global_max_overlap(const Particles& p, const Barriers& b) const {
+  const OverlapReport mine = max_overlap(p, b);
+  if (!comm_) return mine;
+  static_assert(std::is_trivially_copyable_v<OverlapReport>);
+  OverlapReport best = mine;
+  bool first = true;
+  // The deepest; on a tie the lowest rank's, so that every rank names the same contact.
+  for (const auto& bytes : comm_->all_gather(std::as_bytes(std::span(&mine, 1)))) {
+    OverlapReport r;
+    std::memcpy(&r, bytes.data(), sizeof r);
+    if (first || r.ratio > best.ratio) best = r;
+    first = false;
+  }
+  return best;
+}
+
+}  // namespace mpdem

@@ -1,0 +1,68 @@
+// The health checks after every step (simulation.hpp): energy jumps and overlaps beyond the
+// scene's [checks] limits stop the run with the particles named.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "contact/particle_contacts.hpp"
+#include "sim/run_error.hpp"
+#include "sim/simulation.hpp"
+
+namespace mpdem {
+
+void Simulation::check_energy(const StateScan& s) {
+  const Params& prm = scene_.model.params;
+  // The near field's potential is not in the balance, so its scenes cannot be checked this way.
+  if (!(prm.checks.energy_jump > 0.0) || prm.near_field.cutoff > 0.0) return;
+  const ParticleEnergy& e = s.energy;
+  const double balance = energy_balance(s);
+  const double active = e.kinetic + e.rotational + stats().elastic_energy;
+  if (energy_checked_) {
+    const double rise = balance - last_balance_;
+    // Round-off of the balance is relative to its largest term.
+    const double noise = 1e-9 * (std::abs(e.potential) + active + std::abs(balance)) + 1e-15;
+    // A moving barrier (or fixed particle) feeds energy in: what it put in during the step (its
+    // drive power x dt) is part of the scale, so a particle at rest that a wall sets moving is not
+    // a jump.
+    const InteractionStats& st = stats();
+    const double driven = (std::abs(st.drive_power) + std::abs(st.fixed_power)) * dt_;  // J
+    if (rise > prm.checks.energy_jump * (last_active_ + driven) + noise) {
+      // Name the fastest particles: an exploding contact throws them apart.
+      const Particles& p = scene_.particles;
+      std::vector<std::size_t> idx(p.size());
+      for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
+      const std::size_t k = std::min<std::size_t>(3, idx.size());
+      std::partial_sort(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(k), idx.end(),
+                        [&](std::size_t a, std::size_t b) { return norm2(p.v[a]) > norm2(p.v[b]); });
+      std::string ids;
+      for (std::size_t j = 0; j < k; ++j) ids += (j ? ", " : "") + std::to_string(p.id[idx[j]]);
+      throw RunError(fmt::format(
+          "energy jump at step {} (t = {:.9g} s): the energy balance rose by {:.4g} J in one step, more than "
+          "checks.energy_jump = {} x the kinetic + elastic energy {:.4g} J; fastest particles: ids {}. The step "
+          "is too large for the contacts; reduce time.dt (see `mpdem check` for a recommended step).",
+          steps_, time_, rise, prm.checks.energy_jump, last_active_, ids));
+    }
+  }
+  last_balance_ = balance;
+  last_active_ = active;
+  energy_checked_ = true;
+}
+
+void Simulation::check_overlap() {
+  const OverlapReport r = interactions_->global_max_overlap(scene_.particles, scene_.barriers);
+  record_overlap(r);
+  const double limit = scene_.model.params.checks.max_overlap;
+  if (!(limit > 0.0)) return;
+  if (!(r.ratio > limit)) return;
+  const std::string between = r.element >= 0
+                                  ? fmt::format("particle id {} and barrier element id {}", r.particle, r.element)
+                                  : fmt::format("particles id {} and id {}", r.particle, r.other);
+  throw RunError(fmt::format(
+      "overlap of {:.3g}% of the radius between {} at step {} (t = {:.9g} s), more than checks.max_overlap = {:.3g}%. "
+      "The contact is not resolved: reduce time.dt (see `mpdem check` for a recommended step) or raise young.",
+      100.0 * r.ratio, between, steps_, time_, 100.0 * limit));
+}
+
+}  // namespace mpdem

@@ -1,0 +1,125 @@
+// Simulation over several ranks (docs/parallel.md): the decomposition of the scene, the global
+// scans and statistics, the particles gathered for output, the collective step controls.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <numeric>
+
+#include "io/input_error.hpp"
+#include "io/output_manager.hpp"
+#include "parallel/brick_grid.hpp"
+#include "parallel/particle_buffer.hpp"
+#include "sim/simulation.hpp"
+#include "sim/stop_signal.hpp"
+
+namespace mpdem {
+
+namespace {
+// What a decomposed run does not do yet, refused before step 1 with the key that asks for it.
+void refuse_unsupported(const Scene& scene, const Communicator& comm) {
+  const Params& prm = scene.model.params;
+  const std::string file = scene.file.string();
+  auto refuse = [&](std::string_view key, std::string_view what) {
+    throw InputError(
+        file, 0, std::string(key),
+        fmt::format("{} on {} ranks is not available yet (docs/parallel.md); run it on one rank", what, comm.size()));
+  };
+  if (!prm.inlets.empty()) refuse("inlet", "[[inlet]]");
+  if (!prm.sinks.empty()) refuse("sink", "[[sink]]");
+  if (prm.near_field.cutoff > 0.0) refuse("near_field.cutoff", "the near field");
+  if (prm.output.checkpoint_every > 0) refuse("output.checkpoint_every", "checkpointing");
+  if (prm.time.adaptive) refuse("time.adaptive", "adaptive time steps");
+}
+}  // namespace
+
+void Simulation::decompose(const Communicator& comm) {
+  refuse_unsupported(scene_, comm);
+  Particles& p = scene_.particles;
+  const DomainParams& d = scene_.model.params.domain;
+  // The bricks tile the domain; without one, the particles' bounding box (the outer bricks reach
+  // to infinity, so this only places the cuts). Every rank loaded the whole scene: the same box.
+  Vec3 lo = d.min, hi = d.max;
+  if (!d.bounded) {
+    lo = Vec3{1, 1, 1} * std::numeric_limits<double>::infinity();
+    hi = -lo;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (int c = 0; c < 3; ++c) {
+        lo[c] = std::min(lo[c], p.x[i][c]);
+        hi[c] = std::max(hi[c], p.x[i][c]);
+      }
+    if (p.size() == 0) lo = hi = Vec3{};
+  }
+  const BrickGrid grid(comm.size(), lo, hi, d.periodic);
+  std::vector<char> mine(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) mine[i] = grid.owner(p.x[i]) == comm.rank();
+  p.compact(mine);
+  comm_ = &comm;
+  interactions_->decompose(comm, grid);
+  trapezoidal_.set_communicator(&comm);
+}
+
+StateScan Simulation::global_scan(const StateScan& s) const {
+  if (!comm_) return s;
+  double v[] = {s.energy.kinetic,
+                s.energy.rotational,
+                s.energy.potential,
+                s.electric,
+                static_cast<double>(s.nonfinite),
+                static_cast<double>(s.outside)};
+  comm_->sum(v);
+  return {{v[0], v[1], v[2]}, v[3], static_cast<std::size_t>(v[4]), static_cast<std::size_t>(v[5])};
+}
+
+const InteractionStats& Simulation::stats() const { return comm_ ? stats_now_ : interactions_->stats(); }
+
+void Simulation::refresh_stats() {
+  if (!comm_) return;
+  stats_now_ = interactions_->global_stats();
+  global_count_ = static_cast<std::size_t>(comm_->sum(static_cast<std::uint64_t>(scene_.particles.size())));
+}
+
+Particles Simulation::gathered() {
+  Particles& p = scene_.particles;
+  std::vector<std::uint32_t> idx(p.size());
+  std::iota(idx.begin(), idx.end(), std::uint32_t{0});
+  std::vector<std::byte> mine;
+  pack_particles(p, idx, {}, mine);
+  Particles all;
+  for (const auto& bytes : comm_->gather(mine, 0)) {
+    std::size_t pos = 0;
+    unpack_particles(all, bytes, pos);
+  }
+  // In id order: the files do not depend on the rank count.
+  std::vector<std::uint32_t> order(all.size());
+  std::iota(order.begin(), order.end(), std::uint32_t{0});
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return all.id[a] < all.id[b]; });
+  all.permute(order);
+  return all;
+}
+
+bool Simulation::particles_due(double h, bool force) const {
+  std::vector<std::byte> due{
+      std::byte{output_ && output_->particles_due(time_, h, force) ? std::uint8_t{1} : std::uint8_t{0}}};
+  comm_->broadcast(due, 0);
+  return due.at(0) != std::byte{0};
+}
+
+int Simulation::stop_across_ranks() const { return static_cast<int>(comm_->max(static_cast<double>(stop_signal()))); }
+
+std::int64_t Simulation::first_nonfinite() const {
+  const Particles& p = scene_.particles;
+  std::int64_t id = -1;
+  for (std::size_t i = 0; i < p.size() && id < 0; ++i)
+    if (!finite_state(p, i)) id = p.id[i];
+  if (!comm_) return id;
+  for (const auto& b : comm_->all_gather(std::as_bytes(std::span(&id, 1)))) {
+    std::int64_t r = -1;
+    std::memcpy(&r, b.data(), sizeof r);
+    if (r >= 0) return r;
+  }
+  return -1;
+}
+
+}  // namespace mpdem

@@ -11,9 +11,10 @@ PY=/usr/bin/python3     # Debian's, with python3-numpy and python3-matplotlib
 
 SECONDS=0
 # Base: 86 spheres at random in a 0.6 d slab (L_x = 10.5 d, L_y = 10.91 d, the periods of scene.toml);
-# flow: 9 x 9 x 34 lattice sites = 2754 spheres (about 22 d deep once settled), started with
-# v_x = 0.7 m/s [1 - (1 - k/34)^1.5] in layer k, a guess of the steady profile.
-"$PY" make_particles.py --nx 10 --ny 12 --layers 34 --seed 1 --base random --v-surface 0.7 --out particles.csv
+# flow: 9 x 9 x 62 lattice sites = 5022 spheres (about 41 d deep once settled; top layer at
+# z = 72 mm, below the domain top at 100 mm), started with v_x = 1.6 m/s [1 - (1 - k/62)^1.5] in
+# layer k, a guess of the steady profile (Bagnold scaling of the 22 d run's profile).
+"$PY" make_particles.py --nx 10 --ny 12 --layers 62 --seed 1 --base random --v-surface 1.6 --out particles.csv
 "$MPDEM" check scene.toml
 nice -n 5 "$MPDEM" run scene.toml --overwrite --threads "$THREADS"
 echo "chute flow: wall time ${SECONDS} s"

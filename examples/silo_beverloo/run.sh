@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Silo discharge through a square orifice in a flat floor: Beverloo's law W = C rho_b sqrt(g) (D0 - k d)^(5/2).
 # Usage:  ./run.sh [path/to/mpdem]      (default: $MPDEM, else mpdem on PATH; THREADS overrides 1)
-# 1. fill: an [[inlet]] rains 20 000 beads into the closed silo (solid floor), which then settles;
+# 1. fill: an [[inlet]] rains beads into the closed silo (solid floor) until the bed reaches the top
+#    of its thin box at z = H_TOP (the inlet's shortfall stops it there), then the bed settles;
 # 2. one discharge run per orifice side D0, each seeded with the settled fill (last particle CSV
 #    snapshot): the floor is a plate with a D0 x D0 hole closed by a lid (active = [0, T_OPEN]),
-#    the beads leave through the hole into a [[sink]] 4 bead diameters below the floor;
-# 3. plot_silo.py: W from the sink's log columns, the Beverloo fit, results.txt, silo_beverloo.png.
+#    the beads leave through the hole into a [[sink]] 4 bead diameters below the floor, and the
+#    same inlet keeps feeding the top at more than the largest discharge rate, so the head stays
+#    at H_TOP (what does not fit is the inlet's shortfall);
+# 3. plot_silo.py: W from the sink's log columns, the Beverloo fits, results.txt, silo_beverloo.png.
 set -euo pipefail
 cd "$(dirname "$0")"
 MPDEM=${1:-${MPDEM:-mpdem}}
@@ -13,14 +16,17 @@ THREADS=${THREADS:-1}   # one thread: on a busy 2-core machine OpenMP threads wa
 PY=/usr/bin/python3     # with numpy and matplotlib
 T0=$(date +%s)
 
-L=0.14                  # m, silo width (square, x and y in [-L/2, L/2]); walls 0.25 m high
+L=0.20                  # m, silo width (square, x and y in [-L/2, L/2]); walls 0.25 m high
 DT=1.7e-5               # s
-NFILL=${NFILL:-20000}             # beads, radius uniform in [2.25, 2.75] mm (mean diameter d = 5 mm)
-T_FEED=${T_FEED:-0.5}              # s, the inlet inserts NFILL beads in [0, T_FEED] ...
-T_FILL=${T_FILL:-0.8}              # s, ... and the bed settles until T_FILL
+H_BOT=0.085            # m, the inlet's box: z in [H_BOT, H_TOP] over the whole cross-section
+H_TOP=0.100             # m, (3 mm from the walls); the head of the bed = H_TOP = 20 d
+FILL_RATE=${FILL_RATE:-60000}  # 1/s, fill: beads (radius uniform in [2.25, 2.75] mm, d = 5 mm) at
+T_FEED=${T_FEED:-0.75}         # s, ... this rate until T_FEED (the bed reaches H_TOP before:
+T_FILL=${T_FILL:-0.95}         # s, ... the rest is shortfall), then it settles until T_FILL
+FEED_RATE=${FEED_RATE:-40000}  # 1/s, discharges: the inlet keeps feeding (largest discharge ~21 000/s)
 T_OPEN=0.03             # s, discharge runs: the lid (re)settles the seeded bed, then opens at T_OPEN
-T_DIS=${T_DIS:-0.6}               # s of discharge after T_OPEN
-DS=${DS:-"0.0275 0.035 0.0425 0.05 0.0575"}   # m, orifice sides D0 = 5.5, 7, 8.5, 10, 11.5 d
+T_DIS=${T_DIS:-0.5}               # s of discharge after T_OPEN
+DS=${DS:-"0.025 0.0375 0.0525 0.07"}   # m, orifice sides D0 = 5, 7.5, 10.5, 14 d
 
 calc() { "$PY" -c "from math import *; print(repr($1))"; }
 scene() {  # scene FILE WHAT DURATION FLOOR PARTICLES INLET OUTDIR CSVEVERY
@@ -51,25 +57,25 @@ H=$(calc "$L/2-0.003")
 INLET="[[inlet]]
 name = \"feed\"
 region = \"box\"
-min = [-$H, -$H, 0.125]
-max = [$H, $H, 0.175]
-count_rate = $(calc "$NFILL/$T_FEED")   # 1/s
+min = [-$H, -$H, $H_BOT]
+max = [$H, $H, $H_TOP]
+count_rate = $FILL_RATE   # 1/s; once the bed reaches the box, what does not fit is shortfall
 start = 0.0
 end = $T_FEED
 radius = { distribution = \"uniform\", min = 0.00225, max = 0.00275 }
 material = \"beads\"
-velocity = [0.0, 0.0, -0.5]
+velocity = [0.0, 0.0, -1.0]
 seed = 1
 "
 FLOOR="[[barriers]]
 file = \"floor_solid.csv\"   # closed floor while filling
 material = \"beads\"
 "
-scene scene_fill.toml "Fill: the inlet rains $NFILL beads in; they settle on the closed floor." \
+scene scene_fill.toml "Fill: the inlet rains beads in up to z = $H_TOP m; they settle on the closed floor." \
       "$T_FILL" "$FLOOR" "" "$INLET" output/fill "$T_FILL"
 SECONDS=0
 nice -n 5 "$MPDEM" run scene_fill.toml --overwrite --threads "$THREADS"
-echo "fill: $NFILL beads in $T_FEED s, settled until $T_FILL s, wall time ${SECONDS} s" | tee -a output/times.txt
+echo "fill: inlet until $T_FEED s, settled until $T_FILL s, wall time ${SECONDS} s" | tee -a output/times.txt
 "$PY" restart.py output/fill restart.csv
 
 # 2. Discharge through each orifice.
@@ -90,13 +96,25 @@ active = [0.0, $T_OPEN]
 file = \"restart.csv\"       # the settled fill
 material = \"beads\"
 "
-  scene "scene_$NAME.toml" "Discharge through a $D m square orifice, from the settled fill." \
-        "$(calc "$T_OPEN+$T_DIS")" "$FLOOR" "$PARTS" "" "output/$NAME" 0
+  FEED="[[inlet]]
+name = \"feed\"
+region = \"box\"
+min = [-$H, -$H, $H_BOT]
+max = [$H, $H, $H_TOP]
+count_rate = $FEED_RATE   # 1/s, more than the discharge: the head stays at H_TOP (the rest is shortfall)
+start = 0.0
+radius = { distribution = \"uniform\", min = 0.00225, max = 0.00275 }
+material = \"beads\"
+velocity = [0.0, 0.0, -0.5]
+seed = 2
+"
+  scene "scene_$NAME.toml" "Discharge through a $D m square orifice, from the settled fill, fed at the top." \
+        "$(calc "$T_OPEN+$T_DIS")" "$FLOOR" "$PARTS" "$FEED" "output/$NAME" 0
   SECONDS=0
   nice -n 5 "$MPDEM" run "scene_$NAME.toml" --overwrite --threads "$THREADS"
   echo "D0 = $D m: $(calc "$T_OPEN+$T_DIS") s, wall time ${SECONDS} s" | tee -a output/times.txt
   echo "$NAME $D $T_OPEN output/$NAME" >> output/runs.txt
 done
 
-"$PY" plot_silo.py --width $L --fill output/fill output/runs.txt | tee results.txt
+"$PY" plot_silo.py --width $L --head $H_TOP --fill output/fill output/runs.txt | tee results.txt
 echo "run.sh: total wall time $(( $(date +%s) - T0 )) s" | tee -a output/times.txt

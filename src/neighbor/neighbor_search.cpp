@@ -59,12 +59,13 @@ void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Ba
   const std::size_t owned = p.size();
   std::vector<Vec3> x_all;  // m, build positions of the owned particles and their ghosts
   std::span<const Vec3> x = x_owned;
+  double rmax = 0.0;  // m, the largest owned radius (ghosts: images of owned particles, or halo copies)
+  if (halo_ || images_.active())
+    for (std::size_t i = 0; i < owned; ++i) rmax = std::max(rmax, p.radius[i]);
   if (halo_) {
     // The ghosts come with their current centres; the build positions of the owned ones may be
     // a checkpoint's, so the list is built over those and the ghosts' own.
     x_all.assign(x_owned.begin(), x_owned.end());
-    double rmax = 0.0;
-    for (std::size_t i = 0; i < owned; ++i) rmax = std::max(rmax, p.radius[i]);
     rmax = halo_->comm().max(rmax);  // a ghost may be larger than every owned particle
     halo_->build(p, periodic_image_width(rmax, extra_, skin_));
     x_all.insert(x_all.end(), p.x.begin() + static_cast<std::ptrdiff_t>(owned), p.x.end());
@@ -72,8 +73,6 @@ void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Ba
   } else if (images_.active()) {
     // x_owned may be p.x, which appending the ghosts reallocates: copied first.
     x_all.assign(x_owned.begin(), x_owned.end());
-    double rmax = 0.0;
-    for (std::size_t i = 0; i < owned; ++i) rmax = std::max(rmax, p.radius[i]);
     images_.select(x_all, periodic_image_width(rmax, extra_, skin_));
     images_.append(p);
     x_all.reserve(owned + images_.size());

@@ -19,6 +19,15 @@ constexpr int kHaloTag = 1000;       // + 8 per swap (exchange uses tag and tag 
 constexpr int kMigrationTag = 2000;  // + 4 per direction and axis
 
 double period(const BrickGrid& g, int c) { return g.box_upper()[c] - g.box_lower()[c]; }
+
+// What a ghost receives in an evaluation is folded onto its source: it starts at zero.
+void clear_ghost_accumulators(Particles& p) {
+  for (std::size_t g = p.size(); g < p.size_with_ghosts(); ++g) {
+    p.force[g] = {};
+    p.torque[g] = {};
+    p.heat[g] = 0.0;
+  }
+}
 }  // namespace
 
 HaloExchange::HaloExchange(const Communicator& comm, BrickGrid grid) : comm_(&comm), grid_(std::move(grid)) {
@@ -199,12 +208,7 @@ void HaloExchange::build(Particles& p, double width) {
       ghosts_ += w.recv_count;
     }
   }
-  // Ghosts start with empty accumulators.
-  for (std::size_t g = p.size(); g < p.size_with_ghosts(); ++g) {
-    p.force[g] = {};
-    p.torque[g] = {};
-    p.heat[g] = 0.0;
-  }
+  clear_ghost_accumulators(p);  // ghosts start with empty accumulators
 }
 
 void HaloExchange::refresh(Particles& p) const {
@@ -218,11 +222,7 @@ void HaloExchange::refresh(Particles& p) const {
     if (unpack_particles(p, in, pos, w.recv_first) != w.recv_count)
       throw std::runtime_error("HaloExchange::refresh: a neighbour sent another number of ghosts");
   }
-  for (std::size_t g = p.size(); g < p.size_with_ghosts(); ++g) {
-    p.force[g] = {};
-    p.torque[g] = {};
-    p.heat[g] = 0.0;
-  }
+  clear_ghost_accumulators(p);
 }
 
 void HaloExchange::fold(Particles& p) const {

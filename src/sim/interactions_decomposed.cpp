@@ -29,8 +29,7 @@ void Interactions::rebuild_decomposed(Particles& p, const Barriers& b, bool reor
   if (reorder) {
     AttachedRecords pair_records = AttachedRecords::of<PairHistory>();
     for (const PairHistory& h : pairs) pair_records.push(std::min(h.id_first, h.id_second), h);
-    AttachedRecords barrier_records = pb_->export_records(p);
-    search_->wrap(p);
+    AttachedRecords barrier_records = pb_->export_records(p);  // (migrate wraps the periodic axes)
     AttachedRecords* const attached[] = {&pair_records, &barrier_records};
     search_->migrate(p, attached);
     if (p.size() > 1) p.permute(search_->spatial_order(p));

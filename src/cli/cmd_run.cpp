@@ -22,10 +22,6 @@ int run_command(const RunArgs& args) {
   const bool speaks = comm.rank() == 0;
   Scene scene = load_scene(args.scene);  // InputError propagates to main: exit 2, nothing written
   if (speaks) warn_about_time_step(scene);
-  if (!comm.serial() && !args.resume.empty())
-    throw InputError(
-        args.resume.string(), 0, "--resume",
-        fmt::format("resuming on {} ranks is not available yet (docs/parallel.md); resume on one rank", comm.size()));
   // A resumed run continues from the checkpoint's state, not the scene's initial one.
   if (args.resume.empty()) {
     const auto problems = check_scene(scene);

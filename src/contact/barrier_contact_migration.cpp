@@ -1,7 +1,9 @@
 // BarrierContacts' committed history keyed by particle id, for particles that change rank
 // (parallel/halo_exchange.hpp): one record per contact, anchored at its particle.
 #include <algorithm>
+#include <stdexcept>
 #include <unordered_map>
+#include <utility>
 
 #include "contact/barrier_contacts.hpp"
 
@@ -22,16 +24,11 @@ AttachedRecords BarrierContacts::export_records(const Particles& p) const {
   return out;
 }
 
-void BarrierContacts::import_records(const Particles& p, const AttachedRecords& rec) {
-  std::unordered_map<std::int64_t, std::uint32_t> where;
-  where.reserve(rec.size());
-  for (std::int64_t id : rec.anchor) where.emplace(id, 0);
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (auto it = where.find(p.id[i]); it != where.end()) it->second = static_cast<std::uint32_t>(i) + 1;
-  // Records of one particle arrive together and in their order (they travelled as a block).
-  std::vector<std::pair<std::uint32_t, std::size_t>> order;  // (particle index, record), stable by index
-  for (std::size_t r = 0; r < rec.size(); ++r)
-    if (const std::uint32_t i = where[rec.anchor[r]]; i > 0) order.emplace_back(i - 1, r);
+namespace {
+// The checkpoint form of the records (BarrierContactStore::save: particle indices ascending,
+// counts, slots) from (particle index, record) pairs; a particle's records keep their order.
+void write_store_form(BinaryWriter& w, std::vector<std::pair<std::uint32_t, std::size_t>> order,
+                      const AttachedRecords& rec) {
   std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::uint32_t> index;
   std::vector<std::uint8_t> counts;
@@ -41,16 +38,43 @@ void BarrierContacts::import_records(const Particles& p, const AttachedRecords& 
       index.push_back(i);
       counts.push_back(0);
     }
-    if (counts.back() == kSlots) continue;  // cannot happen: a particle never holds more
+    if (counts.back() == BarrierContactStore::kSlots) continue;  // cannot happen: a particle never holds more
     ++counts.back();
     slots.push_back(rec.get<BarrierSlot>(r));
   }
-  BinaryWriter w;
   w.vector(index);
   w.vector(counts);
   w.vector(slots);
+}
+}  // namespace
+
+void BarrierContacts::import_records(const Particles& p, const AttachedRecords& rec) {
+  std::unordered_map<std::int64_t, std::uint32_t> where;
+  where.reserve(rec.size());
+  for (std::int64_t id : rec.anchor) where.emplace(id, 0);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (auto it = where.find(p.id[i]); it != where.end()) it->second = static_cast<std::uint32_t>(i) + 1;
+  // Records of one particle arrive together and in their order (they travelled as a block).
+  std::vector<std::pair<std::uint32_t, std::size_t>> order;  // (particle index, record)
+  for (std::size_t r = 0; r < rec.size(); ++r)
+    if (const std::uint32_t i = where[rec.anchor[r]]; i > 0) order.emplace_back(i - 1, r);
+  BinaryWriter w;
+  write_store_form(w, std::move(order), rec);
   BinaryReader r(w.bytes().data(), w.bytes().size());
   store_.restore(r, p.size());
+}
+
+void BarrierContacts::save_records(BinaryWriter& w, const AttachedRecords& rec, std::span<const std::int64_t> ids,
+                                   std::uint64_t overflows) {
+  std::vector<std::pair<std::uint32_t, std::size_t>> order;  // (particle index, record)
+  for (std::size_t r = 0; r < rec.size(); ++r) {
+    const auto it = std::lower_bound(ids.begin(), ids.end(), rec.anchor[r]);
+    if (it == ids.end() || *it != rec.anchor[r])
+      throw std::logic_error("BarrierContacts::save_records: a record of a particle not in the list");
+    order.emplace_back(static_cast<std::uint32_t>(it - ids.begin()), r);
+  }
+  write_store_form(w, std::move(order), rec);
+  w.value(overflows);
 }
 
 }  // namespace mpdem

@@ -24,6 +24,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "physics/barrier_contact_detect.hpp"
@@ -60,6 +61,12 @@ class BarrierContacts {
   // that change rank, and back onto the particles' current indices (replacing every record).
   AttachedRecords export_records(const Particles& p) const;
   void import_records(const Particles& p, const AttachedRecords& records);
+  // Writes records (of several ranks, gathered) in the form of save() for the particles whose ids,
+  // ascending, are `ids`, and the ranks' summed overflows: a checkpoint of a decomposed run.
+  static void save_records(BinaryWriter& w, const AttachedRecords& records, std::span<const std::int64_t> ids,
+                           std::uint64_t overflows);
+  // On several ranks the overflows are counted once, by rank 0 (after a restore of every record).
+  void clear_overflows() { overflows_ = 0; }
   std::size_t memory_bytes() const { return store_.bytes(); }  // B, held by the contact records
 
  private:

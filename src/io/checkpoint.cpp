@@ -80,6 +80,10 @@ void check_restored(const Particles& p, std::size_t materials) {
 }  // namespace
 
 void Simulation::write_checkpoint(const std::filesystem::path& file) {
+  // Several ranks (collective): rank 0 writes every particle, in id order, with the history keyed
+  // by ids, in the one-rank layout: any rank count resumes the file.
+  Particles all = comm_ ? gathered() : Particles{};
+  Particles& p = comm_ ? all : scene_.particles;
   CheckpointWriter w;
   w.section("scene_fingerprint", [&](BinaryWriter& o) { save_fingerprint(o, fingerprint_); });
   w.section("run", [&](BinaryWriter& o) {
@@ -90,13 +94,15 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
   // One section per particle array, by name: an array added to Particles adds a section, and a
   // checkpoint without it is refused naming it.
   // The owned particles only: ghosts are rebuilt from them at the restore.
-  const std::size_t owned = scene_.particles.size();
-  scene_.particles.for_each_array([&](const char* name, auto& a) {
+  const std::size_t owned = p.size();
+  p.for_each_array([&](const char* name, auto& a) {
     w.section(std::string("particles/") + name, [&](BinaryWriter& o) {
       o.vector(std::decay_t<decltype(a)>(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(owned)));
     });
   });
-  interactions_->save(w, scene_.particles);
+  if (comm_) interactions_->save_gathered(w, scene_.particles, all);
+  else interactions_->save(w, p);
+  if (!root()) return;
   // What decides the next insertions and the sinks' totals ([[inlet]], [[sink]]).
   if (inlets_) w.section("inlets", [&](BinaryWriter& o) { inlets_->save(o); });
   if (sinks_) w.section("sinks", [&](BinaryWriter& o) { sinks_->save(o); });

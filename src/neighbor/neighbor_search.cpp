@@ -21,18 +21,17 @@ void NeighborSearch::rebuild(Particles& p, const Barriers& b) {
   ++rebuilds_;
 }
 
-void NeighborSearch::save(BinaryWriter& w) const {
-  const auto& xb = list_.build_positions();
-  w.vector(std::vector<Vec3>(xb.begin(), xb.begin() + static_cast<std::ptrdiff_t>(list_.owned())));
+void NeighborSearch::save(BinaryWriter& w, std::span<const Vec3> build_positions) const {
+  w.vector(std::vector<Vec3>(build_positions.begin(), build_positions.end()));
   w.vector(barrier_offsets_build_);
   w.value(rebuilds_);
   // Only scenes with rotating barriers: their placement at the build needs the time too.
   if (rotating_build_) w.value(barrier_time_build_);
 }
 
-void NeighborSearch::restore(BinaryReader& r, Particles& p, const Barriers& b) {
+void NeighborSearch::restore(BinaryReader& r, Particles& p, const Barriers& b, const std::vector<char>* keep) {
   p.drop_ghosts();
-  const std::vector<Vec3> x = r.vector<Vec3>();
+  std::vector<Vec3> x = r.vector<Vec3>();
   Barriers at_build = b;
   at_build.offset = r.vector<Vec3>();
   rebuilds_ = r.value<std::uint64_t>();
@@ -46,6 +45,14 @@ void NeighborSearch::restore(BinaryReader& r, Particles& p, const Barriers& b) {
     const double t = r.value<double>();  // s, the barriers' time at the last build
     if (!std::isfinite(t)) throw std::runtime_error("the barriers' time at the last build is not finite");
     at_build.turn_to(t);
+  }
+  if (keep) {
+    if (keep->size() != x.size()) throw std::logic_error("NeighborSearch::restore: keep does not match the particles");
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if ((*keep)[i]) x[n++] = x[i];
+    x.resize(n);
+    p.compact(*keep);
   }
   build(p, x, at_build);
 }

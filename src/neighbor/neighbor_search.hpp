@@ -59,8 +59,12 @@ class NeighborSearch {
   const PeriodicImages& images() const { return images_; }
   // Checkpoints: the build positions of both lists, so a resumed run rebuilds at the same steps
   // (and with the same ghosts).
-  void save(BinaryWriter& w) const;
-  void restore(BinaryReader& r, Particles& p, const Barriers& b);
+  void save(BinaryWriter& w) const { save(w, std::span<const Vec3>(list_.build_positions()).first(list_.owned())); }
+  // The same section for other particles (a decomposed run's, gathered): their build positions (m).
+  void save(BinaryWriter& w, std::span<const Vec3> build_positions) const;
+  // keep: only the particles i with keep[i] stay (p is compacted; a resume on several ranks
+  // keeps those of this rank's brick).
+  void restore(BinaryReader& r, Particles& p, const Barriers& b, const std::vector<char>* keep = nullptr);
   // Permutation sorting the particles along a space-filling curve (for cache locality).
   std::vector<std::uint32_t> spatial_order(const Particles& p) const;
 

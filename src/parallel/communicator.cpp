@@ -41,6 +41,9 @@ bool mpi_running() {
 }
 
 #ifdef MPDEM_HAVE_MPI
+// The communicator of a Fortran handle (an int, so that the header needs no MPI type).
+MPI_Comm mpi_comm(int handle) { return MPI_Comm_f2c(handle); }
+
 int checked_count(std::size_t n) {
   if (n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw std::length_error("an MPI message of more than 2^31 bytes");
@@ -62,12 +65,30 @@ const Communicator& Communicator::world() {
       int rank = 0, size = 1;
       MPI_Comm_rank(MPI_COMM_WORLD, &rank);
       MPI_Comm_size(MPI_COMM_WORLD, &size);
-      return Communicator(rank, size);
+      return Communicator(rank, size, static_cast<int>(MPI_Comm_c2f(MPI_COMM_WORLD)));
     }();
     return world;
   }
 #endif
   return serial;
+}
+
+std::shared_ptr<const Communicator> Communicator::first_ranks(int n) const {
+  if (n < 1 || n > size_) throw std::invalid_argument("Communicator::first_ranks: n is not in [1, size]");
+  if (serial()) return std::make_shared<const Communicator>(*this);
+#ifdef MPDEM_HAVE_MPI
+  MPI_Comm sub = MPI_COMM_NULL;
+  MPI_Comm_split(mpi_comm(handle_), rank_ < n ? 0 : MPI_UNDEFINED, rank_, &sub);
+  if (sub == MPI_COMM_NULL) return nullptr;
+  // Freed with the last reference (before MPI_Finalize: the callers hold it in a scope).
+  return {new Communicator(rank_, n, static_cast<int>(MPI_Comm_c2f(sub))), [](const Communicator* c) {
+            MPI_Comm h = MPI_Comm_f2c(c->handle_);
+            if (mpi_running()) MPI_Comm_free(&h);
+            delete c;
+          }};
+#else
+  return nullptr;
+#endif
 }
 
 void Communicator::sum(std::span<double> v) const {
@@ -118,12 +139,12 @@ std::vector<std::byte> Communicator::exchange(int to, std::span<const std::byte>
   // Sizes first, then the bytes: a receiver cannot know a message's length in advance.
   const int dest = to < 0 ? MPI_PROC_NULL : to, source = from < 0 ? MPI_PROC_NULL : from;
   std::uint64_t n_out = out.size(), n_in = 0;
-  MPI_Sendrecv(&n_out, 1, MPI_UINT64_T, dest, tag, &n_in, 1, MPI_UINT64_T, source, tag, MPI_COMM_WORLD,
+  MPI_Sendrecv(&n_out, 1, MPI_UINT64_T, dest, tag, &n_in, 1, MPI_UINT64_T, source, tag, mpi_comm(handle_),
                MPI_STATUS_IGNORE);
   if (source == MPI_PROC_NULL) n_in = 0;
   std::vector<std::byte> in(static_cast<std::size_t>(n_in));
   MPI_Sendrecv(out.data(), checked_count(out.size()), MPI_BYTE, dest, tag + 1, in.data(), checked_count(in.size()),
-               MPI_BYTE, source, tag + 1, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+               MPI_BYTE, source, tag + 1, mpi_comm(handle_), MPI_STATUS_IGNORE);
   return in;
 #else
   (void)tag;
@@ -136,14 +157,14 @@ std::vector<std::vector<std::byte>> Communicator::all_gather(std::span<const std
 #ifdef MPDEM_HAVE_MPI
   const int n = checked_count(mine.size());
   std::vector<int> counts(static_cast<std::size_t>(size_)), displs(static_cast<std::size_t>(size_));
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi_comm(handle_));
   std::size_t total = 0;
   for (int r = 0; r < size_; ++r) {
     displs[static_cast<std::size_t>(r)] = checked_count(total);
     total += static_cast<std::size_t>(counts[static_cast<std::size_t>(r)]);
   }
   std::vector<std::byte> all(total);
-  MPI_Allgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, MPI_COMM_WORLD);
+  MPI_Allgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, mpi_comm(handle_));
   std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(size_));
   for (std::size_t r = 0; r < out.size(); ++r) {
     const auto* b = all.data() + displs[r];
@@ -161,14 +182,14 @@ std::vector<std::vector<std::byte>> Communicator::gather(std::span<const std::by
   const int n = checked_count(mine.size());
   const bool at_root = rank_ == root;
   std::vector<int> counts(at_root ? static_cast<std::size_t>(size_) : 0), displs(counts.size());
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, root, MPI_COMM_WORLD);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, root, mpi_comm(handle_));
   std::size_t total = 0;
   for (std::size_t r = 0; r < counts.size(); ++r) {
     displs[r] = checked_count(total);
     total += static_cast<std::size_t>(counts[r]);
   }
   std::vector<std::byte> all(total);
-  MPI_Gatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, root, MPI_COMM_WORLD);
+  MPI_Gatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, root, mpi_comm(handle_));
   std::vector<std::vector<std::byte>> out(counts.size());
   for (std::size_t r = 0; r < out.size(); ++r) {
     const auto* b = all.data() + displs[r];
@@ -185,9 +206,9 @@ void Communicator::broadcast(std::vector<std::byte>& bytes, int root) const {
   if (serial()) return;
 #ifdef MPDEM_HAVE_MPI
   std::uint64_t n = bytes.size();
-  MPI_Bcast(&n, 1, MPI_UINT64_T, root, MPI_COMM_WORLD);
+  MPI_Bcast(&n, 1, MPI_UINT64_T, root, mpi_comm(handle_));
   bytes.resize(static_cast<std::size_t>(n));
-  MPI_Bcast(bytes.data(), checked_count(bytes.size()), MPI_BYTE, root, MPI_COMM_WORLD);
+  MPI_Bcast(bytes.data(), checked_count(bytes.size()), MPI_BYTE, root, mpi_comm(handle_));
 #else
   (void)root;
 #endif
@@ -195,13 +216,13 @@ void Communicator::broadcast(std::vector<std::byte>& bytes, int root) const {
 
 void Communicator::barrier() const {
 #ifdef MPDEM_HAVE_MPI
-  if (!serial()) MPI_Barrier(MPI_COMM_WORLD);
+  if (!serial()) MPI_Barrier(mpi_comm(handle_));
 #endif
 }
 
 void Communicator::abort(int code) const {
 #ifdef MPDEM_HAVE_MPI
-  if (!serial()) MPI_Abort(MPI_COMM_WORLD, code);
+  if (!serial()) MPI_Abort(mpi_comm(handle_), code);
 #endif
   std::exit(code);
 }

@@ -8,6 +8,7 @@
 // on N ranks takes the same decisions on every rank and in every run.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -20,6 +21,10 @@ class Communicator {
   static const Communicator& world();
   // One rank, whatever the process's MPI state: a serial run inside an MPI program (tests).
   static const Communicator& single();
+
+  // The first n ranks of this one as a communicator of their own, on those ranks; null on the
+  // others (tests: a checkpoint written on n ranks, resumed on all). Collective.
+  std::shared_ptr<const Communicator> first_ranks(int n) const;
 
   int rank() const { return rank_; }
   int size() const { return size_; }
@@ -49,9 +54,10 @@ class Communicator {
   [[noreturn]] void abort(int code) const;
 
  private:
-  Communicator(int rank, int size) : rank_(rank), size_(size) {}
+  Communicator(int rank, int size, int handle = 0) : rank_(rank), size_(size), handle_(handle) {}
   int rank_ = 0;
   int size_ = 1;
+  int handle_ = 0;  // MPI communicator as a Fortran handle (MPI_Comm_c2f); unused on one rank
   friend class MpiSession;
 };
 

@@ -60,19 +60,9 @@ namespace {
 void pack_attached(AttachedRecords& a, const std::unordered_map<std::int64_t, int>& leaving,
                    std::vector<std::byte> (&out)[2]) {
   std::vector<std::size_t> go[2];
-  std::size_t kept = 0;
-  for (std::size_t r = 0; r < a.anchor.size(); ++r) {
-    const auto it = leaving.find(a.anchor[r]);
-    if (it != leaving.end()) {
-      go[it->second].push_back(r);
-      continue;
-    }
-    if (kept != r) {
-      a.anchor[kept] = a.anchor[r];
-      std::memmove(a.data.data() + kept * a.bytes, a.data.data() + r * a.bytes, a.bytes);
-    }
-    ++kept;
-  }
+  for (std::size_t r = 0; r < a.anchor.size(); ++r)
+    if (const auto it = leaving.find(a.anchor[r]); it != leaving.end()) go[it->second].push_back(r);
+  // Packed before the kept ones are moved together: that overwrites the positions of leaving records.
   for (int d = 0; d < 2; ++d) {
     std::vector<std::byte>& o = out[d];
     const std::uint64_t n = go[d].size();
@@ -86,6 +76,15 @@ void pack_attached(AttachedRecords& a, const std::unordered_map<std::int64_t, in
       std::memcpy(w + sizeof(std::int64_t), a.data.data() + r * a.bytes, a.bytes);
       w += sizeof(std::int64_t) + a.bytes;
     }
+  }
+  std::size_t kept = 0;
+  for (std::size_t r = 0; r < a.anchor.size(); ++r) {
+    if (leaving.count(a.anchor[r]) > 0) continue;
+    if (kept != r) {
+      a.anchor[kept] = a.anchor[r];
+      std::memmove(a.data.data() + kept * a.bytes, a.data.data() + r * a.bytes, a.bytes);
+    }
+    ++kept;
   }
   a.anchor.resize(kept);
   a.data.resize(kept * a.bytes);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
@@ -62,6 +63,30 @@ Inlets::Inlets(const Model& model, const Particles& p) : model_(model) {
   for (std::size_t i = 0; i < p.size(); ++i) next_id_ = std::max(next_id_, p.id[i] + 1);
 }
 
+bool Inlets::due(std::size_t j, double t) const {
+  const Inlet& in = inlets_[j];
+  const double next = in.spec->start + static_cast<double>(state_[j].next_k) * in.interval;  // s
+  return !(t + kTimeSlack * in.interval < next) && next < in.end;
+}
+
+bool Inlets::due(double t) const {
+  for (std::size_t j = 0; j < inlets_.size(); ++j)
+    if (due(j, t)) return true;
+  return false;
+}
+
+void Inlets::reach(double radius, Vec3& lo, Vec3& hi) const {
+  const double inf = std::numeric_limits<double>::infinity();
+  lo = Vec3{inf, inf, inf};
+  hi = -lo;
+  for (const Inlet& in : inlets_) {
+    for (int c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], in.lo[c] - radius);
+      hi[c] = std::max(hi[c], in.hi[c] + radius);
+    }
+  }
+}
+
 Particles Inlets::insert(double t, const Particles& p, const Barriers& b) {
   Particles fresh;
   for (std::size_t j = 0; j < inlets_.size(); ++j) {
@@ -69,7 +94,7 @@ Particles Inlets::insert(double t, const Particles& p, const Barriers& b) {
     State& s = state_[j];
     const double start = in.spec->start, slack = kTimeSlack * in.interval;
     const auto time_of = [&](std::uint64_t k) { return start + static_cast<double>(k) * in.interval; };
-    if (t + slack < time_of(s.next_k) || !(time_of(s.next_k) < in.end)) continue;
+    if (!due(j, t)) continue;
     // The latest insertion time passed (several pass at once when the interval is below the step).
     auto k = static_cast<std::uint64_t>(std::floor((t + slack - start) / in.interval));
     k = std::max(k, s.next_k);

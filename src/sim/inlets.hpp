@@ -33,6 +33,13 @@ class Inlets {
   // The particles every inlet inserts at the step end at time t (s), given the particles and
   // barriers then: appended by the caller (Interactions::add_particles). Empty when none is due.
   Particles insert(double t, const Particles& p, const Barriers& b);
+  // Whether some inlet has an insertion time due at the step end at t (s): insert() places
+  // particles or reports a shortfall.
+  bool due(double t) const;
+  // m, the box [lo, hi] holding every centre of a particle of radius up to `radius` (m) that
+  // reaches into an inlet's volume: insert() looks at no other particle (InsertionSpace), so a
+  // decomposed run gathers only those (docs/parallel.md).
+  void reach(double radius, Vec3& lo, Vec3& hi) const;
 
   // J, kinetic + rotational + potential energy the inserted particles brought in (the energy
   // balance takes it off, as it adds what removed particles take along).
@@ -64,6 +71,7 @@ class Inlets {
     double interval;  // s (a default one: the checkpoint's after a resume)
     Vec3 lo, hi;      // m, world bounding box of the volume
   };
+  bool due(std::size_t j, double t) const;
   // Inserts inlet j's particles due at its insertion time k into `fresh`.
   void insert_due(std::size_t j, std::uint64_t k, const Particles& p, const Barriers& b, Particles& fresh);
 

@@ -227,21 +227,33 @@ void Interactions::remove_particles(Particles& p, const Barriers& b, const std::
 
 void Interactions::add_particles(Particles& p, const Barriers& b, Particles fresh) {
   next_drift_.valid = false;
-  if (comm_) throw std::logic_error("inlets on several ranks are not available yet");
+  // Each array of `fresh` onto the end of p's: both lists name the arrays in the same order.
+  const auto append = [&] {
+    std::size_t k = 0;
+    p.for_each_array([&](const char*, auto& to) {
+      std::size_t j = 0;
+      fresh.for_each_array([&](const char*, auto& from) {
+        if constexpr (std::is_same_v<decltype(to), decltype(from)>)
+          if (j == k) to.insert(to.end(), from.begin(), from.end());
+        ++j;
+      });
+      ++k;
+    });
+  };
+  if (comm_) {
+    // Collective, as remove_particles: the ghosts' sources are remote, so the history goes by ids.
+    std::vector<PairHistory> kept = pp_->export_history(p, *search_);
+    p.drop_ghosts();
+    append();
+    search_->rebuild(p, b);
+    pp_->import_history(p, *search_, std::move(kept));
+    stats_.rebuilds = search_->rebuilds();
+    return;
+  }
   ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
   p.drop_ghosts();
   const std::size_t old_n = p.size();
-  // Each array of `fresh` onto the end of p's: both lists name the arrays in the same order.
-  std::size_t k = 0;
-  p.for_each_array([&](const char*, auto& to) {
-    std::size_t j = 0;
-    fresh.for_each_array([&](const char*, auto& from) {
-      if constexpr (std::is_same_v<decltype(to), decltype(from)>)
-        if (j == k) to.insert(to.end(), from.begin(), from.end());
-      ++j;
-    });
-    ++k;
-  });
+  append();
   // The others keep their indices (and so their barrier contact records); a new particle has
   // no old index (beyond any old list, ghosts included: no carried pair is found for it).
   std::vector<std::uint32_t> old_index(p.size(), std::numeric_limits<std::uint32_t>::max());

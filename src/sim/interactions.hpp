@@ -55,6 +55,14 @@ struct InteractionStats {
   double heat_radiated = 0.0;     // J, radiated by the particles to the surroundings
 };
 
+// The statistics that are sums over the particles, so over the ranks of a decomposed run (the
+// others, drive_power and barrier_work, come from barrier loads already summed over the ranks).
+inline constexpr double InteractionStats::*kRankSummedStats[] = {
+    &InteractionStats::elastic_energy,   &InteractionStats::damping_dissipated, &InteractionStats::friction_dissipated,
+    &InteractionStats::damping_power,    &InteractionStats::rolling_power,      &InteractionStats::spring_energy,
+    &InteractionStats::fixed_work,       &InteractionStats::fixed_power,        &InteractionStats::near_field_energy,
+    &InteractionStats::heat_to_barriers, &InteractionStats::heat_convected,     &InteractionStats::heat_radiated};
+
 // Wall time spent per part of the evaluations (s, cumulative; not checkpointed), for the
 // benchmark's breakdown of where a step goes.
 struct PhaseTimes {
@@ -131,6 +139,11 @@ class Interactions {
   // Checkpoints: statistics, neighbour lists and contact history.
   // Checkpoint sections "interactions", "neighbor", "particle_contacts", "barrier_contacts".
   void save(CheckpointWriter& w, const Particles& p) const;
+  // Several ranks (collective): the same sections for every particle, written by rank 0 alone;
+  // `all` holds every rank's particles in id order there (Simulation::gathered), and the lists'
+  // build positions and the contact history are keyed by ids, so any rank count resumes them.
+  void save_gathered(CheckpointWriter& w, const Particles& p, const Particles& all) const;
+  // On several ranks p holds every particle of the checkpoint; those of this rank's brick stay.
   void restore(CheckpointReader& r, Particles& p, const Barriers& b);
   double skin() const;
   const NeighborSearch& search() const { return *search_; }

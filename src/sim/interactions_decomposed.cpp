@@ -70,20 +70,13 @@ InteractionStats Interactions::global_stats() const {
   if (!comm_) return stats_;
   // Summed over the ranks. drive_power and barrier_work come from the summed loads: already the
   // same on every rank.
-  static constexpr double InteractionStats::*kSummed[] = {
-      &InteractionStats::elastic_energy,      &InteractionStats::damping_dissipated,
-      &InteractionStats::friction_dissipated, &InteractionStats::damping_power,
-      &InteractionStats::rolling_power,       &InteractionStats::spring_energy,
-      &InteractionStats::fixed_work,          &InteractionStats::fixed_power,
-      &InteractionStats::near_field_energy,   &InteractionStats::heat_to_barriers,
-      &InteractionStats::heat_convected,      &InteractionStats::heat_radiated};
   InteractionStats s = stats_;
   std::vector<double> v{static_cast<double>(s.contacts_pp), static_cast<double>(s.contacts_pb)};
-  for (auto m : kSummed) v.push_back(s.*m);
+  for (auto m : kRankSummedStats) v.push_back(s.*m);
   comm_->sum(v);
   s.contacts_pp = static_cast<std::size_t>(v[0]);
   s.contacts_pb = static_cast<std::size_t>(v[1]);
-  for (std::size_t k = 0; k < std::size(kSummed); ++k) s.*kSummed[k] = v[2 + k];
+  for (std::size_t k = 0; k < std::size(kRankSummedStats); ++k) s.*kRankSummedStats[k] = v[2 + k];
   return s;
 }
 

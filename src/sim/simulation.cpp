@@ -41,10 +41,11 @@ Simulation::Simulation(Scene&& scene, RunOptions options)
       interactions_(std::make_unique<Interactions>(scene_.model, scene_.particles, scene_.barriers,
                                                    integrator_policy(scene_.model.params))),
       trapezoidal_(scene_.model), verlet_(scene_.model), dt_(scene_.model.params.time.dt) {
-  if (const Communicator& comm = options_.comm ? *options_.comm : Communicator::world(); !comm.serial())
-    decompose(comm);
+  // The inlets first: their first id follows every particle of the scene, whichever rank holds it.
   if (!scene_.model.params.inlets.empty()) inlets_ = std::make_unique<Inlets>(scene_.model, scene_.particles);
   if (!scene_.model.params.sinks.empty()) sinks_ = std::make_unique<Sinks>(scene_.model);
+  if (const Communicator& comm = options_.comm ? *options_.comm : Communicator::world(); !comm.serial())
+    decompose(comm);
 }
 
 Simulation::~Simulation() = default;
@@ -207,7 +208,7 @@ void Simulation::remove_outside() {
 
 void Simulation::remove_in_sinks() {
   std::vector<char> keep(scene_.particles.size(), 1);
-  if (sinks_->mark(scene_.particles, keep) > 0) remove_marked(keep, false);  // stderr: the summary line
+  if (sinks_->mark(scene_.particles, keep, comm_) > 0) remove_marked(keep, false);  // stderr: the summary line
 }
 
 void Simulation::remove_marked(const std::vector<char>& keep, bool exits) {
@@ -239,6 +240,8 @@ void Simulation::remove_marked(const std::vector<char>& keep, bool exits) {
     }
     gone = std::move(all);  // on rank 0; empty elsewhere
   }
+  // By id: removed.csv does not depend on the particle order or the rank count.
+  std::sort(gone.begin(), gone.end(), [](const Removed& a, const Removed& b) { return a.id < b.id; });
   if (count == 0) return;  // nobody removed anything (on any rank): no rebuild either
   record_.removed_energy += energy;
   for (std::size_t k = 0; k < gone.size(); ++k) {
@@ -253,8 +256,12 @@ void Simulation::remove_marked(const std::vector<char>& keep, bool exits) {
 }
 
 void Simulation::insert_from_inlets() {
-  Particles fresh = inlets_->insert(time_, scene_.particles, scene_.barriers);
+  if (!inlets_->due(time_)) return;
+  // Several ranks: every rank places the same particles among the same neighbours (those near the
+  // inlets, gathered), then keeps those of its brick.
+  Particles fresh = inlets_->insert(time_, comm_ ? near_inlets() : scene_.particles, scene_.barriers);
   if (fresh.size() == 0) return;
+  if (comm_) keep_own(fresh);
   interactions_->add_particles(scene_.particles, scene_.barriers, std::move(fresh));
   // The new particles' forces (gravity, fields; no contact yet): re-evaluate the rates.
   interactions_->evaluate(scene_.particles, scene_.barriers, EvalRequest{time_, 0.0, 1.0, true});
@@ -330,16 +337,16 @@ RunSummary Simulation::run() {
     const auto& st = stats();
     progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count());
     if ((inlets_ || sinks_) && progress_->summary_due()) progress_->summary(open_system_summary());
-    if (output_ && every > 0 && steps_ % every == 0) {
+    if (out && every > 0 && steps_ % every == 0) {  // (collective on several ranks)
       write_checkpoint(dir / "checkpoint.bin");
-      output_->flush();
+      if (output_) output_->flush();
     }
     if (const int sig = comm_ ? stop_across_ranks() : stop_signal()) {
       std::filesystem::path ck;
-      if (output_ && !comm_) {  // several ranks: no checkpoints yet (docs/parallel.md)
+      if (out) {
         ck = dir / "checkpoint.bin";
         write_checkpoint(ck);
-        output_->flush();
+        if (output_) output_->flush();
       }
       throw Interrupted(sig, time_, steps_, ck);
     }

@@ -105,6 +105,10 @@ class Simulation {
   // signal that stops the run (0: none) if any rank received one (both collective).
   bool particles_due(double h, bool force) const;
   int stop_across_ranks() const;
+  // Every rank's particles that reach into an inlet's volume (Inlets::reach), in id order, on
+  // every rank (collective), and the particles of `fresh` this rank's brick holds.
+  Particles near_inlets();
+  void keep_own(Particles& fresh) const;
   std::size_t particle_count() const { return comm_ ? global_count_ : scene_.particles.size(); }
   void snapshots(double h, bool force);  // the snapshot outputs due after a step of h (s)
   // Id of the first particle (by rank) with a non-finite state, on every rank; -1 if none.

@@ -12,6 +12,8 @@
 #include "parallel/brick_grid.hpp"
 #include "parallel/particle_buffer.hpp"
 #include "sim/simulation.hpp"
+#include "neighbor/neighbor_search.hpp"
+#include "sim/inlets.hpp"
 #include "sim/stop_signal.hpp"
 
 namespace mpdem {
@@ -26,10 +28,7 @@ void refuse_unsupported(const Scene& scene, const Communicator& comm) {
         file, 0, std::string(key),
         fmt::format("{} on {} ranks is not available yet (docs/parallel.md); run it on one rank", what, comm.size()));
   };
-  if (!prm.inlets.empty()) refuse("inlet", "[[inlet]]");
-  if (!prm.sinks.empty()) refuse("sink", "[[sink]]");
   if (prm.near_field.cutoff > 0.0) refuse("near_field.cutoff", "the near field");
-  if (prm.output.checkpoint_every > 0) refuse("output.checkpoint_every", "checkpointing");
   if (prm.time.adaptive) refuse("time.adaptive", "adaptive time steps");
 }
 }  // namespace
@@ -80,23 +79,53 @@ void Simulation::refresh_stats() {
   global_count_ = static_cast<std::size_t>(comm_->sum(static_cast<std::uint64_t>(scene_.particles.size())));
 }
 
+namespace {
+// The particles of the ranks' messages (pack_particles), in id order: what is written or decided
+// from them does not depend on the rank count.
+Particles in_id_order(const std::vector<std::vector<std::byte>>& messages) {
+  Particles all;
+  for (const auto& bytes : messages) {
+    std::size_t pos = 0;
+    unpack_particles(all, bytes, pos);
+  }
+  std::vector<std::uint32_t> order(all.size());
+  std::iota(order.begin(), order.end(), std::uint32_t{0});
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return all.id[a] < all.id[b]; });
+  all.permute(order);
+  return all;
+}
+}  // namespace
+
 Particles Simulation::gathered() {
   Particles& p = scene_.particles;
   std::vector<std::uint32_t> idx(p.size());
   std::iota(idx.begin(), idx.end(), std::uint32_t{0});
   std::vector<std::byte> mine;
   pack_particles(p, idx, {}, mine);
-  Particles all;
-  for (const auto& bytes : comm_->gather(mine, 0)) {
-    std::size_t pos = 0;
-    unpack_particles(all, bytes, pos);
-  }
-  // In id order: the files do not depend on the rank count.
-  std::vector<std::uint32_t> order(all.size());
-  std::iota(order.begin(), order.end(), std::uint32_t{0});
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return all.id[a] < all.id[b]; });
-  all.permute(order);
-  return all;
+  return in_id_order(comm_->gather(mine, 0));
+}
+
+Particles Simulation::near_inlets() {
+  Particles& p = scene_.particles;
+  double rmax = 0.0;  // m
+  for (std::size_t i = 0; i < p.size(); ++i) rmax = std::max(rmax, p.radius[i]);
+  Vec3 lo, hi;
+  inlets_->reach(comm_->max(rmax), lo, hi);
+  std::vector<std::uint32_t> idx;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.x[i].x >= lo.x && p.x[i].x <= hi.x && p.x[i].y >= lo.y && p.x[i].y <= hi.y && p.x[i].z >= lo.z &&
+        p.x[i].z <= hi.z)
+      idx.push_back(static_cast<std::uint32_t>(i));
+  std::vector<std::byte> mine;
+  pack_particles(p, idx, {}, mine);
+  return in_id_order(comm_->all_gather(mine));
+}
+
+void Simulation::keep_own(Particles& fresh) const {
+  const BrickGrid& grid = interactions_->search().halo()->grid();
+  std::vector<char> mine(fresh.size());
+  for (std::size_t i = 0; i < fresh.size(); ++i) mine[i] = grid.owner(fresh.x[i]) == comm_->rank();
+  fresh.compact(mine);
 }
 
 bool Simulation::particles_due(double h, bool force) const {

@@ -21,8 +21,8 @@ Sinks::Sinks(const Model& model) : model_(model) {
   state_.resize(regions_.size());
 }
 
-std::size_t Sinks::mark(const Particles& p, std::vector<char>& keep) {
-  std::size_t marked = 0;
+std::size_t Sinks::mark(const Particles& p, std::vector<char>& keep, const Communicator* comm) {
+  std::vector<double> taken(2 * regions_.size(), 0.0);  // per sink: particles (-), mass (kg)
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (!keep[i]) continue;
     const Vec3& x = p.x[i];
@@ -33,11 +33,18 @@ std::size_t Sinks::mark(const Particles& p, std::vector<char>& keep) {
       if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y || x.z < lo.z || x.z > hi.z) continue;
       if (!g.holds(x, 0.0)) continue;
       keep[i] = 0;
-      ++marked;
-      ++state_[s].removed;
-      state_[s].removed_mass += p.mass[i];
+      taken[2 * s] += 1.0;
+      taken[2 * s + 1] += p.mass[i];
       break;
     }
+  }
+  if (comm) comm->sum(taken);  // every rank holds the totals of all
+  std::size_t marked = 0;
+  for (std::size_t s = 0; s < regions_.size(); ++s) {
+    const auto n = static_cast<std::uint64_t>(taken[2 * s]);
+    marked += n;
+    state_[s].removed += n;
+    if (n > 0) state_[s].removed_mass += taken[2 * s + 1];
   }
   return marked;
 }

@@ -12,6 +12,7 @@
 #include "generate/region.hpp"
 #include "io/binary_stream.hpp"
 #include "model/scene.hpp"
+#include "parallel/communicator.hpp"
 
 namespace mpdem {
 
@@ -20,8 +21,9 @@ class Sinks {
   explicit Sinks(const Model& model);
 
   // Sets keep[i] = 0 (keep: [N], 1 = stays) for every particle with its centre in a sink, counts it
-  // to that sink, and returns how many were marked.
-  std::size_t mark(const Particles& p, std::vector<char>& keep);
+  // to that sink, and returns how many were marked. On several ranks (comm; collective) the counts
+  // and the returned number are those of all ranks, so every rank holds the same totals.
+  std::size_t mark(const Particles& p, std::vector<char>& keep, const Communicator* comm = nullptr);
 
   // Global log: per sink "<name>.removed" (-), "<name>.removed_mass" (kg), "<name>.mass_rate"
   // (kg/s, removed mass since the previous row / time since it; 0 in the first row).

@@ -213,7 +213,31 @@ TEST(HaloExchange, MigrationHandsEveryParticleToItsOwner) {
       return Vec3{u(r), u(r), u(r)};
     };
     for (std::size_t i = 0; i < p.size(); ++i) p.x[i] += move(p.id[i]);
-    sp.halo.migrate(p);
+    // Contact history rides along: two or three records per particle (three for every third id,
+    // so that leaving and staying records interleave), each naming its anchor and its rank.
+    struct Record {
+      std::int64_t id;
+      std::int64_t k;
+    };
+    AttachedRecords records = AttachedRecords::of<Record>();
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (std::int64_t k = 0; k < 2 + (p.id[i] % 3 == 0 ? 1 : 0); ++k) records.push(p.id[i], Record{p.id[i], k});
+    AttachedRecords* const attached[] = {&records};
+    sp.halo.migrate(p, attached);
+    std::map<std::int64_t, std::vector<std::int64_t>> held;  // anchor -> record ks, in order
+    for (std::size_t r = 0; r < records.size(); ++r) {
+      const Record rec = records.get<Record>(r);
+      EXPECT_EQ(rec.id, records.anchor[r]) << "a record arrived under another particle's id";
+      held[records.anchor[r]].push_back(rec.k);
+    }
+    std::size_t mine_with_records = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const std::vector<std::int64_t> want = p.id[i] % 3 == 0 ? std::vector<std::int64_t>{0, 1, 2}
+                                                              : std::vector<std::int64_t>{0, 1};
+      EXPECT_EQ(held[p.id[i]], want) << "records of id " << p.id[i];
+      ++mine_with_records;
+    }
+    EXPECT_EQ(held.size(), mine_with_records);  // no record of a particle held elsewhere
     std::vector<std::int64_t> ids(p.id.begin(), p.id.end());
     std::size_t total = 0;
     std::set<std::int64_t> seen;

@@ -13,6 +13,7 @@
 #include "io/atomic_file.hpp"
 #include "io/csv_log.hpp"
 #include "io/pvd_index.hpp"
+#include "io/pvtu_writer.hpp"
 #include "io/vtu_writer.hpp"
 #include "sim/energy.hpp"
 #include "sim/inlets.hpp"
@@ -53,8 +54,8 @@ void keep_rows_until(const fs::path& file, double t) {
 }  // namespace
 
 OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& barriers,
-                             std::optional<double> resume_time)
-    : model_(model), dir_(std::move(dir)), resume_time_(resume_time) {
+                             std::optional<double> resume_time, int pieces)
+    : model_(model), dir_(std::move(dir)), resume_time_(resume_time), pieces_(pieces) {
   const CsvLog::Open mode = resume_time ? CsvLog::Open::append : CsvLog::Open::replace;
   auto pvd = [&](const fs::path& f) {
     return resume_time ? std::make_unique<PvdIndex>(f, *resume_time) : std::make_unique<PvdIndex>(f);
@@ -144,18 +145,28 @@ bool OutputManager::due(Series& s, double t, double dt, double end, bool force) 
   return true;
 }
 
-bool OutputManager::particles_due(double t, double dt, bool force) const {
+ParticleSnapshotsDue OutputManager::particles_due(double t, double dt, bool force) const {
   const double end = model_.params.time.duration;
   Series vtu = particles_vtu_, csv = particles_csv_;
-  return (particles_pvd_ && due(vtu, t, dt, end, force)) || (csv.every > 0.0 && due(csv, t, dt, end, force));
+  ParticleSnapshotsDue d;
+  d.vtu = particles_pvd_ && due(vtu, t, dt, end, force);
+  d.csv = csv.every > 0.0 && due(csv, t, dt, end, force);
+  if (d.vtu) d.vtu_index = vtu.count - 1;
+  return d;
 }
 
 void OutputManager::snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force) {
   const double end = model_.params.time.duration;
   if (particles_pvd_ && due(particles_vtu_, t, dt, end, force)) {
-    const std::string name = fmt::format("particles/particles_{:06d}.vtu", particles_vtu_.count - 1);
-    write_particles_vtu(dir_ / name, p, t);
-    particles_pvd_->add(t, name);
+    const std::uint64_t index = particles_vtu_.count - 1;
+    if (pieces_ > 1) {
+      write_particles_pvtu(dir_, index, pieces_);
+      particles_pvd_->add(t, particle_pvtu_name(index));
+    } else {
+      const std::string name = fmt::format("particles/particles_{:06d}.vtu", index);
+      write_particles_vtu(dir_ / name, p, t);
+      particles_pvd_->add(t, name);
+    }
   }
   if (barriers_pvd_ && due(barriers_vtu_, t, dt, end, force)) {
     const std::string name = fmt::format("barriers/barriers_{:06d}.vtu", barriers_vtu_.count - 1);

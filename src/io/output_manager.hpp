@@ -2,7 +2,8 @@
 // OutputManager: decides when each output is due and writes it - particle and barrier VTU
 // series with their .pvd indexes, particle CSV snapshots, the global log and the barrier-group
 // log. Intervals are in simulated seconds (the global log: in steps). docs/output.md lists
-// every file and column.
+// every file and column. On several ranks rank 0 alone has one; the ranks write the pieces of
+// each particle VTU snapshot themselves (io/pvtu_writer.hpp) and this writes their .pvtu index.
 #include <type_traits>
 #include <cstdint>
 #include <filesystem>
@@ -33,22 +34,33 @@ struct GlobalLogRow {
   std::vector<double> open_system;
 };
 
+// The particle snapshots due now (OutputManager::particles_due).
+struct ParticleSnapshotsDue {
+  bool vtu = false;             // a particle VTU snapshot (on several ranks: its pieces and .pvtu)
+  bool csv = false;             // a particle CSV snapshot
+  std::uint64_t vtu_index = 0;  // -, its counter NNNNNN in the file names, when vtu
+};
+
 class OutputManager {
  public:
   // resume_time: continue the series of a run resumed from a checkpoint at that time (rows and
   // snapshots written after it by the interrupted run are dropped); none for a fresh run.
+  // pieces: the ranks of the run; more than one: each particle VTU snapshot is written as that
+  // many pieces (one per rank, written by the ranks) and a .pvtu index listing them, which
+  // snapshots() writes and particles.pvd lists.
   OutputManager(const Model& model, std::filesystem::path dir, const Barriers& barriers,
-                std::optional<double> resume_time = std::nullopt);
+                std::optional<double> resume_time = std::nullopt, int pieces = 1);
   ~OutputManager();
 
   // Writes whatever is due at time t (force = write every snapshot output now: the start and the
   // end of the run, which is written at the final time even when a periodic snapshot falls within
-  // half a step of it).
+  // half a step of it). With pieces > 1 a due particle VTU snapshot is written as its .pvtu index
+  // (the ranks have written its pieces), and p is read for the CSV snapshot only.
   void snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force);
   void global_log(const GlobalLogRow& row, const Particles& p, const InteractionStats& stats);
-  // Whether snapshots(t, dt, ..., force) would write a particle file (changes nothing): a run on
-  // several ranks gathers its particles only then.
-  bool particles_due(double t, double dt, bool force) const;
+  // The particle files snapshots(t, dt, ..., force) would write (changes nothing): a run on
+  // several ranks writes the pieces of a VTU snapshot and gathers its particles for a CSV one.
+  ParticleSnapshotsDue particles_due(double t, double dt, bool force) const;
   void removed(std::int64_t id, double t, const Vec3& x);
   void flush();
   // Checkpoints: when each series is next due.
@@ -75,6 +87,7 @@ class OutputManager {
   const Model& model_;
   std::filesystem::path dir_;
   std::optional<double> resume_time_;  // s, set when continuing a resumed run
+  int pieces_ = 1;                     // -, pieces per particle VTU snapshot (the ranks)
   Series particles_vtu_, barriers_vtu_, particles_csv_, barrier_log_;
   std::unique_ptr<PvdIndex> particles_pvd_, barriers_pvd_;
   std::unique_ptr<CsvLog> log_, groups_, removed_;

@@ -1,5 +1,6 @@
 #include "io/vtu_writer.hpp"
 
+#include <array>
 #include <charconv>
 #include <cstdint>
 #include <ostream>
@@ -68,15 +69,15 @@ class TextSink {
 };
 
 // Opening tag of a DataArray; `components` = 0 omits NumberOfComponents (scalar).
-void open_array(TextSink& s, std::string_view type, std::string_view name, int components) {
+void open_array(TextSink& s, const VtuArray& a) {
   s.text("        <DataArray type=\"");
-  s.text(type);
+  s.text(a.type);
   s.text("\" Name=\"");
-  s.text(name);
+  s.text(a.name);
   s.text("\"");
-  if (components > 0) {
+  if (a.components > 0) {
     s.text(" NumberOfComponents=\"");
-    s.number(std::int64_t{components});
+    s.number(std::int64_t{a.components});
     s.text("\"");
   }
   s.text(" format=\"ascii\">\n");
@@ -86,27 +87,27 @@ void close_array(TextSink& s) {
   s.text("        </DataArray>\n");
 }
 
-void scalar_array(TextSink& s, std::string_view name, std::span<const double> a) {
-  open_array(s, "Float64", name, 0);
-  for (double v : a) s.value(v);
+void scalar_array(TextSink& s, const VtuArray& a, std::span<const double> v) {
+  open_array(s, a);
+  for (double x : v) s.value(x);
   close_array(s);
 }
-void int_array(TextSink& s, std::string_view name, std::string_view type, std::span<const int> a) {
-  open_array(s, type, name, 0);
-  for (int v : a) s.value(std::int64_t{v});
+void int_array(TextSink& s, const VtuArray& a, std::span<const int> v) {
+  open_array(s, a);
+  for (int x : v) s.value(std::int64_t{x});
   close_array(s);
 }
-void id_array(TextSink& s, std::string_view name, std::span<const std::int64_t> a) {
-  open_array(s, "Int64", name, 0);
-  for (std::int64_t v : a) s.value(v);
+void id_array(TextSink& s, const VtuArray& a, std::span<const std::int64_t> v) {
+  open_array(s, a);
+  for (std::int64_t x : v) s.value(x);
   close_array(s);
 }
-void vector_array(TextSink& s, std::string_view name, std::span<const Vec3> a) {
-  open_array(s, "Float64", name, 3);
-  for (const Vec3& v : a) {
-    s.value(v.x);
-    s.value(v.y);
-    s.value(v.z);
+void vector_array(TextSink& s, const VtuArray& a, std::span<const Vec3> v) {
+  open_array(s, a);
+  for (const Vec3& x : v) {
+    s.value(x.x);
+    s.value(x.y);
+    s.value(x.z);
     s.text("\n");  // one tuple per line keeps the file readable
   }
   close_array(s);
@@ -132,14 +133,14 @@ void header(TextSink& s, double time, std::size_t points, std::size_t cells) {
 // Cells that each use `per_cell` consecutive points of their own, all of one VTK type.
 void cells(TextSink& s, std::size_t count, int per_cell, int vtk_type) {
   s.text("      <Cells>\n");
-  open_array(s, "Int64", "connectivity", 0);
+  open_array(s, {"connectivity", "Int64", 0});
   const auto n = static_cast<std::int64_t>(count) * per_cell;
   for (std::int64_t k = 0; k < n; ++k) s.value(k);
   close_array(s);
-  open_array(s, "Int64", "offsets", 0);
+  open_array(s, {"offsets", "Int64", 0});
   for (std::int64_t c = 1; c <= static_cast<std::int64_t>(count); ++c) s.value(c * per_cell);
   close_array(s);
-  open_array(s, "UInt8", "types", 0);
+  open_array(s, {"types", "UInt8", 0});
   for (std::size_t c = 0; c < count; ++c) s.value(std::int64_t{vtk_type});
   close_array(s);
   s.text("      </Cells>\n");
@@ -154,27 +155,59 @@ void footer(TextSink& s) {
 constexpr int kVtkVertex = 1;
 constexpr int kVtkTriangle = 5;
 
+// The particle point arrays; write_particles_vtu writes each by its index here, in this order.
+enum ParticleArray : std::size_t {
+  kId,
+  kRadius,
+  kMaterial,
+  kFixed,
+  kVelocity,
+  kAngularVelocity,
+  kForce,
+  kTemperature,
+  kCharge,
+  kOrientation,
+  kParticleArrayCount
+};
+constexpr std::array<VtuArray, kParticleArrayCount> kParticleArrays{{
+    {"id", "Int64", 0},                  // -
+    {"radius", "Float64", 0},            // m
+    {"material", "Int32", 0},            // index into the scene's materials
+    {"fixed", "UInt8", 0},               // 1: prescribed motion
+    {"velocity", "Float64", 3},          // m/s
+    {"angular_velocity", "Float64", 3},  // rad/s
+    {"force", "Float64", 3},             // N
+    {"temperature", "Float64", 0},       // K
+    {"charge", "Float64", 0},            // C
+    {"orientation", "Float64", 4},       // unit quaternion (w, x, y, z), body -> world
+}};
+
 }  // namespace
+
+std::span<const VtuArray> particle_point_arrays() { return kParticleArrays; }
 
 void write_particles_vtu(const std::filesystem::path& file, const Particles& p, double time) {
   write_file_atomically(file, [&](std::ostream& os) {
     TextSink s(os);
     const std::size_t n = p.size();  // the owned particles: ghosts (periodic images) are not written
     const auto owned = [n](const auto& a) { return std::span(a.data(), n); };
+    const auto& a = kParticleArrays;  // names, types, units
     header(s, time, n, n);
-    s.text("      <PointData Scalars=\"radius\" Vectors=\"velocity\">\n");
-    id_array(s, "id", owned(p.id));                        // -
-    scalar_array(s, "radius", owned(p.radius));            // m
-    int_array(s, "material", "Int32", owned(p.material));  // index into the scene's materials
-    int_array(
-        s, "fixed", "UInt8",
-        std::vector<int>(p.fixed.begin(), p.fixed.begin() + static_cast<std::ptrdiff_t>(n)));  // 1: prescribed motion
-    vector_array(s, "velocity", owned(p.v));                                                   // m/s
-    vector_array(s, "angular_velocity", owned(p.w));                                           // rad/s
-    vector_array(s, "force", owned(p.force));                                                  // N
-    scalar_array(s, "temperature", owned(p.T));                                                // K
-    scalar_array(s, "charge", owned(p.charge));                                                // C
-    open_array(s, "Float64", "orientation", 4);  // unit quaternion (w, x, y, z), body -> world
+    s.text("      <PointData Scalars=\"");
+    s.text(kParticleActiveScalars);
+    s.text("\" Vectors=\"");
+    s.text(kParticleActiveVectors);
+    s.text("\">\n");
+    id_array(s, a[kId], owned(p.id));
+    scalar_array(s, a[kRadius], owned(p.radius));
+    int_array(s, a[kMaterial], owned(p.material));
+    int_array(s, a[kFixed], std::vector<int>(p.fixed.begin(), p.fixed.begin() + static_cast<std::ptrdiff_t>(n)));
+    vector_array(s, a[kVelocity], owned(p.v));
+    vector_array(s, a[kAngularVelocity], owned(p.w));
+    vector_array(s, a[kForce], owned(p.force));
+    scalar_array(s, a[kTemperature], owned(p.T));
+    scalar_array(s, a[kCharge], owned(p.charge));
+    open_array(s, a[kOrientation]);
     for (const Quat& q : owned(p.q)) {
       s.value(q.w);
       s.value(q.x);
@@ -185,7 +218,7 @@ void write_particles_vtu(const std::filesystem::path& file, const Particles& p, 
     close_array(s);
     s.text("      </PointData>\n"
            "      <Points>\n");
-    open_array(s, "Float64", "Points", 3);  // m, centres
+    open_array(s, kVtuPoints);  // m, centres
     for (const Vec3& x : owned(p.x)) {
       s.value(x.x);
       s.value(x.y);
@@ -205,14 +238,14 @@ void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, do
     const std::size_t m = b.size();
     header(s, time, 3 * m, m);
     s.text("      <CellData Scalars=\"pressure\" Vectors=\"force\">\n");
-    id_array(s, "id", b.id);                  // -
-    int_array(s, "group", "Int32", b.group);  // index into group_names
-    vector_array(s, "force", b.force);        // N
-    vector_array(s, "moment", b.moment);      // N m, about the element centre
-    scalar_array(s, "pressure", b.pressure);  // Pa
+    id_array(s, {"id", "Int64", 0}, b.id);                    // -
+    int_array(s, {"group", "Int32", 0}, b.group);             // index into group_names
+    vector_array(s, {"force", "Float64", 3}, b.force);        // N
+    vector_array(s, {"moment", "Float64", 3}, b.moment);      // N m, about the element centre
+    scalar_array(s, {"pressure", "Float64", 0}, b.pressure);  // Pa
     // Elements with an activity window are all written (at their law's place); 0 marks the
     // switched-off ones, whose loads are zero.
-    if (b.timed()) int_array(s, "active", "UInt8", std::vector<int>(b.active.begin(), b.active.end()));
+    if (b.timed()) int_array(s, {"active", "UInt8", 0}, std::vector<int>(b.active.begin(), b.active.end()));
     // A rotating element's normal turns and its velocity varies over it: the one at its centre.
     if (b.rotating()) {
       std::vector<Vec3> normal(m), velocity(m);  // [M] -, m/s
@@ -220,15 +253,15 @@ void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, do
         normal[e] = b.current_normal(e);
         velocity[e] = b.surface_velocity(e, b.centre(e));
       }
-      vector_array(s, "normal", normal);
-      vector_array(s, "velocity", velocity);
+      vector_array(s, {"normal", "Float64", 3}, normal);
+      vector_array(s, {"velocity", "Float64", 3}, velocity);
     } else {
-      vector_array(s, "normal", b.normal);      // -, unit
-      vector_array(s, "velocity", b.velocity);  // m/s
+      vector_array(s, {"normal", "Float64", 3}, b.normal);      // -, unit
+      vector_array(s, {"velocity", "Float64", 3}, b.velocity);  // m/s
     }
     s.text("      </CellData>\n"
            "      <Points>\n");
-    open_array(s, "Float64", "Points", 3);  // m, current vertex positions
+    open_array(s, kVtuPoints);  // m, current vertex positions
     for (std::size_t e = 0; e < m; ++e)
       for (int k = 0; k < 3; ++k) {
         const Vec3 v = b.vertex(e, k);

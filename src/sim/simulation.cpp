@@ -284,9 +284,12 @@ void Simulation::snapshots(double h, bool force) {
     output_->snapshots(time_, h, scene_.particles, scene_.barriers, force);
     return;
   }
-  const bool due = particles_due(h, force);
-  // The barriers are the same on every rank (their loads summed): rank 0 writes them as they are.
-  const Particles all = due ? gathered() : Particles{};
+  const ParticleSnapshotsDue due = particles_due(h, force);
+  // A VTU snapshot: every rank writes its piece, rank 0 their .pvtu index (output_->snapshots). A
+  // CSV snapshot gathers the particles to rank 0. The barriers are the same on every rank (their
+  // loads summed): rank 0 writes them as they are.
+  if (due.vtu) write_piece(due.vtu_index);
+  const Particles all = due.csv ? gathered() : Particles{};
   if (output_) output_->snapshots(time_, h, all, scene_.barriers, force);
 }
 
@@ -298,10 +301,11 @@ std::string Simulation::open_system_summary() const {
 RunSummary Simulation::run() {
   const Params& prm = scene_.model.params;
   const std::filesystem::path dir = output_dir_for(scene_, options_);
-  const bool out = options_.write_output;  // on every rank; rank 0 alone writes
+  const bool out = options_.write_output;  // on every rank; rank 0 writes, the others their particle pieces
   if (out && root()) {
     output_ = std::make_unique<OutputManager>(scene_.model, dir, scene_.barriers,
-                                              resumed_ ? std::optional<double>(time_) : std::nullopt);
+                                              resumed_ ? std::optional<double>(time_) : std::nullopt,
+                                              comm_ ? comm_->size() : 1);
     if (!resume_output_state_.empty()) {
       BinaryReader r(resume_output_state_.data(), resume_output_state_.size());
       output_->restore(r);

@@ -22,6 +22,7 @@
 namespace mpdem {
 
 class OutputManager;
+struct ParticleSnapshotsDue;
 class Progress;
 class Inlets;
 class Sinks;
@@ -101,9 +102,12 @@ class Simulation {
   void refresh_stats();
   // Every rank's particles in id order on rank 0 (collective; empty on the other ranks).
   Particles gathered();
-  // Whether rank 0 writes a particle snapshot after a step of h (s) now, on every rank, and the
-  // signal that stops the run (0: none) if any rank received one (both collective).
-  bool particles_due(double h, bool force) const;
+  // The particle snapshots due after a step of h (s) now, on every rank, and the signal that stops
+  // the run (0: none) if any rank received one (both collective).
+  ParticleSnapshotsDue particles_due(double h, bool force) const;
+  // This rank's piece of particle VTU snapshot `index` (io/pvtu_writer.hpp); returns when every
+  // rank's is complete (collective).
+  void write_piece(std::uint64_t index);
   int stop_across_ranks() const;
   // Every rank's particles that reach into an inlet's volume (Inlets::reach), in id order, on
   // every rank (collective), and the particles of `fresh` this rank's brick holds.

@@ -1,14 +1,17 @@
 // Simulation over several ranks (docs/parallel.md): the decomposition of the scene, the global
-// scans and statistics, the particles gathered for output, the collective step controls.
+// scans and statistics, the particles gathered (or written in pieces) for output, the collective
+// step controls.
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 
 #include "io/input_error.hpp"
 #include "io/output_manager.hpp"
+#include "io/pvtu_writer.hpp"
 #include "parallel/brick_grid.hpp"
 #include "parallel/particle_buffer.hpp"
 #include "sim/simulation.hpp"
@@ -128,11 +131,25 @@ void Simulation::keep_own(Particles& fresh) const {
   fresh.compact(mine);
 }
 
-bool Simulation::particles_due(double h, bool force) const {
-  std::vector<std::byte> due{
-      std::byte{output_ && output_->particles_due(time_, h, force) ? std::uint8_t{1} : std::uint8_t{0}}};
-  comm_->broadcast(due, 0);
-  return due.at(0) != std::byte{0};
+ParticleSnapshotsDue Simulation::particles_due(double h, bool force) const {
+  ParticleSnapshotsDue due;
+  if (output_) due = output_->particles_due(time_, h, force);
+  const std::uint64_t fields[] = {due.vtu ? 1u : 0u, due.csv ? 1u : 0u, due.vtu_index};
+  std::vector<std::byte> bytes(sizeof fields);
+  std::memcpy(bytes.data(), fields, sizeof fields);
+  comm_->broadcast(bytes, 0);
+  std::uint64_t got[3] = {};
+  if (bytes.size() != sizeof got) throw std::runtime_error("truncated snapshot decision");
+  std::memcpy(got, bytes.data(), sizeof got);
+  return {got[0] != 0, got[1] != 0, got[2]};
+}
+
+void Simulation::write_piece(std::uint64_t index) {
+  // Rank 0 created the particles/ folder (OutputManager) before it broadcast this snapshot's
+  // decision (particles_due), which every rank has received.
+  const std::filesystem::path dir = output_dir_for(scene_, options_);
+  write_particles_piece(dir / particle_piece_name(index, comm_->rank()), scene_.particles, time_);
+  comm_->barrier();  // every piece complete before rank 0 lists them in the .pvtu
 }
 
 int Simulation::stop_across_ranks() const { return static_cast<int>(comm_->max(static_cast<double>(stop_signal()))); }

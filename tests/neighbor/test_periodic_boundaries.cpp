@@ -192,7 +192,9 @@ TEST(PeriodicBoundaries, StraddlingPairEqualsTheInteriorPair) {
     EXPECT_LE(rf, 1e-11);
     EXPECT_LE(rs, 1e-11);
     EXPECT_LE(rq, 1e-11);
-    if (fields) EXPECT_GT(peak_q, 0.0);
+    if (fields) {
+      EXPECT_GT(peak_q, 0.0);
+    }
   }
 }
 

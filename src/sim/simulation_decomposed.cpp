@@ -32,7 +32,6 @@ void refuse_unsupported(const Scene& scene, const Communicator& comm) {
         fmt::format("{} on {} ranks is not available yet (docs/parallel.md); run it on one rank", what, comm.size()));
   };
   if (prm.near_field.cutoff > 0.0) refuse("near_field.cutoff", "the near field");
-  if (prm.time.adaptive) refuse("time.adaptive", "adaptive time steps");
 }
 }  // namespace
 

@@ -136,6 +136,69 @@ TEST_P(DecomposedRun, FallingColumnMigratesAndFollowsTheOneRankRun) {
   }
 }
 
+// Adaptive steps (the trapezoidal rule, physics.md section 10): every rank takes the step
+// factor from the convergence norms summed over all ranks, so the ranks agree bit for bit on
+// every step size and every redone step. Against the one-rank run: the norms differ in their
+// last bits, so an iteration count or a redo decided at its threshold can differ, and with it
+// the step sequence; both runs are the same trapezoidal rule to its fixed-point tolerance, so
+// the states agree to about that (docs/parallel.md: 2e-7 to 4e-7 over these 4 ms, 8e-4 over 10 ms).
+TEST(DecomposedRun, AdaptiveStepsFollowTheOneRankRun) {
+  const Communicator& world = Communicator::world();
+  auto scene = [] {
+    Scene s = cluster(Integrator::Trapezoidal, 4e-6);
+    s.model.params.time.adaptive = true;
+    s.model.params.time.dt_min = 1e-8;
+    s.model.params.time.dt_max = 2e-5;
+    s.model.params.time.desired_iterations = 4;
+    return s;
+  };
+  Simulation one(scene(), RunOptions{{}, false, false, &Communicator::single()});
+  Simulation many(scene(), RunOptions{{}, false, false, &world});
+  const double end = 0.004;           // s
+  double dt_min = 1.0, dt_max = 0.0;  // s, of the one-rank run
+  int steps = 0;
+  while (one.time() < end) {
+    one.advance_adaptive(end - one.time());
+    ++steps;
+    dt_min = std::min(dt_min, one.current_dt());
+    dt_max = std::max(dt_max, one.current_dt());
+  }
+  std::uint64_t differing = 0;  // steps whose size some rank saw otherwise
+  while (many.time() < end) {   // (collective: every rank takes this loop as often)
+    many.advance_adaptive(end - many.time());
+    differing += world.min(many.current_dt()) != world.max(many.current_dt()) ? 1 : 0;
+  }
+  double worst = 0.0;
+  std::uint64_t matched = 0;
+  double vmax = 0.0;
+  for (std::size_t i = 0; i < one.particles().size(); ++i) vmax = std::max(vmax, norm(one.particles().v[i]));
+  for (std::size_t i = 0; i < many.particles().size(); ++i)
+    for (std::size_t j = 0; j < one.particles().size(); ++j)
+      if (one.particles().id[j] == many.particles().id[i]) {
+        ++matched;
+        worst = std::max({worst, norm(many.particles().x[i] - one.particles().x[j]) / 1e-3,
+                          norm(many.particles().v[i] - one.particles().v[j]) / vmax});
+      }
+  worst = world.max(worst);
+  matched = world.sum(matched);
+  const auto rank_steps = static_cast<double>(many.steps());
+  if (world.rank() == 0)
+    std::printf("[%d ranks, adaptive] one rank: %d steps (dt %.3g..%.3g s), %llu redone; all: %llu steps, %llu "
+                "redone; max rel diff x/v %.2e\n",
+                world.size(), steps, dt_min, dt_max, static_cast<unsigned long long>(one.redone_steps()),
+                static_cast<unsigned long long>(many.steps()), static_cast<unsigned long long>(many.redone_steps()),
+                worst);
+  const auto redone = static_cast<double>(many.redone_steps());
+  EXPECT_EQ(differing, 0u);
+  EXPECT_EQ(world.min(rank_steps), world.max(rank_steps));  // every rank took the same steps
+  EXPECT_EQ(world.min(redone), world.max(redone));
+  EXPECT_NEAR(many.time(), end, 1e-15);
+  EXPECT_GT(dt_max, 2.0 * dt_min);  // the step did adapt
+  EXPECT_GT(one.redone_steps(), 10u);
+  EXPECT_LT(worst, 5e-3);
+  EXPECT_EQ(matched, one.particles().size());
+}
+
 INSTANTIATE_TEST_SUITE_P(Integrators, DecomposedRun, ::testing::Values(Integrator::Verlet, Integrator::Trapezoidal),
                          integrator_name);
 

@@ -2,8 +2,6 @@
 
 #include <fmt/core.h>
 
-#include <algorithm>
-#include <numeric>
 #include <ostream>
 #include <vector>
 
@@ -31,10 +29,7 @@ std::string particle_piece_name(std::uint64_t index, int rank) { return fmt::for
 void write_particles_piece(const std::filesystem::path& file, const Particles& p, double time) {
   Particles sorted = p;
   sorted.drop_ghosts();
-  std::vector<std::uint32_t> order(sorted.size());
-  std::iota(order.begin(), order.end(), std::uint32_t{0});
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return sorted.id[a] < sorted.id[b]; });
-  sorted.permute(order);
+  sorted.sort_by_id();
   write_particles_vtu(file, sorted, time);
 }
 

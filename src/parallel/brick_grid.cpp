@@ -60,6 +60,12 @@ int BrickGrid::owner(const Vec3& x) const {
   return rank_at({brick_along(0, x.x), brick_along(1, x.y), brick_along(2, x.z)});
 }
 
+std::vector<char> BrickGrid::owned(std::span<const Vec3> x, int rank) const {
+  std::vector<char> mask(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) mask[i] = owner(x[i]) == rank ? 1 : 0;
+  return mask;
+}
+
 int BrickGrid::neighbour(int rank, int c, int dir) const {
   std::array<int, 3> k = coords(rank);
   const auto cc = static_cast<std::size_t>(c);

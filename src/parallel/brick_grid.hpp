@@ -5,6 +5,7 @@
 // periodic axis the bricks tile the period and the first and last are neighbours. Ranks are
 // numbered x fastest: rank = cx + dims_x (cy + dims_y cz).
 #include <array>
+#include <span>
 #include <vector>
 
 #include "core/vec3.hpp"
@@ -30,6 +31,8 @@ class BrickGrid {
   // above the last dims - 1 (the outer bricks are unbounded; a periodic coordinate is wrapped first).
   int brick_along(int c, double x) const;
   int owner(const Vec3& x) const;
+  // mask[i] = 1 when `rank` owns the point x[i] (the particles a rank keeps).
+  std::vector<char> owned(std::span<const Vec3> x, int rank) const;
   // The rank next to `rank` along axis c in direction dir (-1 or +1): across the periodic face
   // for the first and last brick of a periodic axis; -1 when there is none.
   int neighbour(int rank, int c, int dir) const;

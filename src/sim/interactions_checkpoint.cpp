@@ -124,10 +124,11 @@ void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b)
   read_section(r, "barrier_contacts", [&](BinaryReader& in) { pb_->restore(in, p.size()); });
   const AttachedRecords barrier = pb_->export_records(p);
   if (!counts_sums) pb_->clear_overflows();
-  std::vector<char> keep(p.size());
+  const std::vector<char> keep = search_->halo()->grid().owned(std::span<const Vec3>(p.x.data(), p.size()),
+                                                               comm_->rank());
   std::unordered_set<std::int64_t> mine;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if ((keep[i] = search_->halo()->grid().owner(p.x[i]) == comm_->rank())) mine.insert(p.id[i]);
+    if (keep[i]) mine.insert(p.id[i]);
   read_section(r, "neighbor", [&](BinaryReader& in) { search_->restore(in, p, b, &keep); });
   std::vector<PairHistory> pairs;
   read_section(r, "particle_contacts", [&](BinaryReader& in) { pairs = in.vector<PairHistory>(); });

@@ -53,9 +53,7 @@ void Simulation::decompose(const Communicator& comm) {
     if (p.size() == 0) lo = hi = Vec3{};
   }
   const BrickGrid grid(comm.size(), lo, hi, d.periodic);
-  std::vector<char> mine(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i) mine[i] = grid.owner(p.x[i]) == comm.rank();
-  p.compact(mine);
+  p.compact(grid.owned(std::span<const Vec3>(p.x.data(), p.size()), comm.rank()));
   comm_ = &comm;
   interactions_->decompose(comm, grid);
   trapezoidal_.set_communicator(&comm);
@@ -90,10 +88,7 @@ Particles in_id_order(const std::vector<std::vector<std::byte>>& messages) {
     std::size_t pos = 0;
     unpack_particles(all, bytes, pos);
   }
-  std::vector<std::uint32_t> order(all.size());
-  std::iota(order.begin(), order.end(), std::uint32_t{0});
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return all.id[a] < all.id[b]; });
-  all.permute(order);
+  all.sort_by_id();
   return all;
 }
 }  // namespace
@@ -125,9 +120,7 @@ Particles Simulation::near_inlets() {
 
 void Simulation::keep_own(Particles& fresh) const {
   const BrickGrid& grid = interactions_->search().halo()->grid();
-  std::vector<char> mine(fresh.size());
-  for (std::size_t i = 0; i < fresh.size(); ++i) mine[i] = grid.owner(fresh.x[i]) == comm_->rank();
-  fresh.compact(mine);
+  fresh.compact(grid.owned(std::span<const Vec3>(fresh.x.data(), fresh.size()), comm_->rank()));
 }
 
 ParticleSnapshotsDue Simulation::particles_due(double h, bool force) const {

@@ -1,6 +1,9 @@
 #include "state/particles.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <numbers>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -44,6 +47,13 @@ void Particles::add(std::int64_t pid, int mat, double r, double rho, const Vec3&
   v[i] = vel;
   q[i] = Quat{};
   update_mass(i, rho);
+}
+
+void Particles::sort_by_id() {
+  std::vector<std::uint32_t> order(size());
+  std::iota(order.begin(), order.end(), std::uint32_t{0});
+  std::sort(order.begin(), order.end(), [this](std::uint32_t a, std::uint32_t b) { return id[a] < id[b]; });
+  permute(order);
 }
 
 void Particles::permute(const std::vector<std::uint32_t>& order) {

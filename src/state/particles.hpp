@@ -65,6 +65,8 @@ struct Particles {
   void update_mass(std::size_t i, double rho);
   // Reorders every array: new index k holds old particle order[k].
   void permute(const std::vector<std::uint32_t>& order);
+  // Reorders every array by ascending id (outputs that must not depend on the particle order).
+  void sort_by_id();
   // Keeps particles whose keep[i] is true, in order.
   void compact(const std::vector<char>& keep);
   // True when some owned particle is fixed: the integrators take their masked paths only then.

@@ -29,28 +29,12 @@ SHARED="${SHARED:-$ROOT/../shared/bench}"
 BEDS=("$@")
 [ ${#BEDS[@]} -gt 0 ] || BEDS=(20k)
 
-# --- tools -----------------------------------------------------------------------------------
-need=()
-command -v liggghts >/dev/null 2>&1 || need+=(liggghts)
-command -v mpirun >/dev/null 2>&1 || need+=(openmpi-bin)
-[ -x /usr/bin/time ] || need+=(time)
-if [ ${#need[@]} -gt 0 ]; then
-  if [ "${NO_INSTALL:-0}" = 1 ]; then echo "missing: ${need[*]}" >&2; exit 2; fi
-  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
-  export DEBIAN_FRONTEND=noninteractive
-  $SUDO apt-get update -q >/dev/null
-  $SUDO apt-get install -y -q --no-install-recommends "${need[@]}" >/dev/null
-fi
+# shellcheck source=bench_lib.sh
+. "$ROOT/scripts/bench_lib.sh"
+bench_tools
 [ -x "$MPDEM" ] || { echo "no mpdem executable at $MPDEM (build it, or set MPDEM)" >&2; exit 2; }
 "$MPDEM" bench --help >/dev/null 2>&1 || { echo "$MPDEM has no 'bench' subcommand" >&2; exit 2; }
 mkdir -p "$WORK"
-PY=/usr/bin/python3
-
-median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{a[NR]=$1} END {if (NR%2) print a[(NR+1)/2]; else print (a[NR/2]+a[NR/2+1])/2}'; }
-# value of key=... in a BENCH_RESULT / BENCH_STATE line
-field() { tr ' ' '\n' | sed -n "s/^$1=//p" | head -1; }
-peak_kib() { sed -n 's/.*Maximum resident set size (kbytes): *//p' "$1" | tail -1; }
-
 status=0
 for bed in "${BEDS[@]}"; do
   case "$bed" in
@@ -58,8 +42,7 @@ for bed in "${BEDS[@]}"; do
     100k) steps="${STEPS:-2000}" ;;
     *) echo "unknown bed '$bed' (20k or 100k)" >&2; exit 2 ;;
   esac
-  data="$WORK/bed$bed.data"
-  [ -s "$data" ] || gzip -dc "$SHARED/bed$bed.data.gz" > "$data"
+  data=$(bed_file "$bed" "$WORK" "$SHARED")
   n=$(awk '$2 == "atoms" {print $1; exit}' "$data")
   echo "== bed $bed: $n particles, $RELAX untimed + $steps timed steps, $RUNS runs per configuration =="
 
@@ -71,21 +54,11 @@ for bed in "${BEDS[@]}"; do
       # LIGGGHTS: "Loop time" of the timed run; one MPI rank per thread. Memory: every rank's own
       # peak RSS (GNU time around each rank), summed - the whole job's memory, like one mpdem process.
       log="$WORK/liggghts_${bed}_np${th}_r$r"
-      rm -f "$log".rank*
-      cmd=(liggghts -in "$SHARED/liggghts_bench.in" -log "$log.log" -var data "$data" -var nrelax "$RELAX"
-           -var nsteps "$steps" -var dt 4e-6)
-      wrap=(sh -c '/usr/bin/time -f "%M" -o "$0.rank${OMPI_COMM_WORLD_RANK:-0}" "$@"' "$log")
-      if [ "$th" -gt 1 ]; then
-        (cd "$WORK" && OMP_NUM_THREADS=1 mpirun -np "$th" --allow-run-as-root --oversubscribe "${wrap[@]}" "${cmd[@]}" > "$log.out" 2>&1)
-      else
-        (cd "$WORK" && OMP_NUM_THREADS=1 "${wrap[@]}" "${cmd[@]}" > "$log.out" 2>&1)
-      fi
-      secs=$(awk '/TIMED_RUN_BEGIN/ {t=1} t && /^Loop time of/ {print $4; exit}' "$log.out")
-      SAMPLES[liggghts,$th]+=" $(awk -v s="$secs" -v n="$n" -v k="$steps" 'BEGIN {printf "%.3f", 1e9 * s / (n * k)}')"
+      SAMPLES[liggghts,$th]+=" $(liggghts_ns "$data" "$steps" "$RELAX" "$th" "$log")"
       MEMS[liggghts,$th]+=" $(cat "$log".rank* | awk '{s += $1} END {print s}')"
       CONT[liggghts,$th]=$(grep '^BENCH_STATE' "$log.out" | field contacts_per_particle)
       REB[liggghts,$th]="-"; EVAL[liggghts,$th]=1
-      echo "  liggghts np=$th run $r: ${secs} s timed, contacts/particle ${CONT[liggghts,$th]}"
+      echo "  liggghts np=$th run $r: $(echo "${SAMPLES[liggghts,$th]}" | awk '{print $NF}') ns/particle-step, contacts/particle ${CONT[liggghts,$th]}"
 
       for integ in verlet trapezoidal; do
         # Alternate which binary runs first after LIGGGHTS (whose MPI job may still be winding down).

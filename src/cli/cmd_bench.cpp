@@ -1,5 +1,6 @@
 // `mpdem bench`: the settled-bed benchmark driver (docs/benchmark.md). The scene is the one of the
-// shared bench README, identical to the LIGGGHTS input liggghts_bench.in.
+// shared bench README, identical to the LIGGGHTS input liggghts_bench.in. Under mpirun the bed is
+// decomposed over the ranks like any run (docs/parallel.md); rank 0 reports the job's totals.
 #include <fmt/core.h>
 #include <omp.h>
 #include <sys/resource.h>
@@ -122,62 +123,70 @@ int bench_command(const BenchArgs& args) {
   }
   const std::size_t n = scene.particles.size();
 
-  Simulation sim(std::move(scene), RunOptions{{}, false, false});
+  const Communicator& comm = Communicator::world();
+  Simulation sim(std::move(scene), RunOptions{{}, false, false, &comm});
   for (long k = 0; k < a.relax; ++k) sim.advance(a.dt);
 
   const std::uint64_t rebuilds0 = sim.interactions().stats().rebuilds;
   const PhaseTimes times0 = sim.interactions().times();
   std::uint64_t evaluations = 0;
+  comm.barrier();  // every rank starts the timed steps together; the slowest one's time counts
   const auto t0 = std::chrono::steady_clock::now();
   for (long k = 0; k < a.steps; ++k) evaluations += static_cast<std::uint64_t>(sim.advance(a.dt).evaluations);
   const auto t1 = std::chrono::steady_clock::now();
   const PhaseTimes& times1 = sim.interactions().times();
 
-  const double seconds = std::chrono::duration<double>(t1 - t0).count();
+  const double seconds = comm.max(std::chrono::duration<double>(t1 - t0).count());
   const double psteps = static_cast<double>(n) * static_cast<double>(a.steps);
-  const InteractionStats& st = sim.interactions().stats();
+  const InteractionStats st = sim.interactions().global_stats();
   const std::uint64_t rebuilds = st.rebuilds - rebuilds0;
   const double pp_per_particle = n ? static_cast<double>(st.contacts_pp) / static_cast<double>(n) : 0.0;
   const double coordination = 2.0 * pp_per_particle;  // each contact counted at both particles
   const double pb_per_particle = n ? static_cast<double>(st.contacts_pb) / static_cast<double>(n) : 0.0;
   const double evals_per_step = a.steps ? static_cast<double>(evaluations) / static_cast<double>(a.steps) : 0.0;
-  const double ke = kinetic_energy(sim.particles());
-  const double zmax = top(sim.particles());
-  const long rss = peak_rss_kib();
+  const double ke = comm.sum(kinetic_energy(sim.particles()));
+  const double zmax = comm.max(top(sim.particles()));
+  const long rss = static_cast<long>(comm.sum(static_cast<std::uint64_t>(peak_rss_kib())));  // the job's
+  const double pairs = comm.sum(static_cast<double>(sim.interactions().search().pairs().num_pairs()));
+  const double cross = comm.sum(static_cast<double>(sim.interactions().search().blocks().num_cross()));
+  // Where the time goes (s in the timed steps): the slowest rank's parts.
+  double part[] = {times1.search - times0.search,     times1.fields - times0.fields, times1.pairs - times0.pairs,
+                   times1.barriers - times0.barriers, times1.other - times0.other,   times1.exchange - times0.exchange};
+  comm.max(part);
+  if (comm.rank() != 0) return 0;
   const std::string integ = a.integrator == "verlet" ? "verlet" : fmt::format("trapezoidal(phi={})", a.phi);
 
-  fmt::print("mpdem bench: {} particles, {} walls (triangles {}), {} threads, {}\n", n, 5, sim.barriers().size(),
-             a.threads, integ);
+  fmt::print("mpdem bench: {} particles, {} walls (triangles {}), {} ranks x {} threads, {}\n", n, 5,
+             sim.barriers().size(), comm.size(), a.threads, integ);
   fmt::print("  steps: {} untimed + {} timed, dt = {:g} s, skin = {:g} m\n", a.relax, a.steps, a.dt, a.skin);
   fmt::print("  wall time of timed steps   {:.3f} s\n", seconds);
   fmt::print("  throughput                 {:.4g} particle-steps/s\n", seconds > 0 ? psteps / seconds : 0.0);
   fmt::print("  cost                       {:.1f} ns/particle-step\n", psteps > 0 ? 1e9 * seconds / psteps : 0.0);
   fmt::print("  force evaluations / step   {:.2f}\n", evals_per_step);
   fmt::print("  neighbour rebuilds (timed) {}\n", rebuilds);
-  fmt::print("  listed pairs per particle  {:.3f}\n",
-             n ? static_cast<double>(sim.interactions().search().pairs().num_pairs()) / static_cast<double>(n) : 0.0);
+  fmt::print("  listed pairs per particle  {:.3f}\n", n ? pairs / static_cast<double>(n) : 0.0);
   fmt::print("  listed pairs across blocks {:.1f}% (their second member's share goes through a buffer)\n",
-             100.0 * static_cast<double>(sim.interactions().search().blocks().num_cross()) /
-                 std::max(1.0, static_cast<double>(sim.interactions().search().pairs().num_pairs())));
+             100.0 * cross / std::max(1.0, pairs));
   fmt::print("  contacts per particle      {:.3f} (coordination 2 pp/N; pp/N = {:.3f}, walls/N = {:.3f})\n",
              coordination, pp_per_particle, pb_per_particle);
   fmt::print("  final kinetic energy       {:.4g} J, top of bed z = {:.6g} m\n", ke, zmax);
-  fmt::print("  peak RSS                   {:.1f} MiB\n", static_cast<double>(rss) / 1024.0);
+  fmt::print("  peak RSS                   {:.1f} MiB{}\n", static_cast<double>(rss) / 1024.0,
+             comm.serial() ? "" : " (sum over the ranks)");
   // Where the time goes, ns per particle-step: the evaluation's parts, and the rest of the step
-  // (integration, the per-step checks).
-  const auto per = [&](double t1s, double t0s) { return psteps > 0 ? 1e9 * (t1s - t0s) / psteps : 0.0; };
-  const double eval = per(times1.search + times1.fields + times1.pairs + times1.barriers + times1.other,
-                          times0.search + times0.fields + times0.pairs + times0.barriers + times0.other);
+  // (integration, the per-step checks); exchange: ghosts and barrier loads between the ranks,
+  // with the waits for the others.
+  const auto per = [&](double t) { return psteps > 0 ? 1e9 * t / psteps : 0.0; };
+  const double eval = per(part[0] + part[1] + part[2] + part[3] + part[4] + part[5]);
   fmt::print("  ns/particle-step by part   search {:.1f}, fields {:.1f}, pairs {:.1f}, barriers {:.1f}, other {:.1f}, "
-             "integration + checks {:.1f}\n",
-             per(times1.search, times0.search), per(times1.fields, times0.fields), per(times1.pairs, times0.pairs),
-             per(times1.barriers, times0.barriers), per(times1.other, times0.other),
+             "exchange {:.1f}, integration + checks {:.1f}\n",
+             per(part[0]), per(part[1]), per(part[2]), per(part[3]), per(part[4]), per(part[5]),
              psteps > 0 ? 1e9 * seconds / psteps - eval : 0.0);
   fmt::print(
-      "BENCH_RESULT code=mpdem integrator={} threads={} particles={} steps={} seconds={:.6f} psteps_per_s={:.6g} "
+      "BENCH_RESULT code=mpdem integrator={} ranks={} threads={} particles={} steps={} seconds={:.6f} "
+      "psteps_per_s={:.6g} "
       "ns_per_pstep={:.4f} evals_per_step={:.4f} rebuilds={} coordination={:.5f} wall_contacts_per_particle={:.5f} "
       "ke={:.6g} zmax={:.9g} peak_rss_kib={}\n",
-      a.integrator == "verlet" ? "verlet" : "trapezoidal", a.threads, n, a.steps, seconds,
+      a.integrator == "verlet" ? "verlet" : "trapezoidal", comm.size(), a.threads, n, a.steps, seconds,
       seconds > 0 ? psteps / seconds : 0.0, psteps > 0 ? 1e9 * seconds / psteps : 0.0, evals_per_step, rebuilds,
       coordination, pb_per_particle, ke, zmax, rss);
   return 0;

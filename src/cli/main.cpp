@@ -66,14 +66,17 @@ int dispatch(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   const mpdem::Communicator& comm = mpdem::Communicator::world();
-  if (!comm.serial() && !*run_cmd) {
+  if (!comm.serial() && !*run_cmd && !*bench_cmd) {
     if (comm.rank() == 0)
-      fmt::print(stderr, "error: only `mpdem run` runs on several ranks (mpirun -np {})\n", comm.size());
+      fmt::print(stderr, "error: only `mpdem run` and `mpdem bench` run on several ranks (mpirun -np {})\n",
+                 comm.size());
     return 2;
   }
   // Several ranks: bad input is found by every rank alike (each reads the whole scene): rank 0
-  // reports it and every rank exits 2. Any other failure may be one rank's alone; it is reported
-  // with the rank and stops all ranks (MPI_Abort), so none waits forever for the others.
+  // reports it and every rank exits 2. A RunError is decided on every rank alike too (from values
+  // reduced over the ranks; its message names the rank that holds the culprit): rank 0 reports
+  // it and every rank exits 1. Any other failure may be one rank's alone; it is reported with the
+  // rank and stops all ranks (MPI_Abort), so none waits forever for the others.
   const auto fail = [&](int code, const std::string& text) {
     if (comm.serial()) {
       fmt::print(stderr, "\nerror: {}\n", text);
@@ -99,7 +102,9 @@ int dispatch(int argc, char** argv) {
                  mpdem::cli::resume_command(argc > 0 ? argv[0] : "mpdem", run, e.checkpoint));
     return 128 + e.signal;
   } catch (const mpdem::RunError& e) {
-    return fail(1, e.what());
+    if (comm.serial()) return fail(1, e.what());
+    if (comm.rank() == 0) fmt::print(stderr, "\nerror: {}\n", e.what());
+    return 1;
   } catch (const std::exception& e) {
     return fail(1, e.what());
   }

@@ -11,9 +11,9 @@ namespace fs = std::filesystem;
 
 namespace {
 // Everything a run writes into its output folder (docs/output.md).
-constexpr std::array<std::string_view, 11> kOutputs{
+constexpr std::array<std::string_view, 12> kOutputs{
     "particles",          "particles.pvd", "barriers",       "barriers.pvd",    "particles_csv", "log.csv",
-    "barrier_groups.csv", "removed.csv",   "checkpoint.bin", "thermal_log.csv", "warnings.txt"};
+    "barrier_groups.csv", "removed.csv",   "checkpoint.bin", "thermal_log.csv", "warnings.txt",  "balance.csv"};
 }  // namespace
 
 void prepare_output_folder(const fs::path& dir, bool overwrite) {

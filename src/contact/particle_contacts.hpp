@@ -46,6 +46,7 @@ struct OverlapReport {
   std::int64_t particle = -1;  // id of the (first) particle
   std::int64_t other = -1;     // id of the other particle, or -1
   std::int64_t element = -1;   // id of the barrier element, or -1
+  int rank = -1;               // rank that holds the particle (several ranks; -1 on one)
 };
 
 class ParticleContacts {

@@ -1,5 +1,6 @@
 #include "integrate/trapezoidal.hpp"
 #include "core/parallel.hpp"
+#include "parallel/gather.hpp"
 
 #include <cmath>
 
@@ -258,6 +259,15 @@ void TrapezoidalIntegrator::reject(Particles& p, StepReport& rep) const {
       biggest = c;
       rep.worst_particle = p.id[i];
     }
+  }
+  if (comm_ && !comm_->serial()) {  // the largest change over all ranks, so every rank names it
+    struct Worst {
+      double change;
+      std::int64_t id;
+    };
+    rep.worst_particle = best_across(*comm_, Worst{biggest, rep.worst_particle}, [](const Worst& a, const Worst& b) {
+                           return a.change > b.change;
+                         }).first.id;
   }
   restore_start(p);
 }

@@ -201,10 +201,15 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
   }
 }
 
-void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const InteractionStats& s) {
-  const StateScan scan = scan_state(p, model_.params.fields, DomainParams{});
-  const ParticleEnergy& e = scan.energy;
-  const double potential = e.potential + scan.electric;  // J, gravitational + electric
+ParticleTotals particle_totals(const Model& model, const Particles& p) {
+  const StateScan scan = scan_state(p, model.params.fields, DomainParams{});
+  return {scan.energy, scan.electric, static_cast<double>(p.size()),
+          model.params.analysis.thermal ? thermal_energy(model, p) : 0.0};
+}
+
+void OutputManager::global_log(const GlobalLogRow& r, const ParticleTotals& t, const InteractionStats& s) {
+  const ParticleEnergy& e = t.energy;
+  const double potential = e.potential + t.electric;  // J, gravitational + electric
   const double nf = near_field_ ? s.near_field_energy : 0.0;
   const double total = e.kinetic + e.rotational + potential + s.elastic_energy + s.damping_dissipated +
                        s.friction_dissipated + nf - s.barrier_work - s.fixed_work;
@@ -215,7 +220,7 @@ void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const 
                           static_cast<double>(r.report ? r.report->evaluations : 0),
                           static_cast<double>(r.evaluations_total),
                           static_cast<double>(r.redone_steps),
-                          static_cast<double>(p.size()),
+                          t.count,
                           static_cast<double>(r.removed_total),
                           static_cast<double>(s.contacts_pp),
                           static_cast<double>(s.contacts_pb),
@@ -232,28 +237,37 @@ void OutputManager::global_log(const GlobalLogRow& r, const Particles& p, const 
     row.push_back(s.heat_to_barriers);
     row.push_back(s.heat_convected);
     row.push_back(s.heat_radiated);
-    row.push_back(thermal_energy(model_, p));
+    row.push_back(t.thermal);
   }
   row.insert(row.end(), r.open_system.begin(), r.open_system.end());
   log_->row(row);
 }
 
+std::unique_ptr<CsvLog> OutputManager::open_on_first_row(const char* name, std::vector<std::string> columns) const {
+  const fs::path f = dir_ / name;
+  const bool resume = resume_time_ && fs::exists(f);
+  if (resume) keep_rows_until(f, *resume_time_);
+  return std::make_unique<CsvLog>(f, std::move(columns), resume ? CsvLog::Open::append : CsvLog::Open::replace);
+}
+
 void OutputManager::removed(std::int64_t id, double t, const Vec3& x) {
-  if (!removed_) {
-    const fs::path f = dir_ / "removed.csv";
-    const bool resume = resume_time_ && fs::exists(f);
-    if (resume) keep_rows_until(f, *resume_time_);
-    removed_ = std::make_unique<CsvLog>(f, std::vector<std::string>{"time", "id", "x", "y", "z"},
-                                        resume ? CsvLog::Open::append : CsvLog::Open::replace);
-  }
+  if (!removed_) removed_ = open_on_first_row("removed.csv", {"time", "id", "x", "y", "z"});
   const double row[] = {t, static_cast<double>(id), x.x, x.y, x.z};
   removed_->row(row);
+}
+
+void OutputManager::balance(const BalanceRow& r) {
+  if (!balance_) balance_ = open_on_first_row("balance.csv", {"time", "step", "ranks", "imbalance", "moved"});
+  const double row[] = {r.time, static_cast<double>(r.step), static_cast<double>(r.ranks), r.imbalance,
+                        r.moved ? 1.0 : 0.0};
+  balance_->row(row);
 }
 
 void OutputManager::flush() {
   log_->flush();
   if (groups_) groups_->flush();
   if (removed_) removed_->flush();
+  if (balance_) balance_->flush();
 }
 
 }  // namespace mpdem

@@ -15,6 +15,7 @@
 #include "integrate/step_report.hpp"
 #include "io/binary_stream.hpp"
 #include "model/scene.hpp"
+#include "sim/energy.hpp"
 #include "sim/interactions.hpp"
 
 namespace mpdem {
@@ -33,6 +34,15 @@ struct GlobalLogRow {
   // The inlets' and sinks' columns (Inlets::log_columns, Sinks::log_columns), in that order.
   std::vector<double> open_system;
 };
+
+// The sums over the particles in a global log row; on several ranks each rank's, summed over them.
+struct ParticleTotals {
+  ParticleEnergy energy;  // J, kinetic, rotational, gravitational
+  double electric = 0.0;  // J, potential in the uniform electric field
+  double count = 0.0;     // particles
+  double thermal = 0.0;   // J, sum m c T (with [analysis] thermal; else 0)
+};
+ParticleTotals particle_totals(const Model& model, const Particles& p);
 
 // The particle snapshots due now (OutputManager::particles_due).
 struct ParticleSnapshotsDue {
@@ -57,11 +67,20 @@ class OutputManager {
   // half a step of it). With pieces > 1 a due particle VTU snapshot is written as its .pvtu index
   // (the ranks have written its pieces), and p is read for the CSV snapshot only.
   void snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force);
-  void global_log(const GlobalLogRow& row, const Particles& p, const InteractionStats& stats);
+  void global_log(const GlobalLogRow& row, const ParticleTotals& totals, const InteractionStats& stats);
   // The particle files snapshots(t, dt, ..., force) would write (changes nothing): a run on
   // several ranks writes the pieces of a VTU snapshot and gathers its particles for a CSV one.
   ParticleSnapshotsDue particles_due(double t, double dt, bool force) const;
   void removed(std::int64_t id, double t, const Vec3& x);
+  // A load-balance measurement of a run on several ranks: a row of balance.csv.
+  struct BalanceRow {
+    double time = 0.0;  // s
+    std::uint64_t step = 0;
+    int ranks = 1;
+    double imbalance = 1.0;  // -, max / mean cost per rank
+    bool moved = false;      // the cut planes moved (imbalance above the threshold)
+  };
+  void balance(const BalanceRow& r);
   void flush();
   // Checkpoints: when each series is next due.
   void save(BinaryWriter& w) const;
@@ -90,7 +109,9 @@ class OutputManager {
   int pieces_ = 1;                     // -, pieces per particle VTU snapshot (the ranks)
   Series particles_vtu_, barriers_vtu_, particles_csv_, barrier_log_;
   std::unique_ptr<PvdIndex> particles_pvd_, barriers_pvd_;
-  std::unique_ptr<CsvLog> log_, groups_, removed_;
+  std::unique_ptr<CsvLog> log_, groups_, removed_, balance_;
+  // dir_/name for the rows of this run: replaced, or after a resume kept up to its time and appended to.
+  std::unique_ptr<CsvLog> open_on_first_row(const char* name, std::vector<std::string> columns) const;
   std::size_t group_count_ = 0;
   std::vector<char> group_turns_;          // [groups] 1: a rotating element (torque and power columns)
   std::vector<std::size_t> group_column_;  // [groups] first column of the group in barrier_groups.csv

@@ -17,7 +17,9 @@ class Progress {
   // so that steps/s and the ETA count this session's steps only.
   Progress(double duration, double plain_every_seconds, bool enabled, double start_time = 0.0,
            std::uint64_t start_steps = 0);
-  void update(double sim_time, std::uint64_t steps, std::size_t contacts, std::size_t particles);
+  // imbalance: several ranks, max / mean cost per rank (Interactions::imbalance; 0: not shown).
+  void update(double sim_time, std::uint64_t steps, std::size_t contacts, std::size_t particles,
+              double imbalance = 0.0);
   // A particle removed at the domain boundary at sim_time (s); removed_total counts the whole run.
   void removed(std::int64_t id, double sim_time, std::size_t removed_total);
   void finish(double sim_time, std::uint64_t steps);

@@ -299,6 +299,18 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
       }
   }
   if (const auto s = root.table("neighbor", {"skin"})) s->get("skin", p.neighbor.skin, kNonNegative);
+  if (const auto s = root.table("parallel", {"balance_every", "balance_threshold", "balance_cost"})) {
+    s->get("balance_every", p.parallel.balance_every, 0);
+    s->get("balance_threshold", p.parallel.balance_threshold, kNonNegative);
+    if (!(p.parallel.balance_threshold >= 1.0))
+      s->fail("balance_threshold",
+              "expected >= 1 (max / mean cost per rank), got " + number_text(p.parallel.balance_threshold));
+    if (const auto c = s->string("balance_cost")) {
+      if (*c == "work") p.parallel.balance_cost = BalanceCost::Work;
+      else if (*c == "time") p.parallel.balance_cost = BalanceCost::Time;
+      else s->fail("balance_cost", "expected \"work\" or \"time\", got \"" + *c + "\"");
+    }
+  }
   if (const auto s = root.table("checks", {"max_overlap", "energy_jump", "energy_drift"})) {
     s->get("max_overlap", p.checks.max_overlap, kNonNegative);
     s->get("energy_jump", p.checks.energy_jump, kNonNegative);
@@ -344,7 +356,7 @@ Scene parse_scene_file(const std::filesystem::path& file) {
   const TomlSection root(name, doc, "",
                          {"time", "tolerance", "analysis", "gravity", "fields", "near_field", "contact", "thermal",
                           "material", "particles", "barriers", "domain", "neighbor", "output", "checks", "inlet",
-                          "sink"});
+                          "sink", "parallel"});
   Params& p = scene.model.params;
   read_time(root, p.time);
   read_tolerance(root, p.tolerance);

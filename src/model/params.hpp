@@ -159,6 +159,17 @@ struct OutputParams {
   double progress_every = 10.0;     // s of wall time between plain progress lines
 };
 
+// How the ranks of a decomposed run share the work (docs/parallel.md, "Load balance"); a
+// one-rank run ignores it.
+enum class BalanceCost { Work, Time };
+struct ParallelParams {
+  int balance_every = 1000;        // steps between imbalance measurements (0 = never: fixed uniform cuts)
+  double balance_threshold = 1.1;  // -, max / mean cost per rank above which the cut planes move
+  // Work: owned particles + listed neighbour pairs (deterministic: runs repeat bit for bit);
+  // Time: the rank's measured evaluation time since the last measurement.
+  BalanceCost balance_cost = BalanceCost::Work;
+};
+
 // Instability detection: the run stops with a message naming particles, time and step (the
 // drift only warns at the end: the run is complete by then).
 struct CheckParams {
@@ -181,6 +192,7 @@ struct Params {
   NeighborParams neighbor;
   OutputParams output;
   CheckParams checks;
+  ParallelParams parallel;
   std::vector<InletSpec> inlets;  // [[inlet]] entries, in scene order
   std::vector<SinkSpec> sinks;    // [[sink]] entries, in scene order
 };

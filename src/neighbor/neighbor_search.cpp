@@ -74,7 +74,8 @@ void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Ba
     // a checkpoint's, so the list is built over those and the ghosts' own.
     x_all.assign(x_owned.begin(), x_owned.end());
     rmax = halo_->comm().max(rmax);  // a ghost may be larger than every owned particle
-    halo_->build(p, periodic_image_width(rmax, extra_, skin_));
+    halo_width_ = periodic_image_width(rmax, extra_, skin_);
+    halo_->build(p, halo_width_);
     x_all.insert(x_all.end(), p.x.begin() + static_cast<std::ptrdiff_t>(owned), p.x.end());
     x = x_all;
   } else if (images_.active()) {

@@ -31,6 +31,12 @@ class NeighborSearch {
   // Every build is then collective: all ranks rebuild together.
   void decompose(const Communicator& comm, BrickGrid grid);
   const HaloExchange* halo() const { return halo_.get(); }
+  // Several ranks, between steps: moves the brick cuts to balance `cost` (this rank's, spread over
+  // its owned particles; parallel/load_balance.hpp), keeping every brick wider than the halo of
+  // the last build. True when a cut moved: then rebuild with migration. Collective.
+  bool shift_cuts(const Particles& p, double cost) {
+    return halo_ && halo_->shift_cuts(std::span<const Vec3>(p.x.data(), p.size()), cost, halo_width_);
+  }
   // Sends the owned particles that left this rank's brick to their new owners (between steps,
   // no ghosts held), with the records in `attached` whose anchor id leaves.
   void migrate(Particles& p, std::span<AttachedRecords* const> attached) {
@@ -92,6 +98,7 @@ class NeighborSearch {
   double extra_;
   PeriodicImages images_;
   std::unique_ptr<HaloExchange> halo_;  // several ranks: the ghosts' source instead of images_
+  double halo_width_ = 0.0;             // m, the halo's reach at the last build (several ranks)
   std::uint64_t rebuilds_ = 0;
   std::uint64_t generation_ = 0;
   std::vector<Vec3> barrier_offsets_build_;  // [M] m, barrier offsets at the last build

@@ -1,11 +1,12 @@
 #pragma once
 // Gathers of typed values and of AttachedRecords onto one rank (checkpoints of a decomposed run,
-// docs/parallel.md), concatenated in rank order.
+// docs/parallel.md), concatenated in rank order; the best of the ranks' values on every rank.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <span>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "parallel/attached_records.hpp"
@@ -33,6 +34,22 @@ inline AttachedRecords gather_records(const Communicator& comm, const AttachedRe
   all.anchor = gather_values<std::int64_t>(comm, mine.anchor, root);
   all.data = gather_values<std::byte>(comm, mine.data, root);
   return all;
+}
+
+// The best of every rank's `mine` (better(a, b): a is strictly better than b) and the rank that
+// holds it, on every rank; on a tie the lowest rank's, so every rank names the same one. Collective.
+template <class T, class Better>
+std::pair<T, int> best_across(const Communicator& comm, const T& mine, Better better) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  std::pair<T, int> best{mine, comm.rank()};
+  int r = 0;
+  for (const auto& bytes : comm.all_gather(std::as_bytes(std::span(&mine, 1)))) {
+    T v;
+    std::memcpy(&v, bytes.data(), sizeof v);
+    if (r == 0 || better(v, best.first)) best = {v, r};
+    ++r;
+  }
+  return best;
 }
 
 }  // namespace mpdem

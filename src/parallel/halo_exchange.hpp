@@ -23,6 +23,7 @@
 #include "parallel/attached_records.hpp"
 #include "parallel/brick_grid.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/load_balance.hpp"
 #include "state/particles.hpp"
 
 namespace mpdem {
@@ -50,6 +51,13 @@ class HaloExchange {
   void refresh(Particles& p) const;
   // Adds the ghosts' force, torque and heat to their sources (on whichever rank they live).
   void fold(Particles& p) const;
+
+  // Between steps (before a migration): moves the cut planes to balance the ranks' cost
+  // (parallel/load_balance.hpp: shift_cuts, `x` the owned centres, `min_width` the halo's reach).
+  // True when a cut moved. Collective.
+  bool shift_cuts(std::span<const Vec3> x, double cost, double min_width) {
+    return mpdem::shift_cuts(grid_, *comm_, x, cost, min_width);
+  }
 
   std::size_t size() const { return ghosts_; }
   std::uint64_t migrated() const { return migrated_; }  // particles this rank sent to another

@@ -7,6 +7,8 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 #include <type_traits>
 
 #include "core/deterministic_sum.hpp"
@@ -18,6 +20,7 @@
 #include "field/near_field_forces.hpp"
 #include "integrate/verlet_drift.hpp"
 #include "neighbor/neighbor_search.hpp"
+#include "parallel/gather.hpp"
 #include "sim/run_error.hpp"
 #include "contact/particle_contacts.hpp"
 
@@ -90,11 +93,21 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
   next_drift_.valid = false;
   // A state that diverged within a step (a trapezoidal iteration, an absurd restored velocity)
   // reaches a rebuild before the step's health scan: say which particle, as the scan would.
+  // On several ranks every rank takes part, so that all stop with the same message.
+  std::int64_t bad = -1;  // lowest id with a non-finite position
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (!isfinite(p.x[i]))
-      throw RunError(fmt::format("particle id {} has a non-finite position at t = {:.9g} s (the state diverged "
-                                 "within the step); reduce time.dt (see `mpdem check` for a recommended step)",
-                                 p.id[i], b.time));
+    if (!isfinite(p.x[i]) && (bad < 0 || p.id[i] < bad)) bad = p.id[i];
+  std::string where;
+  if (comm_) {
+    int rank = 0;
+    std::tie(bad, rank) = best_across(*comm_, bad,
+                                      [](std::int64_t x, std::int64_t y) { return x >= 0 && (y < 0 || x < y); });
+    where = fmt::format(" (on rank {} of {})", rank, comm_->size());
+  }
+  if (bad >= 0)
+    throw RunError(fmt::format("particle id {}{} has a non-finite position at t = {:.9g} s (the state diverged "
+                               "within the step); reduce time.dt (see `mpdem check` for a recommended step)",
+                               bad, where, b.time));
   if (comm_) {
     rebuild_decomposed(p, b, reorder);
     return;
@@ -120,6 +133,7 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
 
 void Interactions::prepare_step(Particles& p, const Barriers& b, double dt) {
   ScopedTimer timer(times_.search);
+  if (comm_) balance_if_due(p, b);
   predicted_displacement_ = -1.0;
   // On several ranks every decision is taken over all of them (the rebuild is collective).
   if (policy_.drift_known && dt > 0.0 && !any_rank(stale(p, b))) {
@@ -286,7 +300,10 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
       rebuild(p, b, false);
       ++mid_step_rebuilds_;
     }
-    search_->refresh_ghosts(p);  // periodic images take their sources' state
+  }
+  {
+    ScopedTimer timer(times_.exchange);
+    search_->refresh_ghosts(p);  // periodic images (or other ranks' particles) take their sources' state
   }
   {
     ScopedTimer timer(times_.fields);
@@ -304,14 +321,20 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   {
     ScopedTimer timer(times_.barriers);
     pb = pb_->evaluate(p, b, *search_, req);
-    if (comm_) reduce_barrier_loads(b);
+  }
+  if (comm_) {
+    ScopedTimer timer(times_.exchange);
+    reduce_barrier_loads(b);
   }
   if (heat_) {
     ScopedTimer timer(times_.other);
     const HeatFlows h = heat_->evaluate(p, b, *search_);
     if (req.commit) commit_heat(h, req);
   }
-  search_->fold_ghosts(p);  // what the periodic images received goes to their sources
+  {
+    ScopedTimer timer(times_.exchange);
+    search_->fold_ghosts(p);  // what the periodic images received goes to their sources
+  }
 
   stats_.contacts_pp = pp.contacts;
   stats_.contacts_pb = pb.contacts;

@@ -71,6 +71,7 @@ struct PhaseTimes {
   double pairs = 0.0;     // particle-particle contacts
   double barriers = 0.0;  // particle-barrier contacts and element loads
   double other = 0.0;     // near field, heat
+  double exchange = 0.0;  // ghosts refreshed and folded, barrier loads summed over the ranks (with waits)
 };
 
 struct OverlapReport;
@@ -133,6 +134,11 @@ class Interactions {
 
   const InteractionStats& stats() const { return stats_; }
   const PhaseTimes& times() const { return times_; }
+  // Several ranks: max / mean of the ranks' cost at the last load-balance measurement
+  // ([parallel] balance_every; 0 before the first, and on one rank), and the times the cut planes moved.
+  double imbalance() const { return imbalance_; }
+  std::uint64_t balances() const { return balances_; }
+  std::uint64_t balance_measurements() const { return measurements_; }
   // Rebuilds evaluate() had to do (prepare_step's criterion should make them rare; not
   // checkpointed, so a resumed run counts from 0).
   std::uint64_t mid_step_rebuilds() const { return mid_step_rebuilds_; }
@@ -172,6 +178,9 @@ class Interactions {
   // The decomposed rebuild: history keyed by ids, migration at reordering rebuilds.
   void rebuild_decomposed(Particles& p, const Barriers& b, bool reorder);
   void reduce_barrier_loads(Barriers& b) const;  // element loads summed over the ranks
+  // Every [parallel] balance_every steps: the ranks' cost measured, and when its imbalance
+  // exceeds balance_threshold the cut planes moved and the particles migrated (a rebuild).
+  void balance_if_due(Particles& p, const Barriers& b);
 
   const Model& model_;
   StepPolicy policy_;
@@ -192,6 +201,11 @@ class Interactions {
     std::size_t n = 0;    // particles
   } next_drift_;
   const Communicator* comm_ = nullptr;  // several ranks (decompose()); null in a one-rank run
+  std::uint64_t steps_since_balance_ = 0;
+  double busy_at_balance_ = 0.0;  // s, evaluation time (times_ without search, exchange) at the last measurement
+  double imbalance_ = 0.0;        // -, see imbalance()
+  std::uint64_t balances_ = 0;
+  std::uint64_t measurements_ = 0;
   std::unique_ptr<NeighborSearch> search_;
   std::unique_ptr<ParticleContacts> pp_;
   std::unique_ptr<BarrierContacts> pb_;

@@ -10,6 +10,8 @@
 #include "neighbor/neighbor_search.hpp"
 #include "parallel/brick_grid.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/gather.hpp"
+#include "parallel/load_balance.hpp"
 #include "sim/interactions.hpp"
 
 namespace mpdem {
@@ -43,6 +45,28 @@ void Interactions::rebuild_decomposed(Particles& p, const Barriers& b, bool reor
   }
   pp_->import_history(p, *search_, std::move(pairs));
   stats_.rebuilds = search_->rebuilds();
+}
+
+void Interactions::balance_if_due(Particles& p, const Barriers& b) {
+  const ParallelParams& prm = model_.params.parallel;
+  if (prm.balance_every <= 0 || ++steps_since_balance_ < static_cast<std::uint64_t>(prm.balance_every)) return;
+  steps_since_balance_ = 0;
+  double cost = 0.0;
+  if (prm.balance_cost == BalanceCost::Time) {
+    // Computing only: the waits for the other ranks are in times_.exchange and times_.search.
+    const double busy = times_.fields + times_.pairs + times_.barriers + times_.other;  // s
+    cost = busy - busy_at_balance_;
+    busy_at_balance_ = busy;
+  } else {
+    cost = static_cast<double>(p.size() + search_->pairs().num_pairs());
+  }
+  imbalance_ = mpdem::imbalance(*comm_, cost);
+  ++measurements_;
+  if (imbalance_ <= prm.balance_threshold) return;
+  if (search_->shift_cuts(p, cost)) {
+    rebuild(p, b, true);  // the particles that changed brick migrate, with their history
+    ++balances_;
+  }
 }
 
 void Interactions::reduce_barrier_loads(Barriers& b) const {
@@ -81,19 +105,13 @@ InteractionStats Interactions::global_stats() const {
 }
 
 OverlapReport Interactions::global_max_overlap(const Particles& p, const Barriers& b) const {
-  const OverlapReport mine = max_overlap(p, b);
-  if (!comm_) return mine;
-  static_assert(std::is_trivially_copyable_v<OverlapReport>);
-  OverlapReport best = mine;
-  bool first = true;
-  // The deepest; on a tie the lowest rank's, so that every rank names the same contact.
-  for (const auto& bytes : comm_->all_gather(std::as_bytes(std::span(&mine, 1)))) {
-    OverlapReport r;
-    std::memcpy(&r, bytes.data(), sizeof r);
-    if (first || r.ratio > best.ratio) best = r;
-    first = false;
-  }
-  return best;
+  OverlapReport r = max_overlap(p, b);
+  if (!comm_) return r;
+  const auto [best, rank] = best_across(
+      *comm_, r, [](const OverlapReport& x, const OverlapReport& y) { return x.ratio > y.ratio; });
+  r = best;
+  r.rank = rank;
+  return r;
 }
 
 }  // namespace mpdem

@@ -1,6 +1,9 @@
 #pragma once
 // RunError: a run that cannot continue (non-convergence, instability, a particle leaving the
 // domain with on_exit = "stop"). The CLI prints the message and exits with status 1.
+// On several ranks a RunError is thrown by every rank at the same point, with the same message
+// (the decision is taken from values reduced over the ranks), so that rank 0 alone reports it;
+// a failure one rank sees alone is another exception (docs/parallel.md, "Errors").
 #include <stdexcept>
 #include <cstdint>
 #include <filesystem>

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 #include "integrate/adaptive_step.hpp"
 #include "integrate/integrator_policy.hpp"
@@ -14,6 +15,7 @@
 #include "io/output_manager.hpp"
 #include "contact/particle_contacts.hpp"
 #include "io/progress.hpp"
+#include "parallel/gather.hpp"
 #include "sim/inlets.hpp"
 #include "sim/run_error.hpp"
 #include "sim/sinks.hpp"
@@ -156,10 +158,12 @@ void Simulation::check_state(const StepReport& rep) {
   // One pass (or none, when the integrator fused it into its own); culprits searched only if needed.
   refresh_stats();
   const StateScan scan = global_scan(rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain));
-  if (scan.nonfinite > 0 && comm_)
-    throw RunError(fmt::format("non-finite state of particle id {} at step {} (t = {:.9g} s). The run is unstable; "
+  if (scan.nonfinite > 0 && comm_) {
+    const auto [id, rank] = first_nonfinite();
+    throw RunError(fmt::format("non-finite state of particle id {}{} at step {} (t = {:.9g} s). The run is unstable; "
                                "reduce time.dt.",
-                               first_nonfinite(), steps_, time_));
+                               id, on_rank(rank), steps_, time_));
+  }
   if (scan.nonfinite > 0)
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (!finite_state(p, i))
@@ -190,19 +194,14 @@ void Simulation::remove_outside() {
     keep[i] = 0;
     ++gone;
   }
+  int rank = -1;
   if (comm_)
-    for (const auto& b : comm_->all_gather(std::as_bytes(std::span(&first, 1)))) {
-      Exit e;
-      std::memcpy(&e, b.data(), sizeof e);
-      if (e.id >= 0) {
-        first = e;
-        break;
-      }
-    }
+    std::tie(first, rank) = best_across(*comm_, first,
+                                        [](const Exit& a, const Exit& b) { return a.id >= 0 && b.id < 0; });
   if (d.on_exit == ExitPolicy::Stop && first.id >= 0)
-    throw RunError(fmt::format("particle id {} left the domain at step {} (t = {:.9g} s) at ({:.6g}, {:.6g}, {:.6g}); "
-                               "domain.on_exit = \"stop\"",
-                               first.id, steps_, time_, first.x.x, first.x.y, first.x.z));
+    throw RunError(fmt::format("particle id {}{} left the domain at step {} (t = {:.9g} s) at ({:.6g}, {:.6g}, "
+                               "{:.6g}); domain.on_exit = \"stop\"",
+                               first.id, on_rank(rank), steps_, time_, first.x.x, first.x.y, first.x.z));
   remove_marked(keep, true);
 }
 
@@ -271,12 +270,13 @@ void Simulation::insert_from_inlets() {
 void Simulation::log_row(GlobalLogRow row) {
   if (inlets_) inlets_->log_values(row.open_system);
   if (sinks_) sinks_->log_values(row.time, row.open_system);
-  if (!comm_) {
-    output_->global_log(row, scene_.particles, stats());
-    return;
+  ParticleTotals t = particle_totals(scene_.model, scene_.particles);
+  if (comm_) {  // reduced, never gathered: a log row costs the same on any number of ranks
+    double v[] = {t.energy.kinetic, t.energy.rotational, t.energy.potential, t.electric, t.count, t.thermal};
+    comm_->sum(v);
+    t = {{v[0], v[1], v[2]}, v[3], v[4], v[5]};
   }
-  const Particles all = gathered();  // collective
-  if (output_) output_->global_log(row, all, stats());
+  if (output_) output_->global_log(row, t, stats());
 }
 
 void Simulation::snapshots(double h, bool force) {
@@ -338,8 +338,14 @@ RunSummary Simulation::run() {
       if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) == 0)
         log_row({steps_, time_, h, &last, evaluations_, redone_, removed_, {}});
     }
+    if (output_ && interactions_->balance_measurements() != balance_rows_) {
+      balance_rows_ = interactions_->balance_measurements();
+      output_->balance(
+          {time_, steps_, comm_->size(), interactions_->imbalance(), interactions_->balances() != balances_seen_});
+      balances_seen_ = interactions_->balances();
+    }
     const auto& st = stats();
-    progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count());
+    progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count(), interactions_->imbalance());
     if ((inlets_ || sinks_) && progress_->summary_due()) progress_->summary(open_system_summary());
     if (out && every > 0 && steps_ % every == 0) {  // (collective on several ranks)
       write_checkpoint(dir / "checkpoint.bin");

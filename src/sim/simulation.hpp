@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "integrate/step_report.hpp"
@@ -79,6 +80,13 @@ class Simulation {
   void check_state(const StepReport& rep);  // NaN / infinity, energy jumps, domain exits
   void check_energy(const StateScan& s);
   void check_overlap();
+  struct Fastest {
+    double v2 = 0.0;  // m^2/s^2, squared speed
+    std::int64_t id = -1;
+    int rank = -1;  // rank that holds it (several ranks; -1 on one)
+  };
+  // The k fastest particles over all ranks, fastest first (collective).
+  std::vector<Fastest> fastest(std::size_t k) const;
   void record_state(const StateScan& s);        // the balance and active energy into record_
   void record_overlap(const OverlapReport& r);  // r into record_ when it is the deepest yet
   void remove_outside();                        // domain.on_exit: stop or remove
@@ -115,8 +123,11 @@ class Simulation {
   void keep_own(Particles& fresh) const;
   std::size_t particle_count() const { return comm_ ? global_count_ : scene_.particles.size(); }
   void snapshots(double h, bool force);  // the snapshot outputs due after a step of h (s)
-  // Id of the first particle (by rank) with a non-finite state, on every rank; -1 if none.
-  std::int64_t first_nonfinite() const;
+  // The lowest id of a particle with a non-finite state and the rank holding it, on every rank
+  // (collective); id -1 if none.
+  std::pair<std::int64_t, int> first_nonfinite() const;
+  // " (on rank r of N)" on several ranks (a failure's message names where it happened), else "".
+  std::string on_rank(int rank) const;
   bool root() const { return comm_ == nullptr || comm_->rank() == 0; }
 
   // The scene as given, before any step: checkpoints carry it, a resume compares it. Declared
@@ -143,7 +154,9 @@ class Simulation {
   double last_active_ = 0.0;     // J, kinetic + rotational + elastic after the previous step
   bool energy_checked_ = false;  // last_balance_ / last_active_ are set
   std::size_t removed_ = 0;
-  RunRecord record_;  // for the end-of-run summary
+  std::uint64_t balance_rows_ = 0;   // load-balance measurements written to balance.csv
+  std::uint64_t balances_seen_ = 0;  // times the cut planes had moved at the last row
+  RunRecord record_;                 // for the end-of-run summary
   bool initialized_ = false;
   bool resumed_ = false;                   // state loaded from a checkpoint
   std::vector<char> resume_output_state_;  // OutputManager series from the checkpoint

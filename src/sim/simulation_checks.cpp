@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "contact/particle_contacts.hpp"
@@ -30,14 +31,8 @@ void Simulation::check_energy(const StateScan& s) {
     const double driven = (std::abs(st.drive_power) + std::abs(st.fixed_power)) * dt_;  // J
     if (rise > prm.checks.energy_jump * (last_active_ + driven) + noise) {
       // Name the fastest particles: an exploding contact throws them apart.
-      const Particles& p = scene_.particles;
-      std::vector<std::size_t> idx(p.size());
-      for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
-      const std::size_t k = std::min<std::size_t>(3, idx.size());
-      std::partial_sort(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(k), idx.end(),
-                        [&](std::size_t a, std::size_t b) { return norm2(p.v[a]) > norm2(p.v[b]); });
       std::string ids;
-      for (std::size_t j = 0; j < k; ++j) ids += (j ? ", " : "") + std::to_string(p.id[idx[j]]);
+      for (const Fastest& f : fastest(3)) ids += fmt::format("{}{}{}", ids.empty() ? "" : ", ", f.id, on_rank(f.rank));
       throw RunError(fmt::format(
           "energy jump at step {} (t = {:.9g} s): the energy balance rose by {:.4g} J in one step, more than "
           "checks.energy_jump = {} x the kinetic + elastic energy {:.4g} J; fastest particles: ids {}. The step "
@@ -50,6 +45,28 @@ void Simulation::check_energy(const StateScan& s) {
   energy_checked_ = true;
 }
 
+std::vector<Simulation::Fastest> Simulation::fastest(std::size_t k) const {
+  const Particles& p = scene_.particles;
+  std::vector<Fastest> mine(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) mine[i] = {norm2(p.v[i]), p.id[i], comm_ ? comm_->rank() : -1};
+  const auto faster = [](const Fastest& a, const Fastest& b) { return a.v2 > b.v2 || (a.v2 == b.v2 && a.id < b.id); };
+  const auto keep_first = [&](std::vector<Fastest>& v) {
+    const std::size_t n = std::min(k, v.size());
+    std::partial_sort(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(n), v.end(), faster);
+    v.resize(n);
+  };
+  keep_first(mine);
+  if (!comm_) return mine;
+  std::vector<Fastest> all;
+  for (const auto& bytes : comm_->all_gather(std::as_bytes(std::span<const Fastest>(mine)))) {
+    const std::size_t at = all.size();
+    all.resize(at + bytes.size() / sizeof(Fastest));
+    std::memcpy(all.data() + at, bytes.data(), bytes.size());
+  }
+  keep_first(all);
+  return all;
+}
+
 void Simulation::check_overlap() {
   const OverlapReport r = interactions_->global_max_overlap(scene_.particles, scene_.barriers);
   record_overlap(r);
@@ -57,8 +74,9 @@ void Simulation::check_overlap() {
   if (!(limit > 0.0)) return;
   if (!(r.ratio > limit)) return;
   const std::string between = r.element >= 0
-                                  ? fmt::format("particle id {} and barrier element id {}", r.particle, r.element)
-                                  : fmt::format("particles id {} and id {}", r.particle, r.other);
+                                  ? fmt::format("particle id {}{} and barrier element id {}", r.particle,
+                                                on_rank(r.rank), r.element)
+                                  : fmt::format("particles id {} and id {}{}", r.particle, r.other, on_rank(r.rank));
   throw RunError(fmt::format(
       "overlap of {:.3g}% of the radius between {} at step {} (t = {:.9g} s), more than checks.max_overlap = {:.3g}%. "
       "The contact is not resolved: reduce time.dt (see `mpdem check` for a recommended step) or raise young.",

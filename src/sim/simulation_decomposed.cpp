@@ -9,10 +9,10 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "io/input_error.hpp"
 #include "io/output_manager.hpp"
 #include "io/pvtu_writer.hpp"
 #include "parallel/brick_grid.hpp"
+#include "parallel/gather.hpp"
 #include "parallel/particle_buffer.hpp"
 #include "sim/simulation.hpp"
 #include "neighbor/neighbor_search.hpp"
@@ -21,22 +21,7 @@
 
 namespace mpdem {
 
-namespace {
-// What a decomposed run does not do yet, refused before step 1 with the key that asks for it.
-void refuse_unsupported(const Scene& scene, const Communicator& comm) {
-  const Params& prm = scene.model.params;
-  const std::string file = scene.file.string();
-  auto refuse = [&](std::string_view key, std::string_view what) {
-    throw InputError(
-        file, 0, std::string(key),
-        fmt::format("{} on {} ranks is not available yet (docs/parallel.md); run it on one rank", what, comm.size()));
-  };
-  if (prm.near_field.cutoff > 0.0) refuse("near_field.cutoff", "the near field");
-}
-}  // namespace
-
 void Simulation::decompose(const Communicator& comm) {
-  refuse_unsupported(scene_, comm);
   Particles& p = scene_.particles;
   const DomainParams& d = scene_.model.params.domain;
   // The bricks tile the domain; without one, the particles' bounding box (the outer bricks reach
@@ -146,18 +131,17 @@ void Simulation::write_piece(std::uint64_t index) {
 
 int Simulation::stop_across_ranks() const { return static_cast<int>(comm_->max(static_cast<double>(stop_signal()))); }
 
-std::int64_t Simulation::first_nonfinite() const {
+std::pair<std::int64_t, int> Simulation::first_nonfinite() const {
   const Particles& p = scene_.particles;
-  std::int64_t id = -1;
-  for (std::size_t i = 0; i < p.size() && id < 0; ++i)
-    if (!finite_state(p, i)) id = p.id[i];
-  if (!comm_) return id;
-  for (const auto& b : comm_->all_gather(std::as_bytes(std::span(&id, 1)))) {
-    std::int64_t r = -1;
-    std::memcpy(&r, b.data(), sizeof r);
-    if (r >= 0) return r;
-  }
-  return -1;
+  std::int64_t id = -1;  // the lowest id, so the particle named does not depend on the rank count
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (!finite_state(p, i) && (id < 0 || p.id[i] < id)) id = p.id[i];
+  if (!comm_) return {id, -1};
+  return best_across(*comm_, id, [](std::int64_t a, std::int64_t b) { return a >= 0 && (b < 0 || a < b); });
+}
+
+std::string Simulation::on_rank(int rank) const {
+  return comm_ && rank >= 0 ? fmt::format(" (on rank {} of {})", rank, comm_->size()) : std::string();
 }
 
 }  // namespace mpdem

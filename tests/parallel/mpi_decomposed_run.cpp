@@ -5,6 +5,7 @@
 //    heat flows across the ranks, barrier loads summed over them), 10^4 steps, both integrators;
 //  - a falling column cut across its height, whose spheres fall through the cuts (migration
 //    with their contact and barrier history), 10^4 steps, both integrators;
+//  - the cluster with charges: the near field (Coulomb's law) across the ranks;
 //  - a sliding (then sticking) pair that crosses a cut: its spring, bit for bit, at every step.
 #include <gtest/gtest.h>
 
@@ -120,6 +121,19 @@ TEST_P(DecomposedRun, RollingThermalClusterFollowsTheOneRankRun) {
   if (Communicator::world().size() > 1) {
     EXPECT_TRUE(o.everyone_holds);
     EXPECT_GT(o.ghosts, 20u);  // contacts across the ranks
+  }
+}
+
+// The near field (Coulomb's law between charged spheres) on ghosts: its forces across the cuts,
+// its potential summed over the ranks.
+TEST_P(DecomposedRun, ChargedClusterFollowsTheOneRankRun) {
+  const Outcome o = compare(charged_cluster, GetParam(), 2e-6, 10000, "charged cluster");
+  for (double d : {o.x, o.v, o.w, o.T}) EXPECT_LT(d, 1e-10);
+  EXPECT_LT(o.loads, 1e-10);
+  EXPECT_GT(std::abs(o.serial.near_field_energy), 1e-9);  // J: the pairs within the cutoff count
+  EXPECT_NEAR(o.decomposed.near_field_energy, o.serial.near_field_energy, 1e-10 * std::abs(o.serial.near_field_energy));
+  if (Communicator::world().size() > 1) {
+    EXPECT_GT(o.ghosts, 20u);
   }
 }
 

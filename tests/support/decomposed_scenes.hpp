@@ -1,6 +1,7 @@
 #pragma once
 // Scenes run over several ranks (tests/parallel): a frictional, rolling, thermal cluster in a box
-// of barriers that the bricks cut, and a column that falls through the cuts.
+// of barriers that the bricks cut (also with charges and the near field), and a column that falls
+// through the cuts.
 #include "support/dense_granular_scene.hpp"
 
 namespace mpdem::test {
@@ -30,6 +31,17 @@ inline Scene column(Integrator integ, double dt) {
   s.model.params.analysis.thermal = true;
   for (std::size_t i = 0; i < s.particles.size(); ++i)
     s.particles.T[i] = 290.0 + static_cast<double>(s.particles.id[i] % 21);
+  return s;
+}
+
+// The cluster with charged spheres (+-0.2 nC by id, Coulomb's law (44) within 3 mm, about the
+// spacing of next neighbours): the near field acts across the cuts, on ghosts.
+inline Scene charged_cluster(Integrator integ, double dt) {
+  Scene s = cluster(integ, dt);
+  NearFieldParams& nf = s.model.params.near_field;
+  nf.coulomb = true;
+  nf.cutoff = 3e-3;
+  for (std::size_t i = 0; i < s.particles.size(); ++i) s.particles.charge[i] = s.particles.id[i] % 2 ? 2e-10 : -2e-10;
   return s;
 }
 

@@ -1,0 +1,67 @@
+# Shared by scripts/bench_vs_liggghts.sh and scripts/scaling.sh (sourced): the tools they need,
+# the beds, LIGGGHTS's timed run, and the parsing of results. Expects ROOT (the repository).
+
+# Installs LIGGGHTS, Open MPI and GNU time when missing (NO_INSTALL=1: fail instead).
+bench_tools() {
+  local need=()
+  command -v liggghts >/dev/null 2>&1 || need+=(liggghts)
+  command -v mpirun >/dev/null 2>&1 || need+=(openmpi-bin)
+  [ -x /usr/bin/time ] || need+=(time)
+  [ ${#need[@]} -eq 0 ] && return 0
+  if [ "${NO_INSTALL:-0}" = 1 ]; then echo "missing: ${need[*]}" >&2; exit 2; fi
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo=sudo
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -q >/dev/null
+  $sudo apt-get install -y -q --no-install-recommends "${need[@]}" >/dev/null
+}
+
+# median of the numbers on stdin (blank-separated)
+median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{a[NR]=$1} END {if (NR%2) print a[(NR+1)/2]; else print (a[NR/2]+a[NR/2+1])/2}'; }
+# value of key=... in a BENCH_RESULT / BENCH_STATE line on stdin
+field() { tr ' ' '\n' | sed -n "s/^$1=//p" | head -1; }
+# peak RSS (KiB) from a GNU time -v report
+peak_kib() { sed -n 's/.*Maximum resident set size (kbytes): *//p' "$1" | tail -1; }
+
+# bed_file NAME WORK SHARED: the path of bed NAME (20k, 100k: the shared beds; 50k: the 100k bed's
+# spheres with x + r <= 90 mm, in a box half as long), decompressed or cut into WORK once.
+bed_file() {
+  local name=$1 work=$2 shared=$3 data="$2/bed$1.data"
+  if [ ! -s "$data" ]; then
+    case "$name" in
+      20k | 100k) gzip -dc "$shared/bed$name.data.gz" > "$data" ;;
+      50k)
+        gzip -dc "$shared/bed100k.data.gz" > "$data.full"
+        # Pass 1 counts the kept spheres (columns: id type diameter density x y z), pass 2 writes.
+        awk 'NR == FNR { if (atoms && NF == 7 && $5 + $3 / 2 <= 0.09) n++; if ($1 == "Atoms") atoms = 1; next }
+             $2 == "atoms" && NF == 2 { print n " atoms"; next }
+             $3 == "xlo" { print "0 0.09 xlo xhi"; next }
+             $1 == "Atoms" { atoms2 = 1; print; next }
+             atoms2 && NF == 7 { if ($5 + $3 / 2 <= 0.09) print; next }
+             { print }' "$data.full" "$data.full" > "$data.tmp"
+        rm -f "$data.full"
+        mv "$data.tmp" "$data" ;;
+      *) echo "unknown bed '$name'" >&2; exit 2 ;;
+    esac
+  fi
+  echo "$data"
+}
+
+# liggghts_ns DATA STEPS RELAX RANKS LOG: runs LIGGGHTS's timed bench (one thread per rank) and
+# prints its ns per particle-step; the peak RSS of every rank goes to LOG.rank*, its state line
+# (BENCH_STATE) stays in LOG.out.
+liggghts_ns() {
+  local data=$1 steps=$2 relax=$3 ranks=$4 log=$5 n secs
+  rm -f "$log".rank*
+  local cmd=(liggghts -in "$SHARED/liggghts_bench.in" -log "$log.log" -var data "$data" -var nrelax "$relax"
+             -var nsteps "$steps" -var dt 4e-6)
+  local wrap=(sh -c '/usr/bin/time -f "%M" -o "$0.rank${OMPI_COMM_WORLD_RANK:-0}" "$@"' "$log")
+  if [ "$ranks" -gt 1 ]; then
+    (cd "$(dirname "$log")" && OMP_NUM_THREADS=1 mpirun -np "$ranks" --allow-run-as-root --oversubscribe "${wrap[@]}" "${cmd[@]}" > "$log.out" 2>&1)
+  else
+    (cd "$(dirname "$log")" && OMP_NUM_THREADS=1 "${wrap[@]}" "${cmd[@]}" > "$log.out" 2>&1)
+  fi
+  n=$(awk '$2 == "atoms" {print $1; exit}' "$data")
+  secs=$(awk '/TIMED_RUN_BEGIN/ {t=1} t && /^Loop time of/ {print $4; exit}' "$log.out")
+  awk -v s="$secs" -v n="$n" -v k="$steps" 'BEGIN {printf "%.3f\n", 1e9 * s / (n * k)}'
+}

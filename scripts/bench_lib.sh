@@ -24,7 +24,9 @@ field() { tr ' ' '\n' | sed -n "s/^$1=//p" | head -1; }
 peak_kib() { sed -n 's/.*Maximum resident set size (kbytes): *//p' "$1" | tail -1; }
 
 # bed_file NAME WORK SHARED: the path of bed NAME (20k, 100k: the shared beds; 50k: the 100k bed's
-# spheres with x + r <= 90 mm, in a box half as long), decompressed or cut into WORK once.
+# spheres with x + r <= 90 mm, in a box half as long; 2x50k: the 50k bed and its mirror image in
+# the plane x = 90 mm, ids + 100000, in the 100k bed's box: two identical halves for weak
+# scaling), decompressed or cut into WORK once.
 bed_file() {
   local name=$1 work=$2 shared=$3 data="$2/bed$1.data"
   if [ ! -s "$data" ]; then
@@ -40,6 +42,17 @@ bed_file() {
              atoms2 && NF == 7 { if ($5 + $3 / 2 <= 0.09) print; next }
              { print }' "$data.full" "$data.full" > "$data.tmp"
         rm -f "$data.full"
+        mv "$data.tmp" "$data" ;;
+      2x50k)
+        local half
+        half=$(bed_file 50k "$work" "$shared")
+        awk 'NR == FNR { if (atoms && NF == 7) n++; if ($1 == "Atoms") atoms = 1; next }
+             $2 == "atoms" && NF == 2 { print 2 * n " atoms"; next }
+             $3 == "xlo" { print "0 0.18 xlo xhi"; next }
+             $1 == "Atoms" { atoms2 = 1; print; next }
+             atoms2 && NF == 7 { print; $1 += 100000; $5 = sprintf("%.10g", 0.18 - $5); mirror = mirror $0 "\n"; next }
+             { print }
+             END { printf "%s", mirror }' "$half" "$half" > "$data.tmp"
         mv "$data.tmp" "$data" ;;
       *) echo "unknown bed '$name'" >&2; exit 2 ;;
     esac

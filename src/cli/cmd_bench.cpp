@@ -14,6 +14,7 @@
 #include "io/input_error.hpp"
 #include "io/lammps_data.hpp"
 #include "neighbor/neighbor_search.hpp"
+#include "parallel/gather.hpp"
 #include "sim/simulation.hpp"
 
 namespace mpdem::cli {
@@ -153,6 +154,15 @@ int bench_command(const BenchArgs& args) {
   double part[] = {times1.search - times0.search,     times1.fields - times0.fields, times1.pairs - times0.pairs,
                    times1.barriers - times0.barriers, times1.other - times0.other,   times1.exchange - times0.exchange};
   comm.max(part);
+  // Several ranks: each rank's share, to see an imbalance (owned particles, ghosts, listed pairs,
+  // and its time in pairs and in the exchange, which holds its waits for the others).
+  struct RankShare {
+    double owned, ghosts, listed, pairs_s, exchange_s;
+  };
+  const RankShare mine{static_cast<double>(sim.particles().size()), static_cast<double>(sim.particles().n_ghost),
+                       static_cast<double>(sim.interactions().search().pairs().num_pairs()),
+                       times1.pairs - times0.pairs, times1.exchange - times0.exchange};
+  const std::vector<RankShare> shares = gather_values<RankShare>(comm, std::span(&mine, 1), 0);
   if (comm.rank() != 0) return 0;
   const std::string integ = a.integrator == "verlet" ? "verlet" : fmt::format("trapezoidal(phi={})", a.phi);
 
@@ -181,6 +191,11 @@ int bench_command(const BenchArgs& args) {
              "exchange {:.1f}, integration + checks {:.1f}\n",
              per(part[0]), per(part[1]), per(part[2]), per(part[3]), per(part[4]), per(part[5]),
              psteps > 0 ? 1e9 * seconds / psteps - eval : 0.0);
+  if (!comm.serial())
+    for (std::size_t r = 0; r < shares.size(); ++r)
+      fmt::print("  rank {:<3}                   {:.0f} particles, {:.0f} ghosts, {:.0f} listed pairs; pairs {:.3f} s, "
+                 "exchange {:.3f} s\n",
+                 r, shares[r].owned, shares[r].ghosts, shares[r].listed, shares[r].pairs_s, shares[r].exchange_s);
   fmt::print(
       "BENCH_RESULT code=mpdem integrator={} ranks={} threads={} particles={} steps={} seconds={:.6f} "
       "psteps_per_s={:.6g} "

@@ -214,11 +214,11 @@ void HaloExchange::refresh(Particles& p) const {
   if (p.n_ghost != ghosts_) throw std::logic_error("HaloExchange::refresh: the ghosts changed since the build");
   for (const Swap& w : swaps_) {
     std::vector<std::byte> out;
-    pack_particles(p, w.send, w.shift, out);
+    pack_particles(p, w.send, w.shift, out, ParticleArrays::kMotion);
     const auto in = comm_->exchange(w.send_to, out, w.recv_from, w.tag);
     if (w.recv_count == 0) continue;
     std::size_t pos = 0;
-    if (unpack_particles(p, in, pos, w.recv_first) != w.recv_count)
+    if (unpack_particles(p, in, pos, w.recv_first, ParticleArrays::kMotion) != w.recv_count)
       throw std::runtime_error("HaloExchange::refresh: a neighbour sent another number of ghosts");
   }
   clear_ghost_accumulators(p);

@@ -47,7 +47,8 @@ class HaloExchange {
   // Throws std::invalid_argument when a brick is narrower than `width` along a decomposed axis
   // (ghosts would be needed from beyond the neighbours) or a periodic period shorter than 2 width.
   void build(Particles& p, double width);
-  // Copies the sources' state onto the ghosts and clears the ghosts' accumulators.
+  // Copies the sources' motion state (x, v, w, q, T: what a step changes) onto the ghosts and
+  // clears the ghosts' accumulators; the other arrays were copied at the build.
   void refresh(Particles& p) const;
   // Adds the ghosts' force, torque and heat to their sources (on whichever rank they live).
   void fold(Particles& p) const;

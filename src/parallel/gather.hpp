@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -50,6 +51,19 @@ std::pair<T, int> best_across(const Communicator& comm, const T& mine, Better be
     ++r;
   }
   return best;
+}
+
+// The lowest of the ranks' ids (-1: none) and the rank that holds it, on every rank: a culprit
+// named the same on every rank and on any rank count. Collective.
+inline std::pair<std::int64_t, int> lowest_id_across(const Communicator& comm, std::int64_t id) {
+  return best_across(comm, id, [](std::int64_t a, std::int64_t b) { return a >= 0 && (b < 0 || a < b); });
+}
+
+// " (on rank r of N)": where a failure happened, for its message on several ranks; "" on one
+// (comm null) or for no rank (-1).
+inline std::string rank_note(const Communicator* comm, int rank) {
+  if (!comm || rank < 0) return {};
+  return " (on rank " + std::to_string(rank) + " of " + std::to_string(comm->size()) + ")";
 }
 
 }  // namespace mpdem

@@ -18,11 +18,9 @@ namespace {
 
 constexpr int kBinsPerBrick = 64;  // histogram resolution: a cut lands within 1/64 of a brick
 
-// The cut planes (m, ascending) that split the cost histogram `h` over [lo, hi] into n equal parts,
-// linear within a bin.
-std::vector<double> quantile_cuts(const std::vector<double>& h, double lo, double hi, int n) {
-  double total = 0.0;
-  for (double v : h) total += v;
+// The cut planes (m, ascending) that split the cost histogram `h` (its sum `total`) over [lo, hi]
+// into n equal parts, linear within a bin.
+std::vector<double> quantile_cuts(const std::vector<double>& h, double total, double lo, double hi, int n) {
   const double bin = (hi - lo) / static_cast<double>(h.size());
   std::vector<double> cuts;
   double below = 0.0;  // cost in the bins before b
@@ -90,7 +88,7 @@ bool shift_cuts(BrickGrid& grid, const Communicator& comm, std::span<const Vec3>
     double total = 0.0;
     for (double v : h) total += v;
     if (!(total > 0.0)) continue;
-    std::vector<double> want = quantile_cuts(h, lo, hi, n);
+    std::vector<double> want = quantile_cuts(h, total, lo, hi, n);
     if (!constrain(want, grid.cuts(c), lo, hi, periodic, min_width) || want == grid.cuts(c)) continue;
     grid.set_cuts(c, std::move(want));
     moved = true;

@@ -7,7 +7,6 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
-#include <string>
 #include <tuple>
 #include <type_traits>
 
@@ -97,17 +96,12 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
   std::int64_t bad = -1;  // lowest id with a non-finite position
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!isfinite(p.x[i]) && (bad < 0 || p.id[i] < bad)) bad = p.id[i];
-  std::string where;
-  if (comm_) {
-    int rank = 0;
-    std::tie(bad, rank) = best_across(*comm_, bad,
-                                      [](std::int64_t x, std::int64_t y) { return x >= 0 && (y < 0 || x < y); });
-    where = fmt::format(" (on rank {} of {})", rank, comm_->size());
-  }
+  int rank = -1;
+  if (comm_) std::tie(bad, rank) = lowest_id_across(*comm_, bad);
   if (bad >= 0)
     throw RunError(fmt::format("particle id {}{} has a non-finite position at t = {:.9g} s (the state diverged "
                                "within the step); reduce time.dt (see `mpdem check` for a recommended step)",
-                               bad, where, b.time));
+                               bad, rank_note(comm_, rank), b.time));
   if (comm_) {
     rebuild_decomposed(p, b, reorder);
     return;

@@ -135,8 +135,10 @@ class Interactions {
   const InteractionStats& stats() const { return stats_; }
   const PhaseTimes& times() const { return times_; }
   // Several ranks: max / mean of the ranks' cost at the last load-balance measurement
-  // ([parallel] balance_every; 0 before the first, and on one rank), and the times the cut planes moved.
+  // ([parallel] balance_every; 0 before the first, and on one rank), whether the cut planes moved
+  // then, the times they moved, and the measurements taken.
   double imbalance() const { return imbalance_; }
+  bool moved_at_last_measurement() const { return moved_; }
   std::uint64_t balances() const { return balances_; }
   std::uint64_t balance_measurements() const { return measurements_; }
   // Rebuilds evaluate() had to do (prepare_step's criterion should make them rare; not
@@ -204,6 +206,7 @@ class Interactions {
   std::uint64_t steps_since_balance_ = 0;
   double busy_at_balance_ = 0.0;  // s, evaluation time (times_ without search, exchange) at the last measurement
   double imbalance_ = 0.0;        // -, see imbalance()
+  bool moved_ = false;            // see moved_at_last_measurement()
   std::uint64_t balances_ = 0;
   std::uint64_t measurements_ = 0;
   std::unique_ptr<NeighborSearch> search_;

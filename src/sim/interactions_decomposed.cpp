@@ -62,8 +62,8 @@ void Interactions::balance_if_due(Particles& p, const Barriers& b) {
   }
   imbalance_ = mpdem::imbalance(*comm_, cost);
   ++measurements_;
-  if (imbalance_ <= prm.balance_threshold) return;
-  if (search_->shift_cuts(p, cost)) {
+  moved_ = imbalance_ > prm.balance_threshold && search_->shift_cuts(p, cost);
+  if (moved_) {
     rebuild(p, b, true);  // the particles that changed brick migrate, with their history
     ++balances_;
   }

@@ -162,7 +162,7 @@ void Simulation::check_state(const StepReport& rep) {
     const auto [id, rank] = first_nonfinite();
     throw RunError(fmt::format("non-finite state of particle id {}{} at step {} (t = {:.9g} s). The run is unstable; "
                                "reduce time.dt.",
-                               id, on_rank(rank), steps_, time_));
+                               id, rank_note(comm_, rank), steps_, time_));
   }
   if (scan.nonfinite > 0)
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -201,7 +201,7 @@ void Simulation::remove_outside() {
   if (d.on_exit == ExitPolicy::Stop && first.id >= 0)
     throw RunError(fmt::format("particle id {}{} left the domain at step {} (t = {:.9g} s) at ({:.6g}, {:.6g}, "
                                "{:.6g}); domain.on_exit = \"stop\"",
-                               first.id, on_rank(rank), steps_, time_, first.x.x, first.x.y, first.x.z));
+                               first.id, rank_note(comm_, rank), steps_, time_, first.x.x, first.x.y, first.x.z));
   remove_marked(keep, true);
 }
 
@@ -341,8 +341,7 @@ RunSummary Simulation::run() {
     if (output_ && interactions_->balance_measurements() != balance_rows_) {
       balance_rows_ = interactions_->balance_measurements();
       output_->balance(
-          {time_, steps_, comm_->size(), interactions_->imbalance(), interactions_->balances() != balances_seen_});
-      balances_seen_ = interactions_->balances();
+          {time_, steps_, comm_->size(), interactions_->imbalance(), interactions_->moved_at_last_measurement()});
     }
     const auto& st = stats();
     progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count(), interactions_->imbalance());

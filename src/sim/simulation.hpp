@@ -126,8 +126,6 @@ class Simulation {
   // The lowest id of a particle with a non-finite state and the rank holding it, on every rank
   // (collective); id -1 if none.
   std::pair<std::int64_t, int> first_nonfinite() const;
-  // " (on rank r of N)" on several ranks (a failure's message names where it happened), else "".
-  std::string on_rank(int rank) const;
   bool root() const { return comm_ == nullptr || comm_->rank() == 0; }
 
   // The scene as given, before any step: checkpoints carry it, a resume compares it. Declared
@@ -154,9 +152,8 @@ class Simulation {
   double last_active_ = 0.0;     // J, kinetic + rotational + elastic after the previous step
   bool energy_checked_ = false;  // last_balance_ / last_active_ are set
   std::size_t removed_ = 0;
-  std::uint64_t balance_rows_ = 0;   // load-balance measurements written to balance.csv
-  std::uint64_t balances_seen_ = 0;  // times the cut planes had moved at the last row
-  RunRecord record_;                 // for the end-of-run summary
+  std::uint64_t balance_rows_ = 0;  // load-balance measurements written to balance.csv
+  RunRecord record_;                // for the end-of-run summary
   bool initialized_ = false;
   bool resumed_ = false;                   // state loaded from a checkpoint
   std::vector<char> resume_output_state_;  // OutputManager series from the checkpoint

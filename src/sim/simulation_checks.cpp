@@ -8,6 +8,7 @@
 #include <string>
 
 #include "contact/particle_contacts.hpp"
+#include "parallel/gather.hpp"
 #include "sim/run_error.hpp"
 #include "sim/simulation.hpp"
 
@@ -32,7 +33,8 @@ void Simulation::check_energy(const StateScan& s) {
     if (rise > prm.checks.energy_jump * (last_active_ + driven) + noise) {
       // Name the fastest particles: an exploding contact throws them apart.
       std::string ids;
-      for (const Fastest& f : fastest(3)) ids += fmt::format("{}{}{}", ids.empty() ? "" : ", ", f.id, on_rank(f.rank));
+      for (const Fastest& f : fastest(3))
+        ids += fmt::format("{}{}{}", ids.empty() ? "" : ", ", f.id, rank_note(comm_, f.rank));
       throw RunError(fmt::format(
           "energy jump at step {} (t = {:.9g} s): the energy balance rose by {:.4g} J in one step, more than "
           "checks.energy_jump = {} x the kinetic + elastic energy {:.4g} J; fastest particles: ids {}. The step "
@@ -73,10 +75,10 @@ void Simulation::check_overlap() {
   const double limit = scene_.model.params.checks.max_overlap;
   if (!(limit > 0.0)) return;
   if (!(r.ratio > limit)) return;
-  const std::string between = r.element >= 0
-                                  ? fmt::format("particle id {}{} and barrier element id {}", r.particle,
-                                                on_rank(r.rank), r.element)
-                                  : fmt::format("particles id {} and id {}{}", r.particle, r.other, on_rank(r.rank));
+  const std::string between = r.element >= 0 ? fmt::format("particle id {}{} and barrier element id {}", r.particle,
+                                                           rank_note(comm_, r.rank), r.element)
+                                             : fmt::format("particles id {} and id {}{}", r.particle, r.other,
+                                                           rank_note(comm_, r.rank));
   throw RunError(fmt::format(
       "overlap of {:.3g}% of the radius between {} at step {} (t = {:.9g} s), more than checks.max_overlap = {:.3g}%. "
       "The contact is not resolved: reduce time.dt (see `mpdem check` for a recommended step) or raise young.",

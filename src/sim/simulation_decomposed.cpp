@@ -137,11 +137,7 @@ std::pair<std::int64_t, int> Simulation::first_nonfinite() const {
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!finite_state(p, i) && (id < 0 || p.id[i] < id)) id = p.id[i];
   if (!comm_) return {id, -1};
-  return best_across(*comm_, id, [](std::int64_t a, std::int64_t b) { return a >= 0 && (b < 0 || a < b); });
-}
-
-std::string Simulation::on_rank(int rank) const {
-  return comm_ && rank >= 0 ? fmt::format(" (on rank {} of {})", rank, comm_->size()) : std::string();
+  return lowest_id_across(*comm_, id);
 }
 
 }  // namespace mpdem

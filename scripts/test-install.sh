@@ -75,6 +75,24 @@ for f in mpdemConfig.cmake mpdemConfigVersion.cmake mpdemTargets.cmake; do
   compgen -G "$prefix/lib*/cmake/mpdem/$f" > /dev/null || fail "no lib/cmake/mpdem/$f in the prefix"
 done
 
+# The Python package from the prefix (docs/python.md, "Install"), when the build has it.
+if grep -q '^MPDEM_PYTHON:BOOL=ON' "$BUILD/CMakeCache.txt"; then
+  python="$(sed -n 's/^MPDEM_PYTHON_EXECUTABLE:INTERNAL=//p' "$BUILD/CMakeCache.txt")"
+  site="$prefix/lib/python3/dist-packages"
+  [ -f "$site/mpdem/__init__.py" ] || fail "no mpdem Python package in $site"
+  got="$(PYTHONPATH="$site" "$python" -c '
+import sys, mpdem
+sim = mpdem.Simulation(mpdem.Scene.from_toml(sys.argv[1]), threads=1, write_output=False)
+sim.step(10)
+print(mpdem.__version__, len(sim.particles), sim.steps, mpdem.__file__)
+' "$scene")" || fail "import mpdem from $site"
+  case "$got" in
+    "$version $particles 10 $site/mpdem/__init__.py") ;;
+    *) fail "the installed Python package printed '$got', expected '$version $particles 10 $site/mpdem/__init__.py'" ;;
+  esac
+  echo "ok: import mpdem from the prefix, 10 steps of the installed demo scene"
+fi
+
 # The outside project: find_package(mpdem), mpdem::engine, load_scene.
 gen=()
 command -v ninja >/dev/null 2>&1 && gen=(-G Ninja)

@@ -17,6 +17,10 @@ struct StepPolicy {
   // x, v, F (velocity Verlet's drift), so prepare_step can check the neighbour lists against those
   // very positions and that evaluation need not scan the particles again.
   bool drift_known = false;
+  // -, the committed evaluation sees each particle's velocity velocity_lag x dt x F/m before its
+  // end-of-step value (velocity Verlet: 1/2, its second half kick follows the evaluation), which
+  // the power of loads acting at the end of the step needs.
+  double velocity_lag = 0.0;
 };
 
 }  // namespace mpdem

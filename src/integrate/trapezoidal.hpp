@@ -23,7 +23,7 @@ class TrapezoidalIntegrator {
   explicit TrapezoidalIntegrator(const Model& model) : model_(model), params_(model.params) {}
   // The spring increment (64) and the booked heat flows weigh the step's end by phi, like the
   // state update; the increment needs each contact's step-start history.
-  static StepPolicy policy(const Params& params) { return {params.time.phi, true, params.time.phi, false}; }
+  static StepPolicy policy(const Params& params) { return {params.time.phi, true, params.time.phi, false, 0.0}; }
 
   // Advances the particles from t to t + dt. On entry force/torque/heat hold the rates at the
   // current state. On success the arrays hold the accepted end state and its rates (the commit

@@ -19,7 +19,7 @@ class VerletIntegrator {
   explicit VerletIntegrator(const Model& model) : model_(model), params_(model.params) {}
   // One commit evaluation per step: the spring increment takes the evaluated velocity (phi = 1),
   // no step-start history; temperatures advance with the start flows only (explicit Euler).
-  static StepPolicy policy() { return {1.0, false, 0.0, true}; }
+  static StepPolicy policy() { return {1.0, false, 0.0, true, 0.5}; }
   // On entry force/torque/heat hold the rates at the current state; on exit those of the new one.
   StepReport step(Particles& p, Barriers& b, Interactions& f, double t, double dt);
 

@@ -15,12 +15,6 @@
 #include "io/pvd_index.hpp"
 #include "io/pvtu_writer.hpp"
 #include "io/vtu_writer.hpp"
-#include "sim/energy.hpp"
-#include "sim/inlets.hpp"
-#include "sim/sinks.hpp"
-#include "sim/state_scan.hpp"
-#include "thermal/heat_transfer.hpp"
-#include "field/near_field_forces.hpp"
 
 namespace mpdem {
 
@@ -55,7 +49,7 @@ void keep_rows_until(const fs::path& file, double t) {
 
 OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& barriers,
                              std::optional<double> resume_time, int pieces)
-    : model_(model), dir_(std::move(dir)), resume_time_(resume_time), pieces_(pieces) {
+    : model_(model), dir_(std::move(dir)), resume_time_(resume_time), pieces_(pieces), log_layout_(model, barriers) {
   const CsvLog::Open mode = resume_time ? CsvLog::Open::append : CsvLog::Open::replace;
   auto pvd = [&](const fs::path& f) {
     return resume_time ? std::make_unique<PvdIndex>(f, *resume_time) : std::make_unique<PvdIndex>(f);
@@ -79,23 +73,7 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
     barriers_pvd_ = pvd(dir_ / "barriers.pvd");
   }
   if (particles_csv_.every > 0.0) fs::create_directories(dir_ / "particles_csv");
-  std::vector<std::string> log_cols{
-      "step",         "time",      "dt",      "iterations",         "evaluations",         "evaluations_total",
-      "redone_steps", "particles", "removed", "contacts_pp",        "contacts_pb",         "kinetic",
-      "rotational",   "potential", "elastic", "damping_dissipated", "friction_dissipated", "total_energy"};
-  // Optional columns only for the physics a scene turns on, so plain mechanical logs keep their shape.
-  near_field_ = near_field_enabled(model.params.near_field);
-  thermal_ = model.params.analysis.thermal;
-  if (near_field_) log_cols.insert(log_cols.end() - 1, "near_field");  // part of total_energy
-  driven_ = std::any_of(barriers.motion.begin(), barriers.motion.end(),
-                        [](const MotionLaw& m) { return !m.is_static(); });
-  if (driven_) log_cols.insert(log_cols.end() - 1, "barrier_work");  // taken off total_energy
-  if (thermal_)
-    for (const char* c : {"heat_to_barriers", "heat_convected", "heat_radiated", "thermal_energy"})
-      log_cols.push_back(c);
-  for (auto* columns : {&Inlets::log_columns, &Sinks::log_columns})
-    for (std::string& c : columns(model.params)) log_cols.push_back(std::move(c));
-  log_ = log(dir_ / "log.csv", log_cols);
+  log_ = log(dir_ / "log.csv", log_layout_.columns());
   group_count_ = barriers.group_names.size();
   if (barrier_log_.every > 0.0 && group_count_ > 0) {
     std::vector<std::string> cols{"time"};
@@ -201,46 +179,8 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
   }
 }
 
-ParticleTotals particle_totals(const Model& model, const Particles& p) {
-  const StateScan scan = scan_state(p, model.params.fields, DomainParams{});
-  return {scan.energy, scan.electric, static_cast<double>(p.size()),
-          model.params.analysis.thermal ? thermal_energy(model, p) : 0.0};
-}
-
 void OutputManager::global_log(const GlobalLogRow& r, const ParticleTotals& t, const InteractionStats& s) {
-  const ParticleEnergy& e = t.energy;
-  const double potential = e.potential + t.electric;  // J, gravitational + electric
-  const double nf = near_field_ ? s.near_field_energy : 0.0;
-  const double total = e.kinetic + e.rotational + potential + s.elastic_energy + s.damping_dissipated +
-                       s.friction_dissipated + nf - s.barrier_work - s.fixed_work;
-  std::vector<double> row{static_cast<double>(r.step),
-                          r.time,
-                          r.dt,
-                          static_cast<double>(r.report ? r.report->iterations : 0),
-                          static_cast<double>(r.report ? r.report->evaluations : 0),
-                          static_cast<double>(r.evaluations_total),
-                          static_cast<double>(r.redone_steps),
-                          t.count,
-                          static_cast<double>(r.removed_total),
-                          static_cast<double>(s.contacts_pp),
-                          static_cast<double>(s.contacts_pb),
-                          e.kinetic,
-                          e.rotational,
-                          potential,
-                          s.elastic_energy,
-                          s.damping_dissipated,
-                          s.friction_dissipated};
-  if (near_field_) row.push_back(nf);
-  if (driven_) row.push_back(s.barrier_work);
-  row.push_back(total);
-  if (thermal_) {
-    row.push_back(s.heat_to_barriers);
-    row.push_back(s.heat_convected);
-    row.push_back(s.heat_radiated);
-    row.push_back(t.thermal);
-  }
-  row.insert(row.end(), r.open_system.begin(), r.open_system.end());
-  log_->row(row);
+  log_->row(log_layout_.values(r, t, s));
 }
 
 std::unique_ptr<CsvLog> OutputManager::open_on_first_row(const char* name, std::vector<std::string> columns) const {

@@ -14,6 +14,7 @@
 
 #include "integrate/step_report.hpp"
 #include "io/binary_stream.hpp"
+#include "io/global_log.hpp"
 #include "model/scene.hpp"
 #include "sim/energy.hpp"
 #include "sim/interactions.hpp"
@@ -22,27 +23,6 @@ namespace mpdem {
 
 class CsvLog;
 class PvdIndex;
-
-// One row of the global log.
-struct GlobalLogRow {
-  std::uint64_t step = 0;
-  double time = 0.0, dt = 0.0;
-  const StepReport* report = nullptr;
-  std::uint64_t evaluations_total = 0;
-  std::uint64_t redone_steps = 0;
-  std::size_t removed_total = 0;
-  // The inlets' and sinks' columns (Inlets::log_columns, Sinks::log_columns), in that order.
-  std::vector<double> open_system;
-};
-
-// The sums over the particles in a global log row; on several ranks each rank's, summed over them.
-struct ParticleTotals {
-  ParticleEnergy energy;  // J, kinetic, rotational, gravitational
-  double electric = 0.0;  // J, potential in the uniform electric field
-  double count = 0.0;     // particles
-  double thermal = 0.0;   // J, sum m c T (with [analysis] thermal; else 0)
-};
-ParticleTotals particle_totals(const Model& model, const Particles& p);
 
 // The particle snapshots due now (OutputManager::particles_due).
 struct ParticleSnapshotsDue {
@@ -115,9 +95,7 @@ class OutputManager {
   std::size_t group_count_ = 0;
   std::vector<char> group_turns_;          // [groups] 1: a rotating element (torque and power columns)
   std::vector<std::size_t> group_column_;  // [groups] first column of the group in barrier_groups.csv
-  bool near_field_ = false;                // log the near-field potential (and count it in total_energy)
-  bool driven_ = false;                    // log the work of the barriers' prescribed motion (some element moves)
-  bool thermal_ = false;                   // log the heat exchanged with the outside and the thermal energy
+  GlobalLogLayout log_layout_;
 };
 
 }  // namespace mpdem

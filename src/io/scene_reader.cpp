@@ -340,10 +340,13 @@ Scene parse_scene_file(const std::filesystem::path& file) {
   if (!in) throw InputError(name, 0, "", "cannot open scene file '" + name + "'");
   std::stringstream text;
   text << in.rdbuf();
+  return parse_scene_text(text.str(), file, name);
+}
 
+Scene parse_scene_text(const std::string& text, const std::filesystem::path& file, const std::string& name) {
   toml::table doc;
   try {
-    doc = toml::parse(text.str(), std::string_view(name));
+    doc = toml::parse(text, std::string_view(name));
   } catch (const toml::parse_error& e) {
     throw InputError(name, e.source().begin.line, "",
                      "TOML syntax error at column " + std::to_string(e.source().begin.column) + ": " +
@@ -370,8 +373,13 @@ Scene parse_scene_file(const std::filesystem::path& file) {
   return scene;
 }
 
-Scene load_scene(const std::filesystem::path& file) {
-  Scene scene = parse_scene_file(file);
+Scene load_scene(const std::filesystem::path& file) { return load_sources(parse_scene_file(file)); }
+
+Scene load_scene_text(const std::string& text, const std::filesystem::path& file, const std::string& name) {
+  return load_sources(parse_scene_text(text, file, name));
+}
+
+Scene load_sources(Scene scene) {
   for (ParticleSource& src : scene.particle_sources) {
     const int mat = src.material.empty() ? 0 : scene.model.material_index(src.material);
     src.first = scene.particles.size();

@@ -15,6 +15,7 @@
 // the state that decides the next insertion (the next k, the totals, the radius drawn ahead, the
 // next id) is checkpointed (section "inlets"), so a resumed run inserts bitwise the same
 // particles. Ids continue after the largest id the run has had (never one a removed particle had).
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -44,6 +45,9 @@ class Inlets {
   // J, kinetic + rotational + potential energy the inserted particles brought in (the energy
   // balance takes it off, as it adds what removed particles take along).
   double inserted_energy() const { return inserted_energy_; }
+  // Ids: the next inserted particle's, and numbering after `id` (particles added by other means).
+  std::int64_t next_id() const { return next_id_; }
+  void ids_after(std::int64_t id) { next_id_ = std::max(next_id_, id + 1); }
   // Global log: per inlet "<name>.inserted" (-), "<name>.inserted_mass" (kg), "<name>.shortfall"
   // (kg with mass_rate, particles with count_rate).
   static std::vector<std::string> log_columns(const Params& prm);

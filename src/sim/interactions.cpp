@@ -302,6 +302,7 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   {
     ScopedTimer timer(times_.fields);
     start_accumulators(p);
+    external_.add_to(p);
   }
   if (near_) {
     ScopedTimer timer(times_.other);
@@ -358,6 +359,11 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     const double held = p.any_fixed() ? fixed_particle_power(p, model_.params.analysis.rotation) : 0.0;  // W
     stats_.fixed_work += 0.5 * req.dt * (stats_.fixed_power + held);
     stats_.fixed_power = held;
+    const double pushed = external_.empty() ? 0.0
+                                            : external_.power(p, policy_.velocity_lag * req.dt,
+                                                              model_.params.analysis.rotation);  // W
+    stats_.external_work += 0.5 * req.dt * (stats_.external_power + pushed);
+    stats_.external_power = pushed;
     stats_.spring_energy = pp.spring_after + pb.spring_after;
   }
 }

@@ -15,6 +15,7 @@
 #include "io/binary_stream.hpp"
 #include "io/checkpoint_format.hpp"
 #include "model/scene.hpp"
+#include "sim/external_loads.hpp"
 
 namespace mpdem {
 
@@ -43,7 +44,11 @@ struct InteractionStats {
   // J, cumulative work the fixed particles' prescribed motion did on the rest (the trapezoid of
   // fixed_power over committed steps, as barrier_work): what holds them to their constant v and w.
   double fixed_work = 0.0;
-  double fixed_power = 0.0;        // W, -sum (F.v + T.w) over fixed particles at the last committed evaluation
+  double fixed_power = 0.0;  // W, -sum (F.v + T.w) over fixed particles at the last committed evaluation
+  // J, cumulative work of the loads a caller added (ExternalLoads; the trapezoid of
+  // external_power over committed steps, as barrier_work).
+  double external_work = 0.0;
+  double external_power = 0.0;     // W, sum (F.v + T.w) of the added loads at the last committed evaluation
   std::uint64_t rebuilds = 0;      // neighbour list rebuilds
   double near_field_energy = 0.0;  // J, potential of the near-field pairs within the cutoff
   // Thermal bookkeeping (physics.md section 8), cumulative over committed steps with the
@@ -58,10 +63,11 @@ struct InteractionStats {
 // The statistics that are sums over the particles, so over the ranks of a decomposed run (the
 // others, drive_power and barrier_work, come from barrier loads already summed over the ranks).
 inline constexpr double InteractionStats::*kRankSummedStats[] = {
-    &InteractionStats::elastic_energy,   &InteractionStats::damping_dissipated, &InteractionStats::friction_dissipated,
-    &InteractionStats::damping_power,    &InteractionStats::rolling_power,      &InteractionStats::spring_energy,
-    &InteractionStats::fixed_work,       &InteractionStats::fixed_power,        &InteractionStats::near_field_energy,
-    &InteractionStats::heat_to_barriers, &InteractionStats::heat_convected,     &InteractionStats::heat_radiated};
+    &InteractionStats::elastic_energy, &InteractionStats::damping_dissipated, &InteractionStats::friction_dissipated,
+    &InteractionStats::damping_power,  &InteractionStats::rolling_power,      &InteractionStats::spring_energy,
+    &InteractionStats::fixed_work,     &InteractionStats::fixed_power,        &InteractionStats::external_work,
+    &InteractionStats::external_power, &InteractionStats::near_field_energy,  &InteractionStats::heat_to_barriers,
+    &InteractionStats::heat_convected, &InteractionStats::heat_radiated};
 
 // Wall time spent per part of the evaluations (s, cumulative; not checkpointed), for the
 // benchmark's breakdown of where a step goes.
@@ -133,6 +139,8 @@ class Interactions {
   OverlapReport global_max_overlap(const Particles& p, const Barriers& b) const;
 
   const InteractionStats& stats() const { return stats_; }
+  // Forces and torques added to particles by a caller, between steps (sim/external_loads.hpp).
+  ExternalLoads& external_loads() { return external_; }
   const PhaseTimes& times() const { return times_; }
   // Several ranks: max / mean of the ranks' cost at the last load-balance measurement
   // ([parallel] balance_every; 0 before the first, and on one rank), whether the cut planes moved
@@ -188,6 +196,7 @@ class Interactions {
   StepPolicy policy_;
   ContactTable table_;  // the contact laws by pair of materials, rebuilt from model_ at every evaluation
   InteractionStats stats_;
+  ExternalLoads external_;
   PhaseTimes times_;
   std::uint64_t mid_step_rebuilds_ = 0;
   // m, bound on the particles' displacement since the build at the next evaluation, set by

@@ -32,6 +32,8 @@ void for_each_stat(S& s, F&& f) {
   f(s.drive_power);
   f(s.fixed_work);
   f(s.fixed_power);
+  f(s.external_work);
+  f(s.external_power);
   f(s.rebuilds);
   f(s.near_field_energy);
   f(s.heat_to_barriers);
@@ -39,7 +41,7 @@ void for_each_stat(S& s, F&& f) {
   f(s.heat_radiated);
 }
 // A field added to InteractionStats must be added to for_each_stat (and is then a format change).
-static_assert(sizeof(InteractionStats) == 17 * 8, "InteractionStats changed: update for_each_stat");
+static_assert(sizeof(InteractionStats) == 19 * 8, "InteractionStats changed: update for_each_stat");
 // Reads one section with `read(BinaryReader&)`, which must consume it whole.
 template <class F>
 void read_section(CheckpointReader& r, const std::string& name, F&& read) {

@@ -130,7 +130,8 @@ double Simulation::energy_balance(const StateScan& s) const {
   const InteractionStats& st = stats();
   const double inserted = inlets_ ? inlets_->inserted_energy() : 0.0;  // J, what inlets brought in
   return -inserted + s.energy.kinetic + s.energy.rotational + s.energy.potential + s.electric + st.elastic_energy +
-         st.damping_dissipated + st.friction_dissipated + record_.removed_energy - st.barrier_work - st.fixed_work;
+         st.damping_dissipated + st.friction_dissipated + record_.removed_energy - st.barrier_work - st.fixed_work -
+         st.external_work;
 }
 
 void Simulation::record_state(const StateScan& s) {
@@ -270,13 +271,32 @@ void Simulation::insert_from_inlets() {
 void Simulation::log_row(GlobalLogRow row) {
   if (inlets_) inlets_->log_values(row.open_system);
   if (sinks_) sinks_->log_values(row.time, row.open_system);
+  const ParticleTotals t = totals();
+  if (output_) output_->global_log(row, t, stats());
+}
+
+ParticleTotals Simulation::totals() const {
   ParticleTotals t = particle_totals(scene_.model, scene_.particles);
   if (comm_) {  // reduced, never gathered: a log row costs the same on any number of ranks
     double v[] = {t.energy.kinetic, t.energy.rotational, t.energy.potential, t.electric, t.count, t.thermal};
     comm_->sum(v);
     t = {{v[0], v[1], v[2]}, v[3], v[4], v[5]};
   }
-  if (output_) output_->global_log(row, t, stats());
+  return t;
+}
+
+std::vector<std::pair<std::string, double>> Simulation::log_values() const {
+  GlobalLogRow row{steps_, time_, dt_, &last_, evaluations_, redone_, removed_, {}};
+  if (inlets_) inlets_->log_values(row.open_system);
+  if (sinks_) {  // a copy: the sinks' rates are measured between rows of the log file
+    Sinks copy = *sinks_;
+    copy.log_values(time_, row.open_system);
+  }
+  const GlobalLogLayout layout(scene_.model, scene_.barriers);
+  const std::vector<double> v = layout.values(row, totals(), stats());
+  std::vector<std::pair<std::string, double>> out;
+  for (std::size_t k = 0; k < v.size(); ++k) out.emplace_back(layout.columns()[k], v[k]);
+  return out;
 }
 
 void Simulation::snapshots(double h, bool force) {
@@ -299,11 +319,18 @@ std::string Simulation::open_system_summary() const {
 }
 
 RunSummary Simulation::run() {
+  start();
+  const double end = scene_.model.params.time.duration;
+  while (time_ < end - 1e-9 * scene_.model.params.time.dt) step(end);
+  return finish();
+}
+
+void Simulation::start() {
+  if (started_) return;
   const Params& prm = scene_.model.params;
-  const std::filesystem::path dir = output_dir_for(scene_, options_);
   const bool out = options_.write_output;  // on every rank; rank 0 writes, the others their particle pieces
   if (out && root()) {
-    output_ = std::make_unique<OutputManager>(scene_.model, dir, scene_.barriers,
+    output_ = std::make_unique<OutputManager>(scene_.model, output_dir_for(scene_, options_), scene_.barriers,
                                               resumed_ ? std::optional<double>(time_) : std::nullopt,
                                               comm_ ? comm_->size() : 1);
     if (!resume_output_state_.empty()) {
@@ -312,69 +339,78 @@ RunSummary Simulation::run() {
     }
   }
   initialize();
-  const double duration = prm.time.duration;
-  const double dt = prm.time.dt;
   if (out && !resumed_) {
-    snapshots(dt, true);
-    log_row({0, time_, dt, nullptr, evaluations_, 0, removed_, {}});
+    snapshots(prm.time.dt, true);
+    log_row({0, time_, prm.time.dt, nullptr, evaluations_, 0, removed_, {}});
   }
-  install_stop_handlers();
+  if (options_.stop_on_signal) install_stop_handlers();
+  first_step_ = steps_;
+  progress_ = std::make_unique<Progress>(prm.time.duration, prm.output.progress_every, options_.progress && root(),
+                                         time_, steps_);
+  started_ = true;
+}
+
+void Simulation::step(double end) {
+  start();
+  const Params& prm = scene_.model.params;
+  const bool out = options_.write_output;
+  const double t0 = time_;
+  if (prm.time.adaptive && prm.time.integrator == Integrator::Trapezoidal) last_ = advance_adaptive(end - time_);
+  else last_ = advance(std::min(prm.time.dt, end - time_));  // the last step ends exactly at `end`
+  const double h = time_ - t0;
+  if (out) {
+    snapshots(h, false);
+    if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) == 0)
+      log_row({steps_, time_, h, &last_, evaluations_, redone_, removed_, {}});
+  }
+  if (output_ && interactions_->balance_measurements() != balance_rows_) {
+    balance_rows_ = interactions_->balance_measurements();
+    output_->balance(
+        {time_, steps_, comm_->size(), interactions_->imbalance(), interactions_->moved_at_last_measurement()});
+  }
+  const auto& st = stats();
+  progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count(), interactions_->imbalance());
+  if ((inlets_ || sinks_) && progress_->summary_due()) progress_->summary(open_system_summary());
   const auto every = static_cast<std::uint64_t>(prm.output.checkpoint_every);
-  const std::uint64_t first_step = steps_;
-  progress_ = std::make_unique<Progress>(duration, prm.output.progress_every, options_.progress && root(), time_,
-                                         steps_);
-  struct Release {  // no progress reports from steps taken outside run()
-    std::unique_ptr<Progress>& p;
-    ~Release() { p.reset(); }
-  } release{progress_};
-  StepReport last;
-  while (time_ < duration - 1e-9 * dt) {
-    const double t0 = time_;
-    if (prm.time.adaptive && prm.time.integrator == Integrator::Trapezoidal) last = advance_adaptive(duration - time_);
-    else last = advance(std::min(dt, duration - time_));  // the last step ends exactly at duration
-    const double h = time_ - t0;
+  const std::filesystem::path dir = output_dir_for(scene_, options_);
+  if (out && every > 0 && steps_ % every == 0) {  // (collective on several ranks)
+    write_checkpoint(dir / "checkpoint.bin");
+    if (output_) output_->flush();
+  }
+  if (!options_.stop_on_signal) return;
+  if (const int sig = comm_ ? stop_across_ranks() : stop_signal()) {
+    std::filesystem::path ck;
     if (out) {
-      snapshots(h, false);
-      if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) == 0)
-        log_row({steps_, time_, h, &last, evaluations_, redone_, removed_, {}});
-    }
-    if (output_ && interactions_->balance_measurements() != balance_rows_) {
-      balance_rows_ = interactions_->balance_measurements();
-      output_->balance(
-          {time_, steps_, comm_->size(), interactions_->imbalance(), interactions_->moved_at_last_measurement()});
-    }
-    const auto& st = stats();
-    progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count(), interactions_->imbalance());
-    if ((inlets_ || sinks_) && progress_->summary_due()) progress_->summary(open_system_summary());
-    if (out && every > 0 && steps_ % every == 0) {  // (collective on several ranks)
-      write_checkpoint(dir / "checkpoint.bin");
+      ck = dir / "checkpoint.bin";
+      write_checkpoint(ck);
       if (output_) output_->flush();
     }
-    if (const int sig = comm_ ? stop_across_ranks() : stop_signal()) {
-      std::filesystem::path ck;
-      if (out) {
-        ck = dir / "checkpoint.bin";
-        write_checkpoint(ck);
-        if (output_) output_->flush();
-      }
-      throw Interrupted(sig, time_, steps_, ck);
-    }
+    throw Interrupted(sig, time_, steps_, ck);
   }
-  if (out) {
-    snapshots(dt, true);
+}
+
+void Simulation::flush_outputs() {
+  if (output_) output_->flush();
+}
+
+RunSummary Simulation::finish() {
+  start();
+  const Params& prm = scene_.model.params;
+  if (options_.write_output) {
+    snapshots(prm.time.dt, true);
     if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) != 0)
-      log_row({steps_, time_, dt_, &last, evaluations_, redone_, removed_, {}});
+      log_row({steps_, time_, dt_, &last_, evaluations_, redone_, removed_, {}});
     if (output_) output_->flush();
   }
   if (inlets_ || sinks_) progress_->summary(open_system_summary());  // the final totals
   progress_->finish(time_, steps_);
-  RunSummary sum{time_, steps_, steps_ - first_step, evaluations_, removed_, record_, prm.checks.energy_drift, ""};
+  RunSummary sum{time_, steps_, steps_ - first_step_, evaluations_, removed_, record_, prm.checks.energy_drift, ""};
   // Work and potential the balance leaves out make its drift meaningless as a measure of the step.
   if (prm.near_field.cutoff > 0.0) sum.drift_unchecked = "the near field's potential is not in the balance";
   if (output_) {
     // Kept beside the results, where a warning on stderr is easily lost; none: an earlier one is stale.
     const std::string warning = drift_warning(sum);
-    const std::filesystem::path file = dir / "warnings.txt";
+    const std::filesystem::path file = output_->dir() / "warnings.txt";
     if (!warning.empty()) write_file_atomically(file, [&](std::ostream& os) { os << warning << "\n"; });
     else std::filesystem::remove(file);
   }

@@ -28,6 +28,7 @@ class Progress;
 class Inlets;
 class Sinks;
 struct GlobalLogRow;
+struct ParticleTotals;
 
 struct RunOptions {
   std::filesystem::path output_dir;  // empty: the scene's [output] dir, relative to the scene
@@ -35,6 +36,9 @@ struct RunOptions {
   bool write_output = true;          // false: no files at all (tests)
   // The ranks that share the run (docs/parallel.md); null: Communicator::world(), all of them.
   const Communicator* comm = nullptr;
+  // SIGINT / SIGTERM stop the run cleanly after the current step (a checkpoint, then Interrupted).
+  // false: the caller handles signals (the Python module asks Python's handlers between steps).
+  bool stop_on_signal = true;
 };
 
 // Output folder of a run: options.output_dir, else the scene's [output] dir relative to the scene.
@@ -50,6 +54,31 @@ class Simulation {
   Simulation& operator=(const Simulation&) = delete;
 
   RunSummary run();  // runs to [time] duration; the summary says how trustworthy the run was
+
+  // run() in parts, for callers that act between steps (the Python module): start() opens the
+  // outputs and writes the first snapshots (once; step() and finish() call it); step(end) takes one
+  // accepted step, ending at `end` (s) at the latest, with its outputs, checkpoint and stop
+  // signal as run() does; finish() writes the final snapshots and returns the summary.
+  void start();
+  void step(double end);
+  RunSummary finish();
+  void flush_outputs();  // every output file complete as of the last step
+  std::filesystem::path output_dir() const { return output_dir_for(scene_, options_); }
+  // After a caller changed the state between steps (positions, velocities, temperatures): the
+  // neighbour lists rebuilt and the rates evaluated at the new state, as at the start of a run;
+  // the energy checks measure from the new state.
+  void state_changed();
+  // Between steps, on one rank (the Python module; sim/simulation_edits.cpp). add_particles
+  // appends `fresh`, whose ids must be new (InputError naming the first taken one); inlets then
+  // number their particles after them. remove_particles removes the particles `ids` (InputError
+  // for an unknown id), writes them to removed.csv (not counted as domain exits) and keeps the
+  // energy they take along in the balance. Both keep the other particles' contact history and
+  // re-evaluate the rates.
+  void add_particles(Particles fresh);
+  void remove_particles(const std::vector<std::int64_t>& ids);
+  std::int64_t next_free_id() const;  // one more than the largest id used by a particle or inlet
+  // The global log's quantities now, by column name as in log.csv (collective on several ranks).
+  std::vector<std::pair<std::string, double>> log_values() const;
 
   // Finer control, for tests and tools.
   void initialize();              // first evaluation of the rates at t = 0
@@ -96,6 +125,7 @@ class Simulation {
   // others' contact history kept, the rates re-evaluated; exits: domain exits (counted, one
   // progress line each), else a sink's. Collective on several ranks.
   void remove_marked(const std::vector<char>& keep, bool exits);
+  ParticleTotals totals() const;            // the sums over every rank's particles for the global log
   void log_row(GlobalLogRow row);           // a global log row, with the inlets' and sinks' columns
   std::string open_system_summary() const;  // the inlets' and sinks' line for stderr ("" = none)
   // J, mechanical energy + cumulative dissipation + what removed particles took along, from the
@@ -155,6 +185,9 @@ class Simulation {
   std::uint64_t balance_rows_ = 0;  // load-balance measurements written to balance.csv
   RunRecord record_;                // for the end-of-run summary
   bool initialized_ = false;
+  bool started_ = false;                   // start() ran: outputs open, first snapshots written
+  StepReport last_;                        // the report of the last step()
+  std::uint64_t first_step_ = 0;           // steps_ when start() ran
   bool resumed_ = false;                   // state loaded from a checkpoint
   std::vector<char> resume_output_state_;  // OutputManager series from the checkpoint
 };

@@ -1,0 +1,298 @@
+"""Scene: a scene file's tables in Python (docs/python.md, "Scenes").
+
+The builder's methods are the TOML scene's tables and keys (docs/scene.md): ``scene.time(dt=...)``
+is ``[time] dt = ...``, ``scene.material(name=...)`` one ``[[material]]`` entry. The engine reads
+a built scene through the same reader as ``mpdem run``, so it gets the same defaults, checks and
+messages (an InputError naming the key).
+"""
+
+import copy
+import os
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+from . import _core
+from .toml_writer import dumps
+
+__all__ = ["Scene"]
+
+# Tables that appear once, and tables that repeat ([[name]]), as in docs/scene.md.
+TABLES = ("time", "tolerance", "analysis", "gravity", "fields", "near_field", "contact", "thermal",
+          "domain", "neighbor", "parallel", "checks", "output")
+REPEATED = ("material", "particles", "barriers", "inlet", "sink")
+
+# Particle CSV columns of the array sources (docs/scene.md, "Particle CSV"): (array, columns).
+_PARTICLE_COLUMNS = (("id", ("id",)), ("position", ("x", "y", "z")), ("radius", ("radius",)),
+                     ("velocity", ("vx", "vy", "vz")), ("angular_velocity", ("wx", "wy", "wz")),
+                     ("material", ("material",)), ("temperature", ("temperature",)), ("charge", ("charge",)),
+                     ("density", ("density",)), ("fixed", ("fixed",)))
+
+
+def _merge(into, keys):
+    for k, v in keys.items():
+        if isinstance(v, dict) and isinstance(into.get(k), dict):
+            _merge(into[k], v)
+        else:
+            into[k] = v
+
+
+def _csv_field(v):
+    if isinstance(v, (float, np.floating)):
+        return repr(float(v))  # the shortest text that reads back as the same double
+    if isinstance(v, (bool, np.bool_)):
+        return "1" if v else "0"
+    return str(v)
+
+
+class Scene:
+    """A scene under construction, or read from a TOML file (Scene.from_toml)."""
+
+    def __init__(self, dir=None, name="scene"):
+        #: the TOML document: table name -> dict, repeated table name -> list of dicts
+        self.data = {}
+        #: folder that relative paths (CSV, STL files, the output folder) resolve against
+        self.dir = Path(dir) if dir is not None else Path.cwd()
+        #: what messages call the scene
+        self.name = name
+        self._arrays = {"particles": {}, "barriers": {}}  # entry index -> arrays
+        self._file = None  # the file it was read from
+        self._as_read = None  # data as read from _file (a changed scene is passed as text)
+
+    # --- reading and writing -------------------------------------------------------------------
+
+    @classmethod
+    def from_toml(cls, path):
+        """The scene of a TOML file: loaded by the engine to check it (InputError as in mpdem
+        check), and its tables kept in .data for changes and to_toml()."""
+        path = Path(path).resolve()
+        _core.parse(str(path))  # syntax, keys and values, named by file, line and key
+        with open(path, "rb") as f:
+            data = tomllib.load(f)
+        scene = cls(dir=path.parent, name=str(path))
+        scene.data = data
+        scene._file = path
+        scene._as_read = copy.deepcopy(data)
+        return scene
+
+    @classmethod
+    def from_dict(cls, data, dir=None, name="scene"):
+        scene = cls(dir=dir, name=name)
+        scene.data = copy.deepcopy(data)
+        return scene
+
+    def to_toml(self, path=None):
+        """The scene as TOML text; with `path`, also written there, with the particles and
+        barriers given as arrays written as CSV files beside it (path stem + .particlesK.csv)."""
+        if path is None:
+            if any(self._arrays.values()):
+                raise ValueError("a scene with particles or barriers given as arrays needs a path: "
+                                 "to_toml(path) writes them as CSV files beside it")
+            return dumps(self.data)
+        path = Path(path)
+        files = self._write_arrays(path.parent.resolve(), path.stem, relative=True)
+        text = dumps(self._document(files))
+        path.write_text(text)
+        return text
+
+    def _document(self, files):
+        doc = copy.deepcopy(self.data)
+        for kind, by_entry in files.items():
+            for k, f in by_entry.items():
+                doc[kind][k]["file"] = f
+        return doc
+
+    def _write_arrays(self, folder, stem, relative):
+        files = {"particles": {}, "barriers": {}}
+        for k, arrays in self._arrays["particles"].items():
+            f = folder / f"{stem}.particles{k}.csv"
+            _write_particle_csv(f, arrays)
+            files["particles"][k] = f.name if relative else str(f)
+        for k, arrays in self._arrays["barriers"].items():
+            f = folder / f"{stem}.barriers{k}.csv"
+            _write_barrier_csv(f, arrays)
+            files["barriers"][k] = f.name if relative else str(f)
+        return files
+
+    def _engine_input(self, scratch):
+        """(file, text, name) for the engine: the file itself when the scene is as read, else the
+        TOML text standing for a file in self.dir, its array sources written to `scratch`."""
+        if self._file is not None and self.data == self._as_read and not any(self._arrays.values()):
+            return str(self._file), None, ""
+        files = self._write_arrays(Path(scratch), "scene", relative=False)
+        name = f"{self.name} (built in Python)" if self._file is None else f"{self._file} (changed in Python)"
+        return str(self.dir / f"{Path(self.name).stem}.toml"), dumps(self._document(files)), name
+
+    def check(self):
+        """The problems `mpdem check` reports, as (stops_run, message) pairs; raises InputError
+        for bad input, as Simulation(scene) would."""
+        import tempfile
+
+        with tempfile.TemporaryDirectory() as scratch:
+            file, text, name = self._engine_input(scratch)
+            return _core.check(file, text, name)
+
+    # --- tables ----------------------------------------------------------------------------------
+
+    def _set(self, table, keys):
+        _merge(self.data.setdefault(table, {}), keys)
+        return self
+
+    def _add(self, table, keys):
+        self.data.setdefault(table, []).append({k: v for k, v in keys.items() if v is not None})
+        return len(self.data[table]) - 1
+
+    def time(self, **keys):
+        """[time]: duration (s), dt (s), integrator ("trapezoidal" | "verlet"), adaptive, ..."""
+        return self._set("time", keys)
+
+    def tolerance(self, **keys):
+        return self._set("tolerance", keys)
+
+    def analysis(self, **keys):
+        return self._set("analysis", keys)
+
+    def gravity(self, vector=None, **keys):
+        """[gravity] vector = [gx, gy, gz] (m/s^2)."""
+        if vector is not None:
+            keys["vector"] = list(np.asarray(vector, dtype=float))
+        return self._set("gravity", keys)
+
+    def fields(self, **keys):
+        return self._set("fields", keys)
+
+    def near_field(self, **keys):
+        return self._set("near_field", keys)
+
+    def contact(self, particle_particle=None, particle_barrier=None, **keys):
+        """[contact.particle_particle] and [contact.particle_barrier] as dicts of their keys."""
+        if particle_particle is not None:
+            keys["particle_particle"] = dict(particle_particle)
+        if particle_barrier is not None:
+            keys["particle_barrier"] = dict(particle_barrier)
+        return self._set("contact", keys)
+
+    def contact_pair(self, **keys):
+        """One [[contact.pair]] entry: the coefficients of one pair of materials."""
+        self.data.setdefault("contact", {}).setdefault("pair", []).append(keys)
+        return self
+
+    def thermal(self, **keys):
+        return self._set("thermal", keys)
+
+    def domain(self, **keys):
+        """[domain]: min, max (m), periodic (axes), on_exit."""
+        return self._set("domain", keys)
+
+    def neighbor(self, **keys):
+        return self._set("neighbor", keys)
+
+    def parallel(self, **keys):
+        return self._set("parallel", keys)
+
+    def checks(self, **keys):
+        return self._set("checks", keys)
+
+    def output(self, **keys):
+        """[output]: dir (relative to Scene.dir), particles_every (s), log_every (steps), ..."""
+        return self._set("output", keys)
+
+    def material(self, name, **keys):
+        """One [[material]]: name, density (kg/m^3), young (Pa), poisson, ..."""
+        self._add("material", dict(name=name, **keys))
+        return self
+
+    def inlet(self, **keys):
+        """One [[inlet]] (docs/scene.md: region, rates, start, end, radius, material, ...)."""
+        self._add("inlet", keys)
+        return self
+
+    def sink(self, **keys):
+        """One [[sink]]: region, min, max (box) or base, axis, radius, height (cylinder)."""
+        self._add("sink", keys)
+        return self
+
+    def particles(self, position=None, radius=None, *, file=None, generate=None, material=None, fixed=None,
+                  velocity=None, angular_velocity=None, id=None, temperature=None, charge=None, density=None,
+                  **keys):
+        """One [[particles]] source: a CSV `file`, a `generate` table, or arrays: position (N, 3)
+        m, radius (N,) m, and optionally velocity, angular_velocity (N, 3), id, temperature,
+        charge, density (N,), material (a name for all, or N names or indices), fixed (N,) 0/1."""
+        arrays = None
+        if position is not None:
+            if file is not None or generate is not None:
+                raise ValueError("particles: give arrays, a file or generate, not several")
+            n = len(np.asarray(position))
+            arrays = {"position": np.asarray(position, dtype=float).reshape(n, 3),
+                      "radius": np.broadcast_to(np.asarray(radius, dtype=float), (n,))}
+            for name, a, shape in (("velocity", velocity, (n, 3)), ("angular_velocity", angular_velocity, (n, 3)),
+                                   ("temperature", temperature, (n,)), ("charge", charge, (n,)),
+                                   ("density", density, (n,))):
+                if a is not None:
+                    arrays[name] = np.broadcast_to(np.asarray(a, dtype=float), shape)
+            if id is not None:
+                arrays["id"] = np.asarray(id, dtype=np.int64).reshape(n)
+            if fixed is not None and not isinstance(fixed, bool):
+                arrays["fixed"] = np.broadcast_to(np.asarray(fixed, dtype=np.int64), (n,))
+                fixed = None
+            if material is not None and not isinstance(material, str):
+                arrays["material"] = np.asarray(material).reshape(n)
+                material = None
+        elif radius is not None:
+            raise ValueError("particles: radius without position")
+        entry = dict(file=file, generate=generate, material=material, fixed=fixed, **keys)
+        k = self._add("particles", entry)
+        if arrays is not None:
+            self._arrays["particles"][k] = arrays
+        return self
+
+    def barriers(self, vertices=None, *, file=None, stl=None, id=None, **keys):
+        """One [[barriers]] source: a barrier CSV `file`, an `stl` file, or `vertices` (M, 3, 3) m
+        of M triangles (counter-clockwise seen from the side the normal points to), with the
+        entry's keys (group, material, motion, thickness, temperature, ...)."""
+        tri = None
+        if vertices is not None:
+            if file is not None or stl is not None:
+                raise ValueError("barriers: give vertices, a file or an stl, not several")
+            tri = {"vertices": np.asarray(vertices, dtype=float).reshape(-1, 3, 3)}
+            if id is not None:
+                tri["id"] = np.asarray(id, dtype=np.int64).reshape(len(tri["vertices"]))
+        entry = dict(file=file, stl=stl, **keys)
+        k = self._add("barriers", entry)
+        if tri is not None:
+            self._arrays["barriers"][k] = tri
+        return self
+
+
+def _write_particle_csv(path, arrays):
+    cols, data = [], []
+    for name, names in _PARTICLE_COLUMNS:
+        if name not in arrays:
+            continue
+        a = np.asarray(arrays[name])
+        cols.extend(names)
+        data.extend([a[:, c] for c in range(a.shape[1])] if a.ndim == 2 else [a])
+    with open(path, "w") as f:
+        f.write(",".join(cols) + "\n")
+        for row in zip(*data):
+            f.write(",".join(_csv_field(v.item() if hasattr(v, "item") else v) for v in row) + "\n")
+
+
+def _write_barrier_csv(path, arrays):
+    v = arrays["vertices"]
+    cols = (["id"] if "id" in arrays else []) + ["x1", "y1", "z1", "x2", "y2", "z2", "x3", "y3", "z3"]
+    with open(path, "w") as f:
+        f.write(",".join(cols) + "\n")
+        for k in range(len(v)):
+            row = ([str(int(arrays["id"][k]))] if "id" in arrays else []) + [repr(float(x)) for x in v[k].reshape(9)]
+            f.write(",".join(row) + "\n")
+
+
+def _scene_of(scene):
+    """A Scene for a Scene or a path to a TOML file."""
+    if isinstance(scene, Scene):
+        return scene
+    if isinstance(scene, (str, os.PathLike)):
+        return Scene.from_toml(scene)
+    raise TypeError(f"expected an mpdem.Scene or a path to a scene file, got {type(scene).__name__}")

@@ -1,0 +1,269 @@
+"""Simulation: a scene run step by step from Python (docs/python.md, "Running").
+
+Stepping happens in the engine with the GIL released; Python runs only between accepted steps
+(callbacks, Ctrl-C), never inside a step's fixed-point iterations.
+"""
+
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from . import _core
+from .scene import _scene_of
+
+__all__ = ["Simulation", "Particles"]
+
+
+class Particles:
+    """The particles' arrays (docs/python.md, "State").
+
+    Attributes (position, velocity, ...) are copies in ascending id order, the same order every
+    time whatever the engine's storage order; assigning one (all particles, id order) or calling
+    set(name, values, ids) changes the state before the next step. view(name) is a zero-copy,
+    read-only array in the engine's storage order, valid until the next step.
+    """
+
+    def __init__(self, core):
+        self._core = core
+
+    def __len__(self):
+        return self._core.count
+
+    def view(self, name):
+        """Zero-copy, read-only, storage order (pair it with view("id")); valid until the next step."""
+        return self._core.view(name)
+
+    def set(self, name, values, ids=None):
+        """Sets `name` (position, velocity, angular_velocity, temperature) for the particles
+        `ids` (values in that order), or for all particles in id order when ids is None."""
+        self._core.set(name, np.asarray(values, dtype=float), None if ids is None else np.asarray(ids, dtype=np.int64))
+
+    def add_force(self, ids, force=None, torque=None):
+        """Adds force (N) and torque (N m, about the centre) to the particles `ids` at every
+        evaluation from now on, on top of contacts and fields, until set again or cleared: rows of
+        (3,) in the order of `ids` (one row: the same for all). A zero row removes a particle's
+        load. Their work enters the energy balance (log: total_energy). Not in checkpoints."""
+        ids = np.atleast_1d(np.asarray(ids, dtype=np.int64))
+        n = len(ids)
+        f = np.zeros((n, 3)) if force is None else np.broadcast_to(np.asarray(force, dtype=float), (n, 3))
+        t = np.zeros((n, 3)) if torque is None else np.broadcast_to(np.asarray(torque, dtype=float), (n, 3))
+        self._core.add_loads(ids, np.ascontiguousarray(f), np.ascontiguousarray(t))
+
+    def clear_forces(self):
+        """Removes every force and torque added with add_force."""
+        self._core.clear_loads()
+
+    def as_dict(self):
+        """Every array, id-ordered copies."""
+        return {name: self._core.get(name) for name in _core.particle_arrays}
+
+
+def _array_property(name, doc):
+    def get(self):
+        return self._core.get(name)
+
+    def put(self, values):
+        self.set(name, values)
+
+    settable = name in _core.settable_arrays
+    return property(get, put if settable else None, doc=doc)
+
+
+for _name, _doc in (
+    ("id", "(N,) int64, the particles' ids, ascending"),
+    ("position", "(N, 3) m, centres"),
+    ("velocity", "(N, 3) m/s"),
+    ("angular_velocity", "(N, 3) rad/s"),
+    ("orientation", "(N, 4) unit quaternion (w, x, y, z), body to world"),
+    ("force", "(N, 3) N, total force of the last evaluation"),
+    ("torque", "(N, 3) N m, total torque about the centre of the last evaluation"),
+    ("radius", "(N,) m"),
+    ("mass", "(N,) kg"),
+    ("inertia", "(N,) kg m^2"),
+    ("temperature", "(N,) K"),
+    ("charge", "(N,) C"),
+    ("heat", "(N,) W, heat flow into the particle of the last evaluation"),
+    ("material", "(N,) int32, index into the scene's materials"),
+    ("fixed", "(N,) uint8, 1: prescribed motion"),
+    ("image", "(N, 3) int32, periodic image counters (unwrapped = position + image * period)"),
+):
+    setattr(Particles, _name, _array_property(_name, _doc))
+
+
+class Barriers:
+    """The barrier groups (docs/python.md, "Barriers"): loads of the last evaluation, motion, and
+    a constant velocity set between steps."""
+
+    def __init__(self, core):
+        self._core = core
+
+    @property
+    def groups(self):
+        """The groups' names, in the order of barrier_groups.csv."""
+        return list(self._core.barrier_groups)
+
+    def load(self, group):
+        """dict: force (3,) N, moment (3,) N m about the origin, axis_torque N m, power W (what the
+        group's prescribed motion puts into the particles), area m^2."""
+        return self._core.group_load(group)
+
+    def force(self, group):
+        """(3,) N, the particles' force on the group (last evaluation)."""
+        return self._core.group_load(group)["force"]
+
+    def motion(self, group):
+        """(displacement (3,) m, velocity (3,) m/s) of the group's translation now."""
+        return self._core.group_motion(group)
+
+    def set_velocity(self, group, velocity):
+        """From now on the group translates at `velocity` (m/s), its position continuous; only for
+        groups without sine, cosine or rotation terms in their law."""
+        self._core.set_group_velocity(group, [float(v) for v in velocity])
+
+
+class Simulation:
+    """A run of `scene` (an mpdem.Scene or a path to a TOML scene file).
+
+    threads: OpenMP threads while stepping (None: all cores); output_dir: where the outputs go
+    (None: the scene's [output] dir); write_output=False: no files; progress: the CLI's progress
+    line on stderr.
+    """
+
+    def __init__(self, scene, threads=None, output_dir=None, write_output=True, progress=False, _resume=None):
+        self.scene = _scene_of(scene)
+        self._scratch = tempfile.TemporaryDirectory(prefix="mpdem-")  # CSV files of array sources
+        file, text, name = self.scene._engine_input(self._scratch.name)
+        self._core = _core.Simulation(file, text, name, threads=threads or 0,
+                                      output_dir=str(output_dir) if output_dir is not None else "",
+                                      write_output=write_output, progress=progress,
+                                      resume=str(_resume) if _resume is not None else "")
+        self.particles = Particles(self._core)
+        self.barriers = Barriers(self._core)
+
+    @classmethod
+    def resume(cls, path, scene, **options):
+        """Continues the run checkpointed in `path` (Simulation.save or the CLI's checkpoint.bin) of
+        `scene`, which must be the scene it was written from (InputError otherwise)."""
+        return cls(scene, _resume=path, **options)
+
+    # --- running ---
+
+    def run(self, duration=None, callback=None, every=1):
+        """Steps for `duration` s of simulated time (None: to the scene's [time] duration),
+        calling callback(sim) after every `every` accepted steps. Returns True when the run
+        reached the scene's end (its final outputs then written as `mpdem run` writes them)."""
+        end = None if duration is None else self.time + float(duration)
+        cb = None if callback is None else (lambda: callback(self))
+        return self._core.run(end, cb, int(every))
+
+    def step(self, n=1):
+        """n accepted steps."""
+        self._core.step(int(n))
+
+    def close(self):
+        """Writes the final outputs now (a run that stopped before the scene's end)."""
+        self._core.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    # --- state ---
+
+    @property
+    def time(self):
+        """s, simulated time"""
+        return self._core.time
+
+    @property
+    def dt(self):
+        """s, the step the next step takes"""
+        return self._core.dt
+
+    @property
+    def end_time(self):
+        """s, the scene's [time] duration"""
+        return self._core.end_time
+
+    @property
+    def steps(self):
+        return self._core.steps
+
+    @property
+    def output_dir(self):
+        return Path(self._core.output_dir)
+
+    @property
+    def gravity(self):
+        """(3,) m/s^2; setting it acts from the next step (the rates re-evaluated)."""
+        return np.array(self._core.gravity)
+
+    @gravity.setter
+    def gravity(self, g):
+        self._core.gravity = [float(c) for c in g]
+
+    @property
+    def materials(self):
+        """The materials' names; particles' `material` indexes this list."""
+        return list(self._core.materials)
+
+    def log(self):
+        """The global log's quantities now, by log.csv's column names (docs/output.md)."""
+        return self._core.log()
+
+    def save(self, path):
+        """A checkpoint of the whole state; Simulation.resume(path, scene) continues it bitwise."""
+        self._core.save(str(path))
+
+    # --- particles added and removed between steps ---
+
+    def _material_indices(self, material, n):
+        names = self._core.materials
+        if material is None:
+            return None
+        m = np.asarray(material, dtype=object).reshape(-1)
+        out = np.empty(len(m), dtype=float)
+        for k, v in enumerate(m):
+            if isinstance(v, str):
+                if v not in names:
+                    raise mpdem_input_error("material", f"no material '{v}' (materials: {', '.join(names)})")
+                out[k] = names.index(v)
+            else:
+                out[k] = float(v)
+        return np.broadcast_to(out, (n,))
+
+    def add_particles(self, position, radius, velocity=None, angular_velocity=None, material=None, id=None,
+                      temperature=None, charge=None, fixed=None):
+        """Adds particles between steps and returns their ids (the next free ones unless `id`
+        gives them; a taken id is an InputError). position (N, 3) m, radius (N,) m, velocity and
+        angular_velocity (N, 3), material (a name or index, or N of them; default the first
+        material), temperature (K) and charge (C) default to the material's, fixed (N,) 0/1.
+        The others' contact history is kept; no overlap check is made."""
+        position = np.asarray(position, dtype=float).reshape(-1, 3)
+        n = len(position)
+        arrays = {"position": position, "radius": np.broadcast_to(np.asarray(radius, dtype=float), (n,))}
+        for name, a, shape in (("velocity", velocity, (n, 3)), ("angular_velocity", angular_velocity, (n, 3)),
+                               ("temperature", temperature, (n,)), ("charge", charge, (n,)), ("fixed", fixed, (n,))):
+            if a is not None:
+                arrays[name] = np.broadcast_to(np.asarray(a, dtype=float), shape)
+        if id is not None:
+            arrays["id"] = np.asarray(id, dtype=np.int64).reshape(n)
+        mats = self._material_indices(material, n)
+        if mats is not None:
+            arrays["material"] = mats
+        return self._core.add_particles({k: np.ascontiguousarray(v) for k, v in arrays.items()})
+
+    def remove_particles(self, ids):
+        """Removes the particles `ids` between steps (written to removed.csv; an unknown id is an
+        InputError); the others' contact history is kept."""
+        self._core.remove_particles(np.atleast_1d(np.asarray(ids, dtype=np.int64)))
+
+
+def mpdem_input_error(key, message):
+    err = _core.InputError(f"'{key}': {message}")
+    err.file, err.line, err.key = "", 0, key
+    return err

@@ -1,0 +1,160 @@
+#include "python/particle_arrays.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace mpdem::python {
+
+namespace {
+
+// The storage-order index of each particle in ascending id order.
+std::vector<std::size_t> id_order(const Particles& p) {
+  std::vector<std::size_t> order(p.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p.id[a] < p.id[b]; });
+  return order;
+}
+
+// f(array) with the engine's array of a Python name; false for an unknown name.
+template <class F>
+bool with_array(Particles& p, const std::string& name, F&& f) {
+  if (name == "position") f(p.x);
+  else if (name == "velocity") f(p.v);
+  else if (name == "angular_velocity") f(p.w);
+  else if (name == "force") f(p.force);
+  else if (name == "torque") f(p.torque);
+  else if (name == "orientation") f(p.q);
+  else if (name == "radius") f(p.radius);
+  else if (name == "mass") f(p.mass);
+  else if (name == "inertia") f(p.inertia);
+  else if (name == "temperature") f(p.T);
+  else if (name == "charge") f(p.charge);
+  else if (name == "heat") f(p.heat);
+  else if (name == "id") f(p.id);
+  else if (name == "material") f(p.material);
+  else if (name == "fixed") f(p.fixed);
+  else if (name == "image") f(p.image);
+  else return false;
+  return true;
+}
+
+[[noreturn]] void unknown(const std::string& name) {
+  std::string known;
+  for (const std::string& n : particle_array_names()) known += (known.empty() ? "" : ", ") + n;
+  throw py::value_error("no particle array '" + name + "' (known: " + known + ")");
+}
+
+// Element type and components of one array entry.
+template <class T>
+struct Layout {
+  using Scalar = T;
+  static constexpr py::ssize_t width = 1;
+};
+template <>
+struct Layout<Vec3> {
+  using Scalar = double;
+  static constexpr py::ssize_t width = 3;
+};
+template <>
+struct Layout<Quat> {
+  using Scalar = double;
+  static constexpr py::ssize_t width = 4;
+};
+template <>
+struct Layout<std::array<std::int32_t, 3>> {
+  using Scalar = std::int32_t;
+  static constexpr py::ssize_t width = 3;
+};
+
+template <class T>
+std::vector<py::ssize_t> shape_of(std::size_t n) {
+  if (Layout<T>::width == 1) return {static_cast<py::ssize_t>(n)};
+  return {static_cast<py::ssize_t>(n), Layout<T>::width};
+}
+
+}  // namespace
+
+std::vector<std::string> particle_array_names() {
+  return {"id",   "position", "velocity",    "angular_velocity", "orientation", "force",    "torque", "radius",
+          "mass", "inertia",  "temperature", "charge",           "heat",        "material", "fixed",  "image"};
+}
+
+std::vector<std::string> settable_array_names() { return {"position", "velocity", "angular_velocity", "temperature"}; }
+
+py::array id_ordered(const Particles& p, const std::string& name) {
+  const std::vector<std::size_t> order = id_order(p);
+  py::array out;
+  auto& mut = const_cast<Particles&>(p);  // with_array only reads here
+  if (!with_array(mut, name, [&](auto& a) {
+        using T = typename std::decay_t<decltype(a)>::value_type;
+        using S = typename Layout<T>::Scalar;
+        py::array_t<S> copy(shape_of<T>(order.size()));
+        auto* dst = reinterpret_cast<T*>(copy.mutable_data());
+        for (std::size_t k = 0; k < order.size(); ++k) dst[k] = a[order[k]];
+        out = copy;
+      }))
+    unknown(name);
+  return out;
+}
+
+py::array storage_view(Particles& p, const std::string& name, const py::object& owner) {
+  py::array out;
+  if (!with_array(p, name, [&](auto& a) {
+        using T = typename std::decay_t<decltype(a)>::value_type;
+        using S = typename Layout<T>::Scalar;
+        std::vector<py::ssize_t> strides{static_cast<py::ssize_t>(sizeof(T))};
+        if (Layout<T>::width > 1) strides.push_back(static_cast<py::ssize_t>(sizeof(S)));
+        out = py::array_t<S>(shape_of<T>(p.size()), strides, reinterpret_cast<const S*>(a.data()), owner);
+        py::detail::array_proxy(out.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+      }))
+    unknown(name);
+  return out;
+}
+
+std::vector<std::size_t> indices_of(const Particles& p, const py::array_t<std::int64_t>& ids) {
+  std::unordered_map<std::int64_t, std::size_t> index;
+  index.reserve(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) index.emplace(p.id[i], i);
+  const auto v = ids.unchecked<1>();
+  std::vector<std::size_t> out(static_cast<std::size_t>(v.shape(0)));
+  for (py::ssize_t k = 0; k < v.shape(0); ++k) {
+    const auto it = index.find(v(k));
+    if (it == index.end()) throw py::value_error("no particle with id " + std::to_string(v(k)));
+    out[static_cast<std::size_t>(k)] = it->second;
+  }
+  return out;
+}
+
+void set_array(Particles& p, const std::string& name,
+               const py::array_t<double, py::array::c_style | py::array::forcecast>& values, const py::object& ids) {
+  const auto settable = settable_array_names();
+  if (std::find(settable.begin(), settable.end(), name) == settable.end()) {
+    std::string known;
+    for (const std::string& n : settable) known += (known.empty() ? "" : ", ") + n;
+    throw py::value_error("particle array '" + name + "' cannot be set (settable: " + known + ")");
+  }
+  const std::vector<std::size_t> target = ids.is_none()
+                                              ? id_order(p)
+                                              : indices_of(
+                                                    p, py::array_t<std::int64_t, py::array::forcecast>::ensure(ids));
+  with_array(p, name, [&](auto& a) {
+    using T = typename std::decay_t<decltype(a)>::value_type;
+    if constexpr (std::is_same_v<T, Vec3> || std::is_same_v<T, double>) {
+      const py::ssize_t width = Layout<T>::width;
+      const bool ok = width == 1 ? values.ndim() == 1 && values.shape(0) == static_cast<py::ssize_t>(target.size())
+                                 : values.ndim() == 2 && values.shape(0) == static_cast<py::ssize_t>(target.size()) &&
+                                       values.shape(1) == width;
+      if (!ok)
+        throw py::value_error("'" + name + "' needs " + std::to_string(target.size()) +
+                              (width == 1 ? " values" : " rows of 3 values") + ", got an array of shape (" +
+                              std::to_string(values.shape(0)) +
+                              (values.ndim() > 1 ? ", " + std::to_string(values.shape(1)) : std::string()) + ")");
+      const auto* src = reinterpret_cast<const T*>(values.data());
+      for (std::size_t k = 0; k < target.size(); ++k) a[target[k]] = src[k];
+    }
+  });
+}
+
+}  // namespace mpdem::python

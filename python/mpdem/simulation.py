@@ -198,6 +198,25 @@ class Simulation:
         return Path(self._core.output_dir)
 
     @property
+    def record_contacts(self):
+        """True: every evaluation records each particle-particle contact's forces, so that
+        contacts() can list them (off by default: the pair kernel then writes nothing extra)."""
+        return self._core.record_contacts
+
+    @record_contacts.setter
+    def record_contacts(self, on):
+        self._core.record_contacts = bool(on)
+
+    def contacts(self):
+        """The contacts of the last evaluation (the forces that made the particles' `force`), as a
+        dict of numpy arrays, one row per contact: i (the particle the forces act on), j (the
+        other particle's id, -1 for a barrier contact), element (the barrier element's id, -1 for
+        a pair), point (M, 3) m, normal (M, 3) unit towards i, overlap (M,) m, normal_force and
+        tangential_force (M, 3) N on i (j takes minus them), sliding (M,) bool. Needs
+        record_contacts = True before the step (RuntimeError otherwise)."""
+        return self._core.contacts()
+
+    @property
     def gravity(self):
         """(3,) m/s^2; setting it acts from the next step (the rates re-evaluated)."""
         return np.array(self._core.gravity)

@@ -100,9 +100,9 @@ class BarrierContactStore {
   std::uint8_t& load_used(std::size_t k) { return load_used_[k]; }
   std::uint8_t load_used(std::size_t k) const { return load_used_[k]; }
 
- private:
   static constexpr std::uint32_t kGone = 0xffffffffu;  // particle index of a removed particle
 
+ private:
   std::vector<std::uint32_t> active_;          // [A] particle indices (ascending unless dirty_)
   std::vector<std::uint32_t> begin_{0};        // [A + 1] slot ranges
   std::vector<std::uint32_t> group_{0};        // [groups + 1] positions in active_

@@ -68,6 +68,9 @@ class BarrierContacts {
   // On several ranks the overflows are counted once, by rank 0 (after a restore of every record).
   void clear_overflows() { overflows_ = 0; }
   std::size_t memory_bytes() const { return store_.bytes(); }  // B, held by the contact records
+  // The contact records: after a committed evaluation, committed(k) and loads(k) hold its
+  // contacts, load_used(k) of them (sim/contact_list.cpp reads them).
+  const BarrierContactStore& store() const { return store_; }
 
  private:
   // {contacts, elastic energy J, normal damping power W, rolling friction power W, dropped

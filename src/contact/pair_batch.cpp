@@ -208,11 +208,21 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
   out = s;
 }
 
+// Recording (PairPass::record): each touching slot's contact, from the batch's results, in a loop
+// of its own so that apply's loop is the same with recording off.
+void record_batch(const PairPass& q, const Batch& b) {
+  for (std::size_t t = 0; t < b.count; ++t)
+    if (b.overlap[t] > 0.0)
+      q.record[b.slot[t]] = {Vec3{b.fx[t], b.fy[t], b.fz[t]}, b.normal(t), b.overlap[t], b.fnet[t],
+                             static_cast<std::uint32_t>(b.slip[t])};
+}
+
 template <bool kUniform, class Law, bool kStepStart>
 void run(const PairPass& q, Batch& b, PairBlockSums& out) {
   geometry_normal<kUniform, Law>(q, b);
   tangential_stage<kUniform, kStepStart>(q, b);
   apply<kUniform>(q, b, out);
+  if (q.record) record_batch(q, b);
   b.count = 0;
 }
 

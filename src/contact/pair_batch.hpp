@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "core/vec3.hpp"
+#include "contact/contact_record.hpp"
 #include "contact/contact_table.hpp"
 
 namespace mpdem {
@@ -73,9 +74,10 @@ struct PairPass {
   double phi = 1.0;            // -
   int iteration = 0;
   bool commit = false;
-  std::size_t n = 0;          // particles
-  std::size_t pairs = 0;      // list slots
-  bool vector_select = true;  // AVX-512 candidate selection, when built in (kVectorSelect)
+  std::size_t n = 0;                        // particles
+  std::size_t pairs = 0;                    // list slots
+  bool vector_select = true;                // AVX-512 candidate selection, when built in (kVectorSelect)
+  PairRecord* __restrict record = nullptr;  // [pairs] each touching slot's contact, or null (not recording)
 };
 
 // True when the build has the AVX-512 candidate selection (bitwise the same as the scalar one).

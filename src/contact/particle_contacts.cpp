@@ -43,6 +43,11 @@ void ParticleContacts::refresh_terms(const Particles& p, std::uint64_t generatio
   single_material_ = n > 0 && std::none_of(p.material.begin(), p.material.end(), other) ? p.material[0] : -1;
 }
 
+void ParticleContacts::record_contacts(bool on) {
+  recording_ = on;
+  records_.clear();
+}
+
 PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req) {
   if (!step_start_ && req.phi != 1.0)
     throw std::logic_error("particle contacts: phi < 1 needs the step-start history (trapezoidal integrator)");
@@ -53,6 +58,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   slipped_.resize(step_start_ ? list.num_pairs() : 0);
   cross_force_.resize(blocks.num_cross());
   cross_torque_.resize(blocks.num_cross());
+  if (recording_) records_.assign(list.num_pairs(), PairRecord{});  // slots apart stay at overlap 0
 
   // Per-particle terms: refreshed only when the particles may have been reordered or changed.
   if (terms_.size() != n || terms_generation_ != search.generation()) refresh_terms(p, search.generation());
@@ -89,7 +95,8 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
                    req.commit,
                    n,
                    list.num_pairs(),
-                   vector_select_};
+                   vector_select_,
+                   recording_ ? records_.data() : nullptr};
 
   // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
   const std::size_t nb = blocks.num_blocks();

@@ -78,6 +78,11 @@ class ParticleContacts {
   // ... and back onto the slots of the rebuilt list (spring sign follows the pair's orientation).
   void import_history(const Particles& p, const NeighborSearch& search, std::vector<PairHistory> h);
 
+  // Recording of each contact's force (PairRecord per slot) at every evaluation from now on
+  // (off: none kept); records() are the last evaluation's, for the list it was made on.
+  void record_contacts(bool on);
+  const std::vector<PairRecord>& records() const { return records_; }
+
   // The deepest contact of the last evaluation.
   OverlapReport max_overlap() const { return deepest_; }
 
@@ -116,6 +121,8 @@ class ParticleContacts {
   std::vector<double> block_cost_;         // [blocks + 1] s, their sum before each block (thread shares)
   OverlapReport deepest_;
   bool vector_select_ = true;
+  bool recording_ = false;
+  std::vector<PairRecord> records_;  // [pairs] while recording: the last evaluation's contacts
 };
 
 }  // namespace mpdem

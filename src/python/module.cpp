@@ -91,6 +91,8 @@ PYBIND11_MODULE(_core, m) {
              s.state_changed();
            })
       .def_property_readonly("materials", &PySimulation::material_names)
+      .def("contacts", &PySimulation::contacts)
+      .def_property("record_contacts", &PySimulation::recording_contacts, &PySimulation::record_contacts)
       .def_property_readonly("barrier_groups",
                              [](PySimulation& s) { return python::group_names(s.engine().barriers()); })
       .def("group_load",

@@ -11,6 +11,7 @@
 #include "model/particle_defaults.hpp"
 #include "parallel/communicator.hpp"
 #include "python/particle_arrays.hpp"
+#include "sim/contact_list.hpp"
 
 namespace mpdem::python {
 
@@ -232,6 +233,53 @@ void PySimulation::add_loads(const py::array_t<std::int64_t, py::array::forcecas
   }
   sim_->interactions().external_loads().set(id, f, t);
   sim_->state_changed();
+}
+
+void PySimulation::record_contacts(bool on) {
+  recording_ = on;
+  sim_->interactions().particle_contacts().record_contacts(on);
+}
+
+py::dict PySimulation::contacts() const {
+  Interactions& in = sim_->interactions();
+  if (!recording_)
+    throw std::runtime_error(
+        "contacts are not recorded: set sim.record_contacts = True before the steps whose contacts you want");
+  if (in.particle_contacts().records().size() != in.search().pairs().num_pairs())
+    throw std::runtime_error("no contacts recorded yet: take a step after sim.record_contacts = True");
+  const std::vector<ContactEntry> list = contact_list(sim_->particles(), sim_->barriers(), in);
+  const auto m = static_cast<py::ssize_t>(list.size());
+  py::array_t<std::int64_t> first(m), second(m), element(m);
+  py::array_t<double> point({m, py::ssize_t{3}}), normal({m, py::ssize_t{3}}), fn({m, py::ssize_t{3}}),
+      ft({m, py::ssize_t{3}}), overlap(m);
+  py::array_t<bool> sliding(m);
+  auto put = [](py::array_t<double>& a, py::ssize_t k, const Vec3& v) {
+    double* d = a.mutable_data(k, 0);
+    d[0] = v.x, d[1] = v.y, d[2] = v.z;
+  };
+  for (py::ssize_t k = 0; k < m; ++k) {
+    const ContactEntry& e = list[static_cast<std::size_t>(k)];
+    first.mutable_data()[k] = e.first;
+    second.mutable_data()[k] = e.second;
+    element.mutable_data()[k] = e.element;
+    put(point, k, e.point);
+    put(normal, k, e.normal);
+    put(fn, k, e.normal_force);
+    put(ft, k, e.tangential_force);
+    overlap.mutable_data()[k] = e.overlap;
+    sliding.mutable_data()[k] = e.sliding;
+  }
+  py::dict d;
+  d["i"] = first;
+  d["j"] = second;
+  d["element"] = element;
+  d["point"] = point;
+  d["normal"] = normal;
+  d["overlap"] = overlap;
+  d["normal_force"] = fn;
+  d["tangential_force"] = ft;
+  d["sliding"] = sliding;
+  return d;
 }
 
 py::list PySimulation::material_names() const {

@@ -56,6 +56,11 @@ class PySimulation {
                  const py::array_t<double, py::array::c_style | py::array::forcecast>& force,
                  const py::array_t<double, py::array::c_style | py::array::forcecast>& torque);
   void clear_loads() { sim_->interactions().external_loads().clear(); }
+  // The contact list of the last evaluation as numpy arrays (sim/contact_list.hpp); recording of
+  // the pair contacts is switched on by record_contacts(true) before the steps it is wanted for.
+  py::dict contacts() const;
+  void record_contacts(bool on);
+  bool recording_contacts() const { return recording_; }
 
   Simulation& engine() { return *sim_; }
   // After the caller changed the state: the rates at the new state (Simulation::state_changed).
@@ -72,6 +77,7 @@ class PySimulation {
                             // outputs flushed if it throws
   std::unique_ptr<Simulation> sim_;
   SimulationOptions options_;
+  bool recording_ = false;   // the pair contacts' forces are recorded at every evaluation
   bool finished_ = false;    // the scene's end was reached and its final outputs written
   double last_check_ = 0.0;  // s of wall time at the last signal check
 };

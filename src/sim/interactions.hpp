@@ -165,6 +165,7 @@ class Interactions {
   const NeighborSearch& search() const { return *search_; }
   const ParticleContacts& particle_contacts() const { return *pp_; }
   ParticleContacts& particle_contacts() { return *pp_; }
+  const BarrierContacts& barrier_contacts() const { return *pb_; }
   // The deepest particle-particle or particle-barrier contact of the last evaluation.
   OverlapReport max_overlap(const Particles& p, const Barriers& b) const;
   // Evaluations in which the convection fit's air speed clamp (20 m/s) engaged.

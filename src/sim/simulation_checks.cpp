@@ -29,8 +29,8 @@ void Simulation::check_energy(const StateScan& s) {
     // drive power x dt) is part of the scale, so a particle at rest that a wall sets moving is not
     // a jump.
     const InteractionStats& st = stats();
-    const double driven =
-        (std::abs(st.drive_power) + std::abs(st.fixed_power) + std::abs(st.external_power)) * dt_;  // J
+    const double driven = (std::abs(st.drive_power) + std::abs(st.fixed_power) + std::abs(st.external_power)) *
+                          dt_;  // J
     if (rise > prm.checks.energy_jump * (last_active_ + driven) + noise) {
       // Name the fastest particles: an exploding contact throws them apart.
       std::string ids;

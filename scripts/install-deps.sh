@@ -7,6 +7,7 @@ pkgs=(
   libtomlplusplus-dev   # scene files (TOML)
   libcli11-dev          # command line
   libfmt-dev            # formatting
+  libdeflate-dev        # compressed VTK output (zlib format)
   libgtest-dev libgmock-dev   # unit and physics tests
   libbenchmark-dev      # micro-benchmarks
   libopenmpi-dev openmpi-bin   # MPI domain decomposition (MPDEM_MPI, mpirun)

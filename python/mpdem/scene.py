@@ -213,6 +213,11 @@ class Scene:
         self._add("sink", keys)
         return self
 
+    def coarse_grain(self, **keys):
+        """One [[coarse_grain]]: grid or profile, kernel, width (m), every (s), average (s), samples."""
+        self._add("coarse_grain", keys)
+        return self
+
     def particles(self, position=None, radius=None, *, file=None, generate=None, material=None, fixed=None,
                   velocity=None, angular_velocity=None, id=None, temperature=None, charge=None, density=None,
                   **keys):

@@ -7,6 +7,7 @@
 
 #include "cli/bench_command.hpp"
 #include "cli/commands.hpp"
+#include "cli/plot_command.hpp"
 #include "cli/run_paths.hpp"
 #include "cli/tool_commands.hpp"
 #include "io/input_error.hpp"
@@ -58,6 +59,7 @@ int dispatch(int argc, char** argv) {
   mpdem::cli::add_generate_command(app, tool);
   mpdem::cli::add_mesh_command(app, tool);
   mpdem::cli::add_validate_command(app, tool);
+  mpdem::cli::add_plot_command(app, tool);
 
   try {
     app.parse(argc, argv);

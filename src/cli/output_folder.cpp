@@ -2,6 +2,7 @@
 
 #include <array>
 #include <string_view>
+#include <vector>
 
 #include "io/input_error.hpp"
 
@@ -11,9 +12,12 @@ namespace fs = std::filesystem;
 
 namespace {
 // Everything a run writes into its output folder (docs/output.md).
-constexpr std::array<std::string_view, 12> kOutputs{
-    "particles",          "particles.pvd", "barriers",       "barriers.pvd",    "particles_csv", "log.csv",
-    "barrier_groups.csv", "removed.csv",   "checkpoint.bin", "thermal_log.csv", "warnings.txt",  "balance.csv"};
+constexpr std::array<std::string_view, 15> kOutputs{
+    "particles",    "particles.pvd",      "barriers",    "barriers.pvd",   "particles_csv",
+    "log.csv",      "barrier_groups.csv", "removed.csv", "checkpoint.bin", "thermal_log.csv",
+    "warnings.txt", "balance.csv",        "contacts",    "contacts.pvd",   "contacts_csv"};
+// The coarse-grained fields' files: cg_<name>.csv, cg_<name>.pvd and the folder cg_<name>.
+bool coarse_grain_output(const fs::path& p) { return p.filename().string().rfind("cg_", 0) == 0; }
 }  // namespace
 
 void prepare_output_folder(const fs::path& dir, bool overwrite) {
@@ -25,6 +29,10 @@ void prepare_output_folder(const fs::path& dir, bool overwrite) {
                      "the output folder is not empty; pass --overwrite to replace the previous run's outputs, "
                      "--resume CHECKPOINT to continue it, or choose another folder with --output");
   for (std::string_view name : kOutputs) fs::remove_all(dir / name);
+  std::vector<fs::path> cg;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (coarse_grain_output(e.path())) cg.push_back(e.path());
+  for (const fs::path& p : cg) fs::remove_all(p);
 }
 
 }  // namespace mpdem::cli

@@ -81,6 +81,7 @@ class ParticleContacts {
   // Recording of each contact's force (PairRecord per slot) at every evaluation from now on
   // (off: none kept); records() are the last evaluation's, for the list it was made on.
   void record_contacts(bool on);
+  bool recording() const { return recording_; }
   const std::vector<PairRecord>& records() const { return records_; }
 
   // The deepest contact of the last evaluation.

@@ -23,6 +23,7 @@
 #include "io/input_error.hpp"
 #include "io/output_manager.hpp"
 #include "io/scene_fingerprint.hpp"
+#include "sim/analysis_outputs.hpp"
 #include "sim/inlets.hpp"
 #include "sim/simulation.hpp"
 #include "sim/sinks.hpp"
@@ -107,6 +108,7 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
   if (inlets_) w.section("inlets", [&](BinaryWriter& o) { inlets_->save(o); });
   if (sinks_) w.section("sinks", [&](BinaryWriter& o) { sinks_->save(o); });
   if (output_) w.section("output", [&](BinaryWriter& o) { output_->save(o); });
+  if (analysis_) w.section("analysis", [&](BinaryWriter& o) { analysis_->save(o); });
   write_file_atomically(
       file, [&](std::ostream& os) { os.write(w.bytes().data(), static_cast<std::streamsize>(w.bytes().size())); });
 }
@@ -174,6 +176,7 @@ void Simulation::resume_from(const std::filesystem::path& file) {
         throw std::runtime_error(fmt::format("the section 'output' holds {} bytes, not {}", resume_output_state_.size(),
                                              OutputManager::state_bytes()));
     }
+    if (r.has("analysis")) read("analysis", [&](BinaryReader& s) { resume_analysis_state_ = s.rest(); });
     r.finish();
   } catch (const InputError&) {
     throw;

@@ -20,9 +20,6 @@ namespace mpdem {
 
 namespace fs = std::filesystem;
 
-namespace {
-// Keeps the header and the rows whose `time` column is <= t: a resumed run continues a log from
-// its checkpoint without the rows the interrupted run wrote after it.
 void keep_rows_until(const fs::path& file, double t) {
   if (!fs::exists(file)) return;
   std::ifstream in(file);
@@ -45,7 +42,6 @@ void keep_rows_until(const fs::path& file, double t) {
   }
   write_file_atomically(file, [&](std::ostream& os) { os << kept; });
 }
-}  // namespace
 
 OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& barriers,
                              std::optional<double> resume_time, int pieces)
@@ -142,13 +138,13 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
       particles_pvd_->add(t, particle_pvtu_name(index));
     } else {
       const std::string name = fmt::format("particles/particles_{:06d}.vtu", index);
-      write_particles_vtu(dir_ / name, p, t);
+      write_particles_vtu(dir_ / name, p, t, vtu_options(model_));
       particles_pvd_->add(t, name);
     }
   }
   if (barriers_pvd_ && due(barriers_vtu_, t, dt, end, force)) {
     const std::string name = fmt::format("barriers/barriers_{:06d}.vtu", barriers_vtu_.count - 1);
-    write_barriers_vtu(dir_ / name, b, t);
+    write_barriers_vtu(dir_ / name, b, t, model_.params.output.format);
     barriers_pvd_->add(t, name);
   }
   if (particles_csv_.every > 0.0 && due(particles_csv_, t, dt, end, force)) {

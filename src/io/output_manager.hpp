@@ -24,6 +24,10 @@ namespace mpdem {
 class CsvLog;
 class PvdIndex;
 
+// Keeps the header and the rows whose `time` column is <= t: a resumed run continues a log from
+// its checkpoint without the rows the interrupted run wrote after it.
+void keep_rows_until(const std::filesystem::path& file, double t);
+
 // The particle snapshots due now (OutputManager::particles_due).
 struct ParticleSnapshotsDue {
   bool vtu = false;             // a particle VTU snapshot (on several ranks: its pieces and .pvtu)

@@ -26,11 +26,12 @@ std::string particle_pvtu_name(std::uint64_t index) { return stem(index) + ".pvt
 
 std::string particle_piece_name(std::uint64_t index, int rank) { return fmt::format("{}_p{}.vtu", stem(index), rank); }
 
-void write_particles_piece(const std::filesystem::path& file, const Particles& p, double time) {
+void write_particles_piece(const std::filesystem::path& file, const Particles& p, double time,
+                           const VtuOptions& options) {
   Particles sorted = p;
   sorted.drop_ghosts();
   sorted.sort_by_id();
-  write_particles_vtu(file, sorted, time);
+  write_particles_vtu(file, sorted, time, options);
 }
 
 void write_particles_pvtu(const std::filesystem::path& dir, std::uint64_t index, int pieces) {

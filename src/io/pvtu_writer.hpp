@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "io/vtu_writer.hpp"
 #include "state/particles.hpp"
 
 namespace mpdem {
@@ -18,8 +19,9 @@ std::string particle_pvtu_name(std::uint64_t index);             // particles/pa
 std::string particle_piece_name(std::uint64_t index, int rank);  // particles/particles_NNNNNN_pK.vtu
 
 // One rank's piece: the owned particles of p sorted by id, written by write_particles_vtu (same
-// arrays, same ASCII layout); time (s) in its TimeValue field.
-void write_particles_piece(const std::filesystem::path& file, const Particles& p, double time);
+// arrays, same format); time (s) in its TimeValue field.
+void write_particles_piece(const std::filesystem::path& file, const Particles& p, double time,
+                           const VtuOptions& options);
 
 // The index of snapshot `index` of output folder `dir`: dir / particle_pvtu_name(index), listing
 // the pieces of ranks 0 .. pieces - 1 (in rank order, relative to the .pvtu's folder) and

@@ -11,6 +11,7 @@
 #include "io/barrier_csv.hpp"
 #include "io/contact_reader.hpp"
 #include "io/generate_spec_reader.hpp"
+#include "io/coarse_grain_reader.hpp"
 #include "io/inlet_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/input_file.hpp"
@@ -316,10 +317,17 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     s->get("energy_jump", p.checks.energy_jump, kNonNegative);
     s->get("energy_drift", p.checks.energy_drift, kNonNegative);  // checked once, at the end of the run
   }
-  if (const auto s = root.table("output", {"dir", "particles_every", "barriers_every", "particle_csv_every",
-                                           "barrier_log_every", "log_every", "checkpoint_every", "progress_every"})) {
+  if (const auto s = root.table("output",
+                                {"dir", "particles_every", "barriers_every", "particle_csv_every", "barrier_log_every",
+                                 "log_every", "checkpoint_every", "progress_every", "format", "contacts_every"})) {
     s->get("dir", p.output.dir);
     if (p.output.dir.empty()) s->fail("dir", "expected a non-empty folder name");
+    if (const auto name = s->string("format")) {
+      if (*name == "ascii") p.output.format = VtkFormat::Ascii;
+      else if (*name == "binary") p.output.format = VtkFormat::Binary;
+      else if (*name == "compressed") p.output.format = VtkFormat::Compressed;
+      else s->fail("format", "expected \"ascii\", \"binary\" or \"compressed\", got \"" + *name + "\"");
+    }
     s->get("particles_every", p.output.particles_every, kNonNegative);
     s->get("barriers_every", p.output.barriers_every, kNonNegative);
     s->get("particle_csv_every", p.output.particle_csv_every, kNonNegative);
@@ -327,6 +335,7 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     s->get("log_every", p.output.log_every, 1);
     s->get("checkpoint_every", p.output.checkpoint_every, 0);
     s->get("progress_every", p.output.progress_every, kNonNegative);
+    s->get("contacts_every", p.output.contacts_every, kNonNegative);
   }
 }
 
@@ -359,7 +368,7 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& fil
   const TomlSection root(name, doc, "",
                          {"time", "tolerance", "analysis", "gravity", "fields", "near_field", "contact", "thermal",
                           "material", "particles", "barriers", "domain", "neighbor", "output", "checks", "inlet",
-                          "sink", "parallel"});
+                          "sink", "parallel", "coarse_grain"});
   Params& p = scene.model.params;
   read_time(root, p.time);
   read_tolerance(root, p.tolerance);
@@ -370,6 +379,7 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& fil
   read_sources(root, doc, scene);
   read_inlets_and_sinks(root, doc, scene.model);
   read_domain_neighbor_output(root, p);
+  read_coarse_grain(root, scene.model);
   return scene;
 }
 

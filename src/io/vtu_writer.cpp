@@ -1,12 +1,12 @@
 #include "io/vtu_writer.hpp"
 
+#include <fmt/core.h>
+
 #include <array>
-#include <charconv>
 #include <cstdint>
 #include <ostream>
 #include <span>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "io/atomic_file.hpp"
@@ -15,141 +15,44 @@ namespace mpdem {
 
 namespace {
 
-// Buffers formatted text and hands it to the stream in large chunks; formatting with
-// std::to_chars is locale independent and, at 17 digits, exact for doubles.
-class TextSink {
- public:
-  explicit TextSink(std::ostream& os) : os_(os) { buf_.reserve(kChunk + 64); }
-  ~TextSink() { drain(); }
-  TextSink(const TextSink&) = delete;
-  TextSink& operator=(const TextSink&) = delete;
-
-  void text(std::string_view s) {
-    if (s.empty()) return;
-    buf_ += s;
-    last_ = s.back();
-    if (buf_.size() >= kChunk) drain();
+void header(VtkXmlDocument& d, double time, std::size_t points, std::size_t cells, const char* names_prefix,
+            std::span<const std::string> names) {
+  d.text("  <UnstructuredGrid>\n"
+         "    <FieldData>\n");
+  d.field("TimeValue", time);
+  // The names beside the indices: one single-tuple Int32 per name, its value the index.
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    d.field((std::string(names_prefix) + names[k]).c_str(), static_cast<std::int32_t>(k));
   }
-  // A number followed by a space: the separator of values inside a DataArray.
-  void value(double v) {
-    number(v);
-    text(" ");
-  }
-  void value(std::int64_t v) {
-    number(v);
-    text(" ");
-  }
-  // A bare number, for attributes.
-  void number(double v) {
-    char tmp[32];
-    const auto r = std::to_chars(tmp, tmp + sizeof tmp, v, std::chars_format::general, 17);
-    put(tmp, r.ptr);
-  }
-  void number(std::int64_t v) {
-    char tmp[24];
-    const auto r = std::to_chars(tmp, tmp + sizeof tmp, v);
-    put(tmp, r.ptr);
-  }
-  bool at_line_start() const { return last_ == '\n'; }
-  void drain() {
-    os_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
-    buf_.clear();
-  }
-
- private:
-  static constexpr std::size_t kChunk = 1 << 16;
-  void put(const char* b, const char* e) {
-    buf_.append(b, e);
-    last_ = e[-1];
-    if (buf_.size() >= kChunk) drain();
-  }
-  std::ostream& os_;
-  std::string buf_;
-  char last_ = '\0';  // last character written, survives drain()
-};
-
-// Opening tag of a DataArray; `components` = 0 omits NumberOfComponents (scalar).
-void open_array(TextSink& s, const VtuArray& a) {
-  s.text("        <DataArray type=\"");
-  s.text(a.type);
-  s.text("\" Name=\"");
-  s.text(a.name);
-  s.text("\"");
-  if (a.components > 0) {
-    s.text(" NumberOfComponents=\"");
-    s.number(std::int64_t{a.components});
-    s.text("\"");
-  }
-  s.text(" format=\"ascii\">\n");
-}
-void close_array(TextSink& s) {
-  if (!s.at_line_start()) s.text("\n");
-  s.text("        </DataArray>\n");
+  d.text(fmt::format("    </FieldData>\n"
+                     "    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
+                     points, cells));
 }
 
-void scalar_array(TextSink& s, const VtuArray& a, std::span<const double> v) {
-  open_array(s, a);
-  for (double x : v) s.value(x);
-  close_array(s);
-}
-void int_array(TextSink& s, const VtuArray& a, std::span<const int> v) {
-  open_array(s, a);
-  for (int x : v) s.value(std::int64_t{x});
-  close_array(s);
-}
-void id_array(TextSink& s, const VtuArray& a, std::span<const std::int64_t> v) {
-  open_array(s, a);
-  for (std::int64_t x : v) s.value(x);
-  close_array(s);
-}
-void vector_array(TextSink& s, const VtuArray& a, std::span<const Vec3> v) {
-  open_array(s, a);
-  for (const Vec3& x : v) {
-    s.value(x.x);
-    s.value(x.y);
-    s.value(x.z);
-    s.text("\n");  // one tuple per line keeps the file readable
-  }
-  close_array(s);
+// Cells that each use `per_cell` consecutive points of their own, all of one VTK type; Int32
+// indices (half the bytes to write and compress) while they fit.
+void cells(VtkXmlDocument& d, std::size_t count, int per_cell, int vtk_type) {
+  d.text("      <Cells>\n");
+  const std::size_t n = count * static_cast<std::size_t>(per_cell);
+  const auto fill = [&](auto zero) {
+    using Index = decltype(zero);
+    std::vector<Index> connectivity(n), offsets(count);
+    for (std::size_t k = 0; k < n; ++k) connectivity[k] = static_cast<Index>(k);
+    for (std::size_t c = 0; c < count; ++c)
+      offsets[c] = static_cast<Index>((c + 1) * static_cast<std::size_t>(per_cell));
+    const char* type = sizeof(Index) == 4 ? "Int32" : "Int64";
+    d.owned_array({"connectivity", type, 0}, connectivity);
+    d.owned_array({"offsets", type, 0}, offsets);
+  };
+  if (n < (std::size_t{1} << 31)) fill(std::int32_t{0});
+  else fill(std::int64_t{0});
+  d.owned_array({"types", "UInt8", 0}, std::vector<std::uint8_t>(count, static_cast<std::uint8_t>(vtk_type)));
+  d.text("      </Cells>\n");
 }
 
-void header(TextSink& s, double time, std::size_t points, std::size_t cells) {
-  s.text("<?xml version=\"1.0\"?>\n"
-         "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\">\n"
-         "  <UnstructuredGrid>\n"
-         "    <FieldData>\n"
-         "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\">");
-  s.number(time);
-  s.text("</DataArray>\n"
-         "    </FieldData>\n"
-         "    <Piece NumberOfPoints=\"");
-  s.number(static_cast<std::int64_t>(points));
-  s.text("\" NumberOfCells=\"");
-  s.number(static_cast<std::int64_t>(cells));
-  s.text("\">\n");
-}
-
-// Cells that each use `per_cell` consecutive points of their own, all of one VTK type.
-void cells(TextSink& s, std::size_t count, int per_cell, int vtk_type) {
-  s.text("      <Cells>\n");
-  open_array(s, {"connectivity", "Int64", 0});
-  const auto n = static_cast<std::int64_t>(count) * per_cell;
-  for (std::int64_t k = 0; k < n; ++k) s.value(k);
-  close_array(s);
-  open_array(s, {"offsets", "Int64", 0});
-  for (std::int64_t c = 1; c <= static_cast<std::int64_t>(count); ++c) s.value(c * per_cell);
-  close_array(s);
-  open_array(s, {"types", "UInt8", 0});
-  for (std::size_t c = 0; c < count; ++c) s.value(std::int64_t{vtk_type});
-  close_array(s);
-  s.text("      </Cells>\n");
-}
-
-void footer(TextSink& s) {
-  s.text("    </Piece>\n"
-         "  </UnstructuredGrid>\n"
-         "</VTKFile>\n");
+void footer(VtkXmlDocument& d) {
+  d.text("    </Piece>\n"
+         "  </UnstructuredGrid>\n");
 }
 
 constexpr int kVtkVertex = 1;
@@ -186,95 +89,76 @@ constexpr std::array<VtuArray, kParticleArrayCount> kParticleArrays{{
 
 std::span<const VtuArray> particle_point_arrays() { return kParticleArrays; }
 
-void write_particles_vtu(const std::filesystem::path& file, const Particles& p, double time) {
-  write_file_atomically(file, [&](std::ostream& os) {
-    TextSink s(os);
-    const std::size_t n = p.size();  // the owned particles: ghosts (periodic images) are not written
-    const auto owned = [n](const auto& a) { return std::span(a.data(), n); };
-    const auto& a = kParticleArrays;  // names, types, units
-    header(s, time, n, n);
-    s.text("      <PointData Scalars=\"");
-    s.text(kParticleActiveScalars);
-    s.text("\" Vectors=\"");
-    s.text(kParticleActiveVectors);
-    s.text("\">\n");
-    id_array(s, a[kId], owned(p.id));
-    scalar_array(s, a[kRadius], owned(p.radius));
-    int_array(s, a[kMaterial], owned(p.material));
-    int_array(s, a[kFixed], std::vector<int>(p.fixed.begin(), p.fixed.begin() + static_cast<std::ptrdiff_t>(n)));
-    vector_array(s, a[kVelocity], owned(p.v));
-    vector_array(s, a[kAngularVelocity], owned(p.w));
-    vector_array(s, a[kForce], owned(p.force));
-    scalar_array(s, a[kTemperature], owned(p.T));
-    scalar_array(s, a[kCharge], owned(p.charge));
-    open_array(s, a[kOrientation]);
-    for (const Quat& q : owned(p.q)) {
-      s.value(q.w);
-      s.value(q.x);
-      s.value(q.y);
-      s.value(q.z);
-      s.text("\n");
-    }
-    close_array(s);
-    s.text("      </PointData>\n"
-           "      <Points>\n");
-    open_array(s, kVtuPoints);  // m, centres
-    for (const Vec3& x : owned(p.x)) {
-      s.value(x.x);
-      s.value(x.y);
-      s.value(x.z);
-      s.text("\n");
-    }
-    close_array(s);
-    s.text("      </Points>\n");
-    cells(s, n, 1, kVtkVertex);
-    footer(s);
-  });
+VtuOptions vtu_options(const Model& model) {
+  VtuOptions o{model.params.output.format, {}};
+  for (const Material& m : model.materials) o.material_names.push_back(m.name);
+  return o;
 }
 
-void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, double time) {
-  write_file_atomically(file, [&](std::ostream& os) {
-    TextSink s(os);
-    const std::size_t m = b.size();
-    header(s, time, 3 * m, m);
-    s.text("      <CellData Scalars=\"pressure\" Vectors=\"force\">\n");
-    id_array(s, {"id", "Int64", 0}, b.id);                    // -
-    int_array(s, {"group", "Int32", 0}, b.group);             // index into group_names
-    vector_array(s, {"force", "Float64", 3}, b.force);        // N
-    vector_array(s, {"moment", "Float64", 3}, b.moment);      // N m, about the element centre
-    scalar_array(s, {"pressure", "Float64", 0}, b.pressure);  // Pa
-    // Elements with an activity window are all written (at their law's place); 0 marks the
-    // switched-off ones, whose loads are zero.
-    if (b.timed()) int_array(s, {"active", "UInt8", 0}, std::vector<int>(b.active.begin(), b.active.end()));
-    // A rotating element's normal turns and its velocity varies over it: the one at its centre.
-    if (b.rotating()) {
-      std::vector<Vec3> normal(m), velocity(m);  // [M] -, m/s
-      for (std::size_t e = 0; e < m; ++e) {
-        normal[e] = b.current_normal(e);
-        velocity[e] = b.surface_velocity(e, b.centre(e));
-      }
-      vector_array(s, {"normal", "Float64", 3}, normal);
-      vector_array(s, {"velocity", "Float64", 3}, velocity);
-    } else {
-      vector_array(s, {"normal", "Float64", 3}, b.normal);      // -, unit
-      vector_array(s, {"velocity", "Float64", 3}, b.velocity);  // m/s
+void write_particles_vtu(const std::filesystem::path& file, const Particles& p, double time,
+                         const VtuOptions& options) {
+  const std::size_t n = p.size();  // the owned particles: ghosts (periodic images) are not written
+  const auto owned = [n](const auto& a) { return std::span(a.data(), n); };
+  const auto& a = kParticleArrays;  // names, types, units
+  VtkXmlDocument d(options.format, "UnstructuredGrid");
+  header(d, time, n, n, "material:", options.material_names);
+  d.text(
+      fmt::format("      <PointData Scalars=\"{}\" Vectors=\"{}\">\n", kParticleActiveScalars, kParticleActiveVectors));
+  d.array(a[kId], owned(p.id));
+  d.array(a[kRadius], owned(p.radius));
+  d.array(a[kMaterial], owned(p.material));
+  d.array(a[kFixed], owned(p.fixed));
+  d.array(a[kVelocity], owned(p.v));
+  d.array(a[kAngularVelocity], owned(p.w));
+  d.array(a[kForce], owned(p.force));
+  d.array(a[kTemperature], owned(p.T));
+  d.array(a[kCharge], owned(p.charge));
+  d.array(a[kOrientation], owned(p.q));
+  d.text("      </PointData>\n"
+         "      <Points>\n");
+  d.array(kVtuPoints, owned(p.x));  // m, centres
+  d.text("      </Points>\n");
+  cells(d, n, 1, kVtkVertex);
+  footer(d);
+  write_file_atomically(file, [&](std::ostream& os) { d.write(os); });
+}
+
+void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, double time, VtkFormat format) {
+  const std::size_t m = b.size();
+  VtkXmlDocument d(format, "UnstructuredGrid");
+  header(d, time, 3 * m, m, "group:", b.group_names);
+  d.text("      <CellData Scalars=\"pressure\" Vectors=\"force\">\n");
+  d.array({"id", "Int64", 0}, std::span<const std::int64_t>(b.id));          // -
+  d.array({"group", "Int32", 0}, std::span<const std::int32_t>(b.group));    // index into group_names
+  d.array({"force", "Float64", 3}, std::span<const Vec3>(b.force));          // N
+  d.array({"moment", "Float64", 3}, std::span<const Vec3>(b.moment));        // N m, about the element centre
+  d.array({"pressure", "Float64", 0}, std::span<const double>(b.pressure));  // Pa
+  // Elements with an activity window are all written (at their law's place); 0 marks the
+  // switched-off ones, whose loads are zero.
+  if (b.timed()) d.array({"active", "UInt8", 0}, std::span<const std::uint8_t>(b.active));
+  // A rotating element's normal turns and its velocity varies over it: the one at its centre.
+  if (b.rotating()) {
+    std::vector<Vec3> normal(m), velocity(m);  // [M] -, m/s
+    for (std::size_t e = 0; e < m; ++e) {
+      normal[e] = b.current_normal(e);
+      velocity[e] = b.surface_velocity(e, b.centre(e));
     }
-    s.text("      </CellData>\n"
-           "      <Points>\n");
-    open_array(s, kVtuPoints);  // m, current vertex positions
-    for (std::size_t e = 0; e < m; ++e)
-      for (int k = 0; k < 3; ++k) {
-        const Vec3 v = b.vertex(e, k);
-        s.value(v.x);
-        s.value(v.y);
-        s.value(v.z);
-        s.text("\n");
-      }
-    close_array(s);
-    s.text("      </Points>\n");
-    cells(s, m, 3, kVtkTriangle);
-    footer(s);
-  });
+    d.owned_array({"normal", "Float64", 3}, normal);
+    d.owned_array({"velocity", "Float64", 3}, velocity);
+  } else {
+    d.array({"normal", "Float64", 3}, std::span<const Vec3>(b.normal));      // -, unit
+    d.array({"velocity", "Float64", 3}, std::span<const Vec3>(b.velocity));  // m/s
+  }
+  d.text("      </CellData>\n"
+         "      <Points>\n");
+  std::vector<Vec3> vertices(3 * m);  // m, current vertex positions
+  for (std::size_t e = 0; e < m; ++e)
+    for (int k = 0; k < 3; ++k) vertices[3 * e + static_cast<std::size_t>(k)] = b.vertex(e, k);
+  d.owned_array(kVtuPoints, vertices);
+  d.text("      </Points>\n");
+  cells(d, m, 3, kVtkTriangle);
+  footer(d);
+  write_file_atomically(file, [&](std::ostream& os) { d.write(os); });
 }
 
 }  // namespace mpdem

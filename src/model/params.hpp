@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/coarse_grain.hpp"
 #include "core/vec3.hpp"
 #include "model/open_boundaries.hpp"
 
@@ -148,15 +149,21 @@ struct NeighborParams {
   double skin = 0.0;  // m, Verlet skin (0 = 0.1 x smallest diameter)
 };
 
+// Encoding of the VTK XML files (io/vtk_xml.hpp): values inline as text, raw appended binary,
+// or zlib-compressed appended binary.
+enum class VtkFormat { Ascii, Binary, Compressed };
+
 struct OutputParams {
-  std::string dir = "output";       // relative to the scene file's folder
-  double particles_every = 0.0;     // s of simulated time between particle VTU (0 = off)
-  double barriers_every = 0.0;      // s between barrier VTU (0 = off)
-  double particle_csv_every = 0.0;  // s between particle CSV snapshots (0 = off)
-  double barrier_log_every = 0.0;   // s between barrier-group log rows (0 = off)
-  int log_every = 100;              // steps between global log rows (>= 1)
-  int checkpoint_every = 0;         // steps between checkpoints (0 = off)
-  double progress_every = 10.0;     // s of wall time between plain progress lines
+  std::string dir = "output";            // relative to the scene file's folder
+  VtkFormat format = VtkFormat::Binary;  // VTU/VTP/VTI encoding ("format"; binary: the fastest to write)
+  double contacts_every = 0.0;           // s between contact snapshots (VTP + CSV; 0 = off)
+  double particles_every = 0.0;          // s of simulated time between particle VTU (0 = off)
+  double barriers_every = 0.0;           // s between barrier VTU (0 = off)
+  double particle_csv_every = 0.0;       // s between particle CSV snapshots (0 = off)
+  double barrier_log_every = 0.0;        // s between barrier-group log rows (0 = off)
+  int log_every = 100;                   // steps between global log rows (>= 1)
+  int checkpoint_every = 0;              // steps between checkpoints (0 = off)
+  double progress_every = 10.0;          // s of wall time between plain progress lines
 };
 
 // How the ranks of a decomposed run share the work (docs/parallel.md, "Load balance"); a
@@ -180,6 +187,20 @@ struct CheckParams {
                                //    to the start balance before the end-of-run warning (0 = off)
 };
 
+// One [[coarse_grain]] entry (docs/output.md "Coarse-grained fields"): fields on a grid (.vti
+// series) or a profile along one axis (CSV), from the particles and the contact list.
+struct CoarseGrainSpec {
+  std::string name;      // files cg_<name>...; "1", "2", ... unless given
+  CgGrid grid;           // points; a profile averages the two other axes over grid.min..max
+  bool profile = false;  // true: a profile along `axis` (CSV), else a grid (.vti)
+  int axis = 2;          // 0, 1, 2: the profile's axis
+  CgKernel kernel = CgKernel::gaussian;
+  double width = 0.0;    // m, kernel width w
+  double every = 0.0;    // s between outputs
+  double average = 0.0;  // s, averaging window ending at each output (0: the instantaneous fields)
+  int samples = 20;      // -, snapshots averaged in a window (when average > 0)
+};
+
 struct Params {
   TimeParams time;
   ToleranceParams tolerance;
@@ -193,8 +214,9 @@ struct Params {
   OutputParams output;
   CheckParams checks;
   ParallelParams parallel;
-  std::vector<InletSpec> inlets;  // [[inlet]] entries, in scene order
-  std::vector<SinkSpec> sinks;    // [[sink]] entries, in scene order
+  std::vector<InletSpec> inlets;              // [[inlet]] entries, in scene order
+  std::vector<SinkSpec> sinks;                // [[sink]] entries, in scene order
+  std::vector<CoarseGrainSpec> coarse_grain;  // [[coarse_grain]] entries, in scene order
 };
 
 }  // namespace mpdem

@@ -26,6 +26,9 @@ std::vector<ContactEntry> contact_list(const Particles& p, const Barriers& b, co
       e.normal_force = r.normal * r.normal_force;
       e.tangential_force = r.force - e.normal_force;
       e.sliding = r.sliding != 0;
+      e.first_index = i;
+      e.centre = p.x[i];
+      e.branch = p.x[i] - p.x[j];
       out.push_back(e);
     }
   }
@@ -46,6 +49,9 @@ std::vector<ContactEntry> contact_list(const Particles& p, const Barriers& b, co
       e.normal_force = e.normal * dot(f, e.normal);
       e.tangential_force = f - e.normal_force;
       e.sliding = slot[c].slipped != 0;
+      e.first_index = i;
+      e.centre = p.x[i];
+      e.branch = p.x[i] - e.point;
       out.push_back(e);
     }
   }

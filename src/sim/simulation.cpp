@@ -16,6 +16,8 @@
 #include "contact/particle_contacts.hpp"
 #include "io/progress.hpp"
 #include "parallel/gather.hpp"
+#include "io/input_error.hpp"
+#include "sim/analysis_outputs.hpp"
 #include "sim/inlets.hpp"
 #include "sim/run_error.hpp"
 #include "sim/sinks.hpp"
@@ -338,6 +340,18 @@ void Simulation::start() {
       output_->restore(r);
     }
   }
+  if (out && root() && AnalysisOutputs::wanted(prm)) {
+    if (comm_)
+      throw InputError(scene_.file.string(), 0, prm.coarse_grain.empty() ? "output.contacts_every" : "coarse_grain",
+                       "contact snapshots and coarse-grained fields are written by one-rank runs only so far "
+                       "(run without mpirun, or drop the key)");
+    analysis_ = std::make_unique<AnalysisOutputs>(scene_.model, output_dir_for(scene_, options_),
+                                                  resumed_ ? std::optional<double>(time_) : std::nullopt);
+    if (!resume_analysis_state_.empty()) {
+      BinaryReader r(resume_analysis_state_.data(), resume_analysis_state_.size());
+      analysis_->restore(r);
+    }
+  }
   initialize();
   if (out && !resumed_) {
     snapshots(prm.time.dt, true);
@@ -355,13 +369,27 @@ void Simulation::step(double end) {
   const Params& prm = scene_.model.params;
   const bool out = options_.write_output;
   const double t0 = time_;
-  if (prm.time.adaptive && prm.time.integrator == Integrator::Trapezoidal) last_ = advance_adaptive(end - time_);
+  const bool adaptive = prm.time.adaptive && prm.time.integrator == Integrator::Trapezoidal;
+  if (analysis_) {  // the contact list of a step that an analysis output samples
+    const double h = std::min(adaptive ? dt_ : prm.time.dt, end - time_);
+    ParticleContacts& pc = interactions_->particle_contacts();
+    if (!pc.recording() && analysis_->needs_contacts(time_ + h, h, prm.time.duration)) {
+      pc.record_contacts(true);
+      analysis_recording_ = true;
+    }
+  }
+  if (adaptive) last_ = advance_adaptive(end - time_);
   else last_ = advance(std::min(prm.time.dt, end - time_));  // the last step ends exactly at `end`
   const double h = time_ - t0;
   if (out) {
     snapshots(h, false);
     if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) == 0)
       log_row({steps_, time_, h, &last_, evaluations_, redone_, removed_, {}});
+  }
+  if (analysis_) {
+    analysis_->after_step(time_, h, prm.time.duration, scene_.particles, scene_.barriers, *interactions_);
+    if (analysis_recording_) interactions_->particle_contacts().record_contacts(false);
+    analysis_recording_ = false;
   }
   if (output_ && interactions_->balance_measurements() != balance_rows_) {
     balance_rows_ = interactions_->balance_measurements();
@@ -375,7 +403,7 @@ void Simulation::step(double end) {
   const std::filesystem::path dir = output_dir_for(scene_, options_);
   if (out && every > 0 && steps_ % every == 0) {  // (collective on several ranks)
     write_checkpoint(dir / "checkpoint.bin");
-    if (output_) output_->flush();
+    flush_outputs();
   }
   if (!options_.stop_on_signal) return;
   if (const int sig = comm_ ? stop_across_ranks() : stop_signal()) {
@@ -383,7 +411,7 @@ void Simulation::step(double end) {
     if (out) {
       ck = dir / "checkpoint.bin";
       write_checkpoint(ck);
-      if (output_) output_->flush();
+      flush_outputs();
     }
     throw Interrupted(sig, time_, steps_, ck);
   }
@@ -391,6 +419,7 @@ void Simulation::step(double end) {
 
 void Simulation::flush_outputs() {
   if (output_) output_->flush();
+  if (analysis_) analysis_->flush();
 }
 
 RunSummary Simulation::finish() {
@@ -401,6 +430,7 @@ RunSummary Simulation::finish() {
     if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) != 0)
       log_row({steps_, time_, dt_, &last_, evaluations_, redone_, removed_, {}});
     if (output_) output_->flush();
+    if (analysis_) analysis_->flush();
   }
   if (inlets_ || sinks_) progress_->summary(open_system_summary());  // the final totals
   progress_->finish(time_, steps_);

@@ -23,6 +23,7 @@
 namespace mpdem {
 
 class OutputManager;
+class AnalysisOutputs;
 struct ParticleSnapshotsDue;
 class Progress;
 class Inlets;
@@ -170,10 +171,12 @@ class Simulation {
   TrapezoidalIntegrator trapezoidal_;
   VerletIntegrator verlet_;
   std::unique_ptr<OutputManager> output_;
-  std::unique_ptr<Progress> progress_;  // set while run() runs
-  std::unique_ptr<Inlets> inlets_;      // null without [[inlet]]
-  std::unique_ptr<Sinks> sinks_;        // null without [[sink]]
-  double time_ = 0.0;                   // s
+  std::unique_ptr<AnalysisOutputs> analysis_;  // contact snapshots, [[coarse_grain]] (null without)
+  bool analysis_recording_ = false;            // analysis_ turned contact recording on for this step
+  std::unique_ptr<Progress> progress_;         // set while run() runs
+  std::unique_ptr<Inlets> inlets_;             // null without [[inlet]]
+  std::unique_ptr<Sinks> sinks_;               // null without [[sink]]
+  double time_ = 0.0;                          // s
   std::uint64_t steps_ = 0;
   std::uint64_t evaluations_ = 0;
   std::uint64_t redone_ = 0;     // adaptive steps redone with a smaller dt
@@ -185,11 +188,12 @@ class Simulation {
   std::uint64_t balance_rows_ = 0;  // load-balance measurements written to balance.csv
   RunRecord record_;                // for the end-of-run summary
   bool initialized_ = false;
-  bool started_ = false;                   // start() ran: outputs open, first snapshots written
-  StepReport last_;                        // the report of the last step()
-  std::uint64_t first_step_ = 0;           // steps_ when start() ran
-  bool resumed_ = false;                   // state loaded from a checkpoint
-  std::vector<char> resume_output_state_;  // OutputManager series from the checkpoint
+  bool started_ = false;                     // start() ran: outputs open, first snapshots written
+  StepReport last_;                          // the report of the last step()
+  std::uint64_t first_step_ = 0;             // steps_ when start() ran
+  bool resumed_ = false;                     // state loaded from a checkpoint
+  std::vector<char> resume_output_state_;    // OutputManager series from the checkpoint
+  std::vector<char> resume_analysis_state_;  // AnalysisOutputs series from the checkpoint (empty: none)
 };
 
 }  // namespace mpdem

@@ -125,7 +125,8 @@ void Simulation::write_piece(std::uint64_t index) {
   // Rank 0 created the particles/ folder (OutputManager) before it broadcast this snapshot's
   // decision (particles_due), which every rank has received.
   const std::filesystem::path dir = output_dir_for(scene_, options_);
-  write_particles_piece(dir / particle_piece_name(index, comm_->rank()), scene_.particles, time_);
+  write_particles_piece(dir / particle_piece_name(index, comm_->rank()), scene_.particles, time_,
+                        vtu_options(scene_.model));
   comm_->barrier();  // every piece complete before rank 0 lists them in the .pvtu
 }
 

@@ -111,7 +111,7 @@ TEST(FixedParticleInput, SnapshotsCarryTheFlag) {
   const auto second = csv.find('\n', first + 1);
   EXPECT_EQ(csv.substr(second - 2, 2), ",1");
   EXPECT_EQ(csv.substr(csv.size() - 3), ",0\n");
-  write_particles_vtu(d.path / "p.vtu", p, 0.5);
+  write_particles_vtu(d.path / "p.vtu", p, 0.5, {VtkFormat::Ascii, {}});
   const std::string vtu = test::slurp(d.path / "p.vtu");
   const auto at = vtu.find("type=\"UInt8\" Name=\"fixed\"");
   ASSERT_NE(at, std::string::npos) << vtu;

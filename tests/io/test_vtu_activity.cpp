@@ -50,7 +50,7 @@ TEST_F(OutputTest, BarrierVtuMarksSwitchedOffElements) {
   for (const auto& r : rows) {
     b.move_to(r.t);
     const auto file = dir / "barriers.vtu";
-    write_barriers_vtu(file, b, r.t);
+    write_barriers_vtu(file, b, r.t, VtkFormat::Ascii);
     const std::string vtu = slurp(file);
     EXPECT_NE(vtu.find("<DataArray type=\"UInt8\" Name=\"active\""), std::string::npos);
     EXPECT_EQ(int_field(vtu, "active"), r.active) << "t = " << r.t;
@@ -58,6 +58,6 @@ TEST_F(OutputTest, BarrierVtuMarksSwitchedOffElements) {
   }
   Barriers plain;
   ASSERT_TRUE(plain.add(1, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0, 1e9, 0.3, MotionLaw{}, 0.0, kNan));
-  write_barriers_vtu(dir / "plain.vtu", plain, 0.0);
+  write_barriers_vtu(dir / "plain.vtu", plain, 0.0, VtkFormat::Ascii);
   EXPECT_EQ(slurp(dir / "plain.vtu").find("Name=\"active\""), std::string::npos);
 }

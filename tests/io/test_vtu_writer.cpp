@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -86,6 +87,42 @@ std::vector<Listed> read_pvd(const fs::path& file) {
   return out;
 }
 
+// read_vtu.py's meshio dump without its "cells ..." blocks: what the VTK reader's dump must equal.
+std::string without_cells(const std::string& dump) {
+  std::istringstream in(dump);
+  std::string out, line;
+  bool skip = false;
+  while (std::getline(in, line)) {
+    const bool header = line.rfind("points ", 0) == 0 || line.rfind("cells ", 0) == 0 ||
+                        line.rfind("point_data ", 0) == 0 || line.rfind("cell_data ", 0) == 0 ||
+                        line.rfind("field_data ", 0) == 0;
+    if (header) skip = line.rfind("cells ", 0) == 0;
+    if (!skip) out += line + "\n";
+  }
+  return out;
+}
+
+// Every format reads back, with meshio and with VTK, exactly as the ASCII file does: the ASCII
+// file is checked value by value against the state, the others against it.
+void expect_formats_agree(const std::function<void(const fs::path&, VtkFormat)>& write, const fs::path& dir) {
+  fs::create_directories(dir);
+  const fs::path ascii = dir / "ascii.vtu";
+  write(ascii, VtkFormat::Ascii);
+  const std::string meshio_ascii = run_reader(ascii);
+  // compared with == (gtest's diff of large texts is quadratic); the files stay for a look
+  EXPECT_TRUE(run_reader(ascii, "--vtk") == without_cells(meshio_ascii)) << "VTK's reading of " << ascii;
+  for (const VtkFormat f : {VtkFormat::Binary, VtkFormat::Compressed}) {
+    SCOPED_TRACE(vtk_format_name(f));
+    const fs::path file = dir / (std::string(vtk_format_name(f)) + ".vtu");
+    write(file, f);
+    EXPECT_TRUE(run_reader(file) == meshio_ascii) << "meshio's reading of " << file;
+    EXPECT_TRUE(run_reader(file, "--vtk") == without_cells(meshio_ascii)) << "VTK's reading of " << file;
+    const std::string head = slurp(file).substr(0, 400);
+    EXPECT_NE(head.find("format=\"appended\""), std::string::npos);
+    EXPECT_EQ(head.find("compressor=") != std::string::npos, f == VtkFormat::Compressed);
+  }
+}
+
 void expect_vec(const Array& a, std::size_t t, const Vec3& v) {
   ASSERT_EQ(a.components, 3u);
   EXPECT_EQ(a.d(t, 0), v.x);
@@ -99,19 +136,31 @@ TEST_F(OutputTest, ParticleVtuRoundTripsThroughMeshio) {
   const Particles p = make_particles(5);
   const double time = 0.1 + 1.0 / 3.0 * 1e-3;
   const fs::path file = dir / "particles.vtu";
-  write_particles_vtu(file, p, time);
+  const VtuOptions ascii{VtkFormat::Ascii, {"glass", "steel"}};
+  write_particles_vtu(file, p, time, ascii);
   EXPECT_EQ(files_in(dir), std::vector<fs::path>{"particles.vtu"});
   const auto r = read_vtu(file);
 
   std::vector<std::string> keys;
   for (const auto& [k, a] : r) keys.push_back(k);
-  const std::vector<std::string> expected_keys = {
-      "cells/vertex",      "field_data/TimeValue",   "point_data/angular_velocity",
-      "point_data/charge", "point_data/fixed",       "point_data/force",
-      "point_data/id",     "point_data/material",    "point_data/orientation",
-      "point_data/radius", "point_data/temperature", "point_data/velocity",
-      "points/Points"};
+  const std::vector<std::string> expected_keys = {"cells/vertex",
+                                                  "field_data/TimeValue",
+                                                  "field_data/material:glass",
+                                                  "field_data/material:steel",
+                                                  "point_data/angular_velocity",
+                                                  "point_data/charge",
+                                                  "point_data/fixed",
+                                                  "point_data/force",
+                                                  "point_data/id",
+                                                  "point_data/material",
+                                                  "point_data/orientation",
+                                                  "point_data/radius",
+                                                  "point_data/temperature",
+                                                  "point_data/velocity",
+                                                  "points/Points"};
   ASSERT_EQ(keys, expected_keys);  // std::map keeps them sorted
+  EXPECT_EQ(r.at("field_data/material:glass").i(0, 0), 0);
+  EXPECT_EQ(r.at("field_data/material:steel").i(0, 0), 1);
 
   ASSERT_EQ(r.at("field_data/TimeValue").tokens.size(), 1u);
   EXPECT_EQ(r.at("field_data/TimeValue").d(0, 0), time);
@@ -119,7 +168,7 @@ TEST_F(OutputTest, ParticleVtuRoundTripsThroughMeshio) {
   ASSERT_EQ(cells.tuples, p.size());
   ASSERT_EQ(cells.components, 1u);
   for (const auto& [k, a] : r)
-    if (k != "field_data/TimeValue") {
+    if (k.rfind("field_data/", 0) != 0) {
       EXPECT_EQ(a.tuples, p.size()) << k;
     }
 
@@ -142,13 +191,28 @@ TEST_F(OutputTest, ParticleVtuRoundTripsThroughMeshio) {
     EXPECT_EQ(q.d(i, 2), p.q[i].y);
     EXPECT_EQ(q.d(i, 3), p.q[i].z);
   }
+  expect_formats_agree(
+      [&](const fs::path& f, VtkFormat format) {
+        write_particles_vtu(f, p, time, {format, ascii.material_names});
+      },
+      dir / "formats");
+}
+
+// Enough particles for several compressed blocks (32 KiB each), with a partial last block.
+TEST_F(OutputTest, LargeParticleVtuAgreesInEveryFormat) {
+  const Particles p = make_particles(3001);
+  expect_formats_agree(
+      [&](const fs::path& f, VtkFormat format) {
+        write_particles_vtu(f, p, 0.25, {format, {"a"}});
+      },
+      dir);
 }
 
 // meshio 5 cannot read a grid without cells, so the empty case is checked with xml.etree:
 // well-formed, zero points and cells, every array empty except the time.
 TEST_F(OutputTest, EmptyParticleVtuIsWellFormed) {
   const fs::path file = dir / "empty.vtu";
-  write_particles_vtu(file, Particles{}, 2.5);
+  write_particles_vtu(file, Particles{}, 2.5, {VtkFormat::Ascii, {}});
   const auto lines = lines_of(run_reader(file, "--xml"));
   ASSERT_FALSE(lines.empty());
   EXPECT_EQ(lines[0], "piece 0 0");
@@ -181,16 +245,21 @@ TEST_F(OutputTest, BarrierVtuHasMovedTrianglesAndLoads) {
     b.moment[e] = {1e-9 / s, s / 13.0, -std::sqrt(s)};
     b.pressure[e] = 1e6 / (3.0 * s);
   }
+  b.group_names = {"floor", "walls"};
   const fs::path file = dir / "barriers.vtu";
-  write_barriers_vtu(file, b, time);
+  write_barriers_vtu(file, b, time, VtkFormat::Ascii);
   const auto r = read_vtu(file);
 
   std::vector<std::string> keys;
   for (const auto& [k, a] : r) keys.push_back(k);
   const std::vector<std::string> expected_keys = {
-      "cell_data/force",    "cell_data/group",    "cell_data/id",   "cell_data/moment",     "cell_data/normal",
-      "cell_data/pressure", "cell_data/velocity", "cells/triangle", "field_data/TimeValue", "points/Points"};
+      "cell_data/force",      "cell_data/group",        "cell_data/id",           "cell_data/moment",
+      "cell_data/normal",     "cell_data/pressure",     "cell_data/velocity",     "cells/triangle",
+      "field_data/TimeValue", "field_data/group:floor", "field_data/group:walls", "points/Points"};
   ASSERT_EQ(keys, expected_keys);
+  EXPECT_EQ(r.at("field_data/group:walls").i(0, 0), 1);
+  expect_formats_agree([&](const fs::path& f, VtkFormat format) { write_barriers_vtu(f, b, time, format); },
+                       dir / "formats");
   EXPECT_EQ(r.at("field_data/TimeValue").d(0, 0), time);
 
   const Array& pts = r.at("points/Points");

@@ -55,6 +55,7 @@ Scene cluster() {
     s.particles.charge[i] = 1e-12 * static_cast<double>(s.particles.id[i] % 7);
   }
   prm.output.particles_every = 200 * kDt;
+  prm.output.format = VtkFormat::Ascii;  // the pieces are parsed as text here (and by check_pvtu.py)
   prm.output.particle_csv_every = 300 * kDt;
   prm.output.barriers_every = 300 * kDt;
   return s;

@@ -1,0 +1,99 @@
+#include "io/coarse_grain_reader.hpp"
+
+#include <string>
+
+#include "io/input_error.hpp"
+
+namespace mpdem {
+
+namespace {
+
+constexpr const char* kAxes[] = {"x", "y", "z"};
+
+void read_grid(const TomlSection& g, CoarseGrainSpec& out) {
+  out.grid.min = g.require(g.vec3("min"), "min");
+  out.grid.max = g.require(g.vec3("max"), "max");
+  const auto cells = g.require(g.numbers("cells", 3, 3), "cells");
+  for (int k = 0; k < 3; ++k) {
+    const double c = cells[static_cast<std::size_t>(k)];
+    if (!(c >= 1.0 && c <= 1e6) || c != static_cast<double>(static_cast<int>(c)))
+      g.fail("cells", "expected three whole numbers from 1 to 10^6");
+    out.grid.cells[static_cast<std::size_t>(k)] = static_cast<int>(c);
+    if (!(out.grid.min[k] < out.grid.max[k])) g.fail("max", std::string("expected max > min along ") + kAxes[k]);
+  }
+  // Axes averaged over [min, max] instead of resolved (slabs: one axis, 2-D fields).
+  if (const auto avg = g.strings("average_over", 0, 2)) {
+    for (const std::string& a : *avg) {
+      int k = 0;
+      while (k < 3 && a != kAxes[k]) ++k;
+      if (k == 3) g.fail("average_over", "expected axis names \"x\", \"y\" or \"z\", got \"" + a + "\"");
+      out.grid.resolved[static_cast<std::size_t>(k)] = false;
+      out.grid.cells[static_cast<std::size_t>(k)] = 1;
+    }
+  }
+}
+
+void read_profile(const TomlSection& p, const Model& model, CoarseGrainSpec& out) {
+  out.profile = true;
+  const std::string axis = p.require(p.string("axis"), "axis");
+  out.axis = 0;
+  while (out.axis < 3 && axis != kAxes[out.axis]) ++out.axis;
+  if (out.axis == 3) p.fail("axis", "expected \"x\", \"y\" or \"z\", got \"" + axis + "\"");
+  const double lo = p.require(p.number("min"), "min"), hi = p.require(p.number("max"), "max");
+  if (!(lo < hi)) p.fail("max", "expected max > min");
+  int bins = 0;
+  p.get("bins", bins, 1, 1000000);
+  if (bins == 0) p.fail("bins", "missing required key");
+  // The two other axes are averaged over the domain (or the given extent).
+  const DomainParams& d = model.params.domain;
+  const auto emin = p.vec3("extent_min"), emax = p.vec3("extent_max");
+  if ((!emin || !emax) && !d.bounded)
+    p.fail(emin ? "extent_max" : "extent_min",
+           "a profile averages over the other two axes: give extent_min and extent_max, or a [domain]");
+  out.grid.min = emin ? *emin : d.min;
+  out.grid.max = emax ? *emax : d.max;
+  out.grid.min[out.axis] = lo;
+  out.grid.max[out.axis] = hi;
+  for (int k = 0; k < 3; ++k) {
+    const bool along = k == out.axis;
+    out.grid.resolved[static_cast<std::size_t>(k)] = along;
+    out.grid.cells[static_cast<std::size_t>(k)] = along ? bins : 1;
+    if (!along && !(out.grid.min[k] < out.grid.max[k]))
+      p.fail("extent_max", std::string("expected extent_max > extent_min along ") + kAxes[k]);
+  }
+}
+
+}  // namespace
+
+void read_coarse_grain(const TomlSection& root, Model& model) {
+  int unnamed = 0;
+  for (const TomlSection& s :
+       root.tables("coarse_grain", {"name", "grid", "profile", "kernel", "width", "every", "average", "samples"})) {
+    CoarseGrainSpec c;
+    c.name = std::to_string(++unnamed);
+    s.get("name", c.name);
+    if (c.name.empty() || c.name.find_first_of("/\\ ,\"") != std::string::npos)
+      s.fail("name", "expected a non-empty name without spaces, commas, quotes or slashes (it names files)");
+    for (const CoarseGrainSpec& other : model.params.coarse_grain)
+      if (other.name == c.name) s.fail("name", "another [[coarse_grain]] has the name \"" + c.name + "\"");
+    const auto grid = s.table("grid", {"min", "max", "cells", "average_over"});
+    const auto profile = s.table("profile", {"axis", "min", "max", "bins", "extent_min", "extent_max"});
+    if (grid && profile) s.fail("profile", "give either grid or profile, not both");
+    if (!grid && !profile) s.fail("grid", "missing required key (or profile)");
+    if (grid) read_grid(*grid, c);
+    else read_profile(*profile, model, c);
+    if (const auto k = s.string("kernel")) {
+      if (*k == "gaussian") c.kernel = CgKernel::gaussian;
+      else if (*k == "lucy") c.kernel = CgKernel::lucy;
+      else s.fail("kernel", "expected \"gaussian\" or \"lucy\", got \"" + *k + "\"");
+    }
+    c.width = s.require(s.number("width", kPositive), "width");
+    c.every = s.require(s.number("every", kPositive), "every");
+    s.get("average", c.average, kNonNegative);
+    if (c.average > c.every) s.fail("average", "expected a window no longer than every (the windows would overlap)");
+    s.get("samples", c.samples, 1, 100000);
+    model.params.coarse_grain.push_back(std::move(c));
+  }
+}
+
+}  // namespace mpdem

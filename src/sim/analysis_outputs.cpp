@@ -1,0 +1,198 @@
+#include "sim/analysis_outputs.hpp"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+
+#include "io/cg_writer.hpp"
+#include "io/contact_writer.hpp"
+#include "io/csv_log.hpp"
+#include "io/output_manager.hpp"
+#include "io/pvd_index.hpp"
+#include "sim/contact_list.hpp"
+
+namespace mpdem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The coarse-graining input of the owned particles and the listed contacts.
+void cg_input(const Particles& p, const std::vector<ContactEntry>& list, std::vector<CgParticle>& particles,
+              std::vector<CgContact>& contacts) {
+  const std::size_t n = p.size();
+  particles.resize(n);
+  std::unordered_map<std::int64_t, std::size_t> index;  // id -> owned index (a ghost's second member)
+  index.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = p.radius[i];
+    particles[i] = {p.x[i], p.v[i], p.mass[i], 4.0 / 3.0 * std::numbers::pi * r * r * r, 0};
+    index.emplace(p.id[i], i);
+  }
+  contacts.clear();
+  contacts.reserve(list.size());
+  for (const ContactEntry& c : list) {
+    if (c.first_index >= n) continue;  // not an owned particle's contact
+    ++particles[c.first_index].contacts;
+    if (c.second >= 0)
+      if (const auto it = index.find(c.second); it != index.end()) ++particles[it->second].contacts;
+    contacts.push_back({c.first_index, c.normal_force + c.tangential_force, c.branch, c.element >= 0});
+  }
+}
+
+}  // namespace
+
+AnalysisOutputs::AnalysisOutputs(const Model& model, fs::path dir, std::optional<double> resume_time)
+    : model_(model), dir_(std::move(dir)), resume_time_(resume_time) {
+  const Params& prm = model.params;
+  auto pvd = [&](const fs::path& f) {
+    return resume_time ? std::make_unique<PvdIndex>(f, *resume_time) : std::make_unique<PvdIndex>(f);
+  };
+  fs::create_directories(dir_);
+  if (prm.output.contacts_every > 0.0) {
+    fs::create_directories(dir_ / "contacts");
+    fs::create_directories(dir_ / "contacts_csv");
+    contacts_pvd_ = pvd(dir_ / "contacts.pvd");
+    contacts_next_ = prm.output.contacts_every;
+  }
+  for (std::size_t k = 0; k < prm.coarse_grain.size(); ++k) {
+    const CoarseGrainSpec& c = prm.coarse_grain[k];
+    const std::string stem = "cg_" + c.name;
+    Field f;
+    f.next_sample = sample_time(c, 0, 0);
+    fields_.push_back(std::move(f));
+    if (c.profile) {
+      const fs::path file = dir_ / (stem + ".csv");
+      if (resume_time) keep_rows_until(file, *resume_time);
+      profile_csv_.push_back(
+          std::make_unique<CsvLog>(file, cg_profile_columns(c.axis),
+                                   resume_time && fs::exists(file) ? CsvLog::Open::append : CsvLog::Open::replace));
+      grid_pvd_.emplace_back();
+    } else {
+      fs::create_directories(dir_ / stem);
+      grid_pvd_.push_back(pvd(dir_ / (stem + ".pvd")));
+      profile_csv_.emplace_back();
+    }
+  }
+}
+
+AnalysisOutputs::~AnalysisOutputs() = default;
+
+// s, sample `sample` of window `window`: the window ends at output (window + 1) * every and its
+// samples are spaced evenly, the last one at its end.
+double AnalysisOutputs::sample_time(const CoarseGrainSpec& c, std::uint64_t window, std::uint64_t sample) const {
+  const double end = static_cast<double>(window + 1) * c.every;
+  if (c.average <= 0.0) return end;
+  const auto n = static_cast<double>(c.samples);
+  return end - c.average + static_cast<double>(sample + 1) * c.average / n;
+}
+
+bool AnalysisOutputs::needs_contacts(double t_end, double dt, double end) const {
+  const double slack = 0.5 * dt;
+  if (contacts_pvd_ && (t_end >= contacts_next_ - slack || t_end >= end - slack)) return true;
+  for (const Field& f : fields_)
+    if (t_end >= f.next_sample - slack) return true;
+  return false;
+}
+
+void AnalysisOutputs::after_step(double t, double h, double end, const Particles& p, const Barriers& b,
+                                 const Interactions& in) {
+  const double slack = 0.5 * h;
+  // The run's last step writes a contact snapshot; a periodic one due within half a step before
+  // it is left to it, so the end state is written once.
+  const bool last = t >= end - 1e-9 * h;
+  const bool contacts_due = contacts_pvd_ && (last || (t >= contacts_next_ - slack && t < end - slack));
+  bool due = contacts_due;
+  for (const Field& f : fields_) due = due || t >= f.next_sample - slack;
+  if (!due) return;
+  const std::vector<ContactEntry> list = contact_list(p, b, in);
+  const Params& prm = model_.params;
+  if (contacts_due) {
+    const std::string name = fmt::format("contacts/contacts_{:06d}.vtu", contact_snapshots_);
+    write_contacts_vtu(dir_ / name, list, t, prm.output.format);
+    write_contacts_csv(dir_ / fmt::format("contacts_csv/contacts_{:06d}.csv", contact_snapshots_), list, t);
+    contacts_pvd_->add(t, name);
+    ++contact_snapshots_;
+    while (contacts_next_ <= t + slack)
+      contacts_next_ = static_cast<double>(contact_snapshots_ + 1) * prm.output.contacts_every;
+  }
+  std::vector<CgParticle> particles;
+  std::vector<CgContact> contacts;
+  for (std::size_t k = 0; k < fields_.size(); ++k) {
+    Field& f = fields_[k];
+    const CoarseGrainSpec& c = prm.coarse_grain[k];
+    if (t < f.next_sample - slack) continue;
+    if (particles.empty() && p.size() > 0) cg_input(p, list, particles, contacts);
+    f.average.add(coarse_grain(c.grid, c.kernel, c.width, particles, contacts));
+    // The next sample: the first one after this step (a step longer than the spacing skips some).
+    const std::uint64_t per_window = c.average > 0.0 ? static_cast<std::uint64_t>(c.samples) : 1;
+    bool window_done = false;
+    do {
+      if (++f.sample == per_window) {
+        window_done = true;
+        f.sample = 0;
+        ++f.outputs;
+      }
+      f.next_sample = sample_time(c, f.outputs, f.sample);
+    } while (f.next_sample <= t + slack && !window_done);
+    if (window_done) {
+      write_field(k, t, f.average.mean());
+      f.average.clear();
+      while (f.next_sample <= t + slack) f.next_sample = sample_time(c, ++f.outputs, 0);
+    }
+  }
+}
+
+void AnalysisOutputs::write_field(std::size_t k, double t, const CgFields& f) {
+  const CoarseGrainSpec& c = model_.params.coarse_grain[k];
+  if (c.profile) {
+    for (const std::vector<double>& row : cg_profile_rows(c.grid, f, c.axis, t)) profile_csv_[k]->row(row);
+    profile_csv_[k]->flush();
+    return;
+  }
+  const std::string stem = "cg_" + c.name;
+  const std::string name = fmt::format("{}/{}_{:06d}.vti", stem, stem, fields_[k].outputs - 1);
+  write_cg_vti(dir_ / name, c.grid, f, t, model_.params.output.format);
+  grid_pvd_[k]->add(t, name);
+}
+
+void AnalysisOutputs::flush() {
+  for (auto& csv : profile_csv_)
+    if (csv) csv->flush();
+}
+
+void AnalysisOutputs::save(BinaryWriter& w) const {
+  w.value(contacts_next_);
+  w.value(contact_snapshots_);
+  w.value(static_cast<std::uint64_t>(fields_.size()));
+  for (const Field& f : fields_) {
+    w.value(f.outputs);
+    w.value(f.sample);
+    w.value(f.next_sample);
+    const_cast<CgAverage&>(f.average).visit_state([&](auto& v) {  // visit_state only reads here
+      if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::size_t>) w.value(static_cast<std::uint64_t>(v));
+      else w.vector(v);
+    });
+  }
+}
+
+void AnalysisOutputs::restore(BinaryReader& r) {
+  contacts_next_ = r.value<double>();
+  contact_snapshots_ = r.value<std::uint64_t>();
+  if (r.value<std::uint64_t>() != fields_.size())
+    throw std::runtime_error("the checkpoint's [[coarse_grain]] entries differ from the scene's");
+  for (Field& f : fields_) {
+    f.outputs = r.value<std::uint64_t>();
+    f.sample = r.value<std::uint64_t>();
+    f.next_sample = r.value<double>();
+    f.average.visit_state([&](auto& v) {
+      using T = std::decay_t<decltype(v)>;
+      if constexpr (std::is_same_v<T, std::size_t>) v = static_cast<std::size_t>(r.value<std::uint64_t>());
+      else v = r.template vector<typename T::value_type>();
+    });
+  }
+}
+
+}  // namespace mpdem

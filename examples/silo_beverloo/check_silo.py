@@ -13,7 +13,8 @@ Tolerances and why:
   at least half the weight of a column of beads of its area as high as the settled bed less 2 d
   at t = T - 0.01 s (Janssen screening on the walls makes it less than the full column; a lid that
   does not act carries nothing);
-- after T: the lids' force is exactly 0 (docs/scene.md: an inactive element takes part in nothing);
+- after T: the lids' force is exactly 0 (docs/scene.md: an inactive element takes part in nothing) in
+  every barrier_groups.csv row from T + 2 ms on (each row is the mean over the 2 ms before it);
 - first removal of each sink in (T, T + 0.1] s: the beads above the hole fall ~25 mm to the sink
   (~0.07 s); later than 0.1 s means the flow did not start;
 - larger orifice faster: mass removed by the end of the run (0.12 s after T), B / A. Beverloo's
@@ -79,7 +80,7 @@ def main():
         check(fz < -0.5 * col, f"lid{s}: fz = {fz:.4g} N at t = {tb[i_before]:.3f} s (expected below "
               f"-{0.5 * col:.3g} N, half a {h * 1e3:.0f} - 2 d mm column's weight)")
         after = [abs(float(r[f"lid{s}.fz"])) + abs(float(r[f"lid{s}.fx"])) + abs(float(r[f"lid{s}.fy"]))
-                 for r, ti in zip(bar, tb) if ti >= t_open]
+                 for r, ti in zip(bar, tb) if ti >= t_open + 0.001]  # rows are means over 2 ms before them
         check(len(after) > 0 and max(after) == 0.0, f"lid{s}: largest force after t = {t_open} s is "
               f"{max(after) if after else float('nan'):.3g} N (expected exactly 0)")
 

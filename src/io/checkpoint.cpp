@@ -172,9 +172,6 @@ void Simulation::resume_from(const std::filesystem::path& file) {
     // The output series are restored once run() has opened the outputs.
     if (r.has("output")) {
       read("output", [&](BinaryReader& s) { resume_output_state_ = s.rest(); });
-      if (resume_output_state_.size() != OutputManager::state_bytes())
-        throw std::runtime_error(fmt::format("the section 'output' holds {} bytes, not {}", resume_output_state_.size(),
-                                             OutputManager::state_bytes()));
     }
     if (r.has("analysis")) read("analysis", [&](BinaryReader& s) { resume_analysis_state_ = s.rest(); });
     r.finish();

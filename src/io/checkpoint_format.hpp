@@ -19,7 +19,7 @@
 
 namespace mpdem {
 
-inline constexpr std::uint32_t kCheckpointFormat = 10;
+inline constexpr std::uint32_t kCheckpointFormat = 11;
 
 class CheckpointWriter {
  public:

@@ -91,9 +91,9 @@ OutputManager::~OutputManager() = default;
 
 void OutputManager::save(BinaryWriter& w) const {
   for (const Series* s : {&particles_vtu_, &barriers_vtu_, &particles_csv_, &barrier_log_}) w.value(*s);
+  vtu_means_.save(w);
+  log_means_.save(w);
 }
-
-std::size_t OutputManager::state_bytes() { return 4 * sizeof(Series); }
 
 void OutputManager::restore(BinaryReader& r) {
   for (Series* s : {&particles_vtu_, &barriers_vtu_, &particles_csv_, &barrier_log_}) {
@@ -101,6 +101,14 @@ void OutputManager::restore(BinaryReader& r) {
     *s = r.value<Series>();
     s->every = every;
   }
+  vtu_means_.restore(r);
+  log_means_.restore(r);
+}
+
+void OutputManager::accumulate_barrier_loads(const Barriers& b, double h) {
+  if (!model_.params.output.mean_barrier_loads || b.size() == 0) return;
+  if (barriers_pvd_) vtu_means_.add(b, h);
+  if (groups_) log_means_.add(b, h);
 }
 
 bool OutputManager::due(Series& s, double t, double dt, double end, bool force) {
@@ -142,9 +150,20 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
       particles_pvd_->add(t, name);
     }
   }
+  const bool means = model_.params.output.mean_barrier_loads;
   if (barriers_pvd_ && due(barriers_vtu_, t, dt, end, force)) {
     const std::string name = fmt::format("barriers/barriers_{:06d}.vtu", barriers_vtu_.count - 1);
-    write_barriers_vtu(dir_ / name, b, t, model_.params.output.format);
+    if (means && vtu_means_.span() > 0.0) {
+      Barriers averaged = b;
+      BarrierLoads l = vtu_means_.mean(b);
+      averaged.force = std::move(l.force);
+      averaged.moment = std::move(l.moment);
+      averaged.pressure = std::move(l.pressure);
+      write_barriers_vtu(dir_ / name, averaged, t, model_.params.output.format);
+    } else {
+      write_barriers_vtu(dir_ / name, b, t, model_.params.output.format);
+    }
+    vtu_means_.clear();
     barriers_pvd_->add(t, name);
   }
   if (particles_csv_.every > 0.0 && due(particles_csv_, t, dt, end, force)) {
@@ -152,23 +171,24 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
                         PeriodicImages(model_.params.domain).period());
   }
   if (groups_ && due(barrier_log_, t, dt, end, force)) {
+    const BarrierLoads l = means ? log_means_.mean(b) : current_loads(b);
+    log_means_.clear();
     std::vector<double> row(groups_->columns().size(), 0.0);
     row[0] = t;
     for (std::size_t e = 0; e < b.size(); ++e) {
       const auto grp = static_cast<std::size_t>(b.group[e]);
       double* g = &row[group_column_[grp]];
-      const Vec3 c = b.centre(e);
-      const Vec3 m = b.moment[e] + cross(c, b.force[e]);  // moment about the origin
-      g[0] += b.force[e].x;
-      g[1] += b.force[e].y;
-      g[2] += b.force[e].z;
+      const Vec3 m = l.moment[e] + cross(b.centre(e), l.force[e]);  // moment about the origin
+      g[0] += l.force[e].x;
+      g[1] += l.force[e].y;
+      g[2] += l.force[e].z;
       g[3] += m.x;
       g[4] += m.y;
       g[5] += m.z;
       g[6] += b.area[e];
       if (group_turns_[grp]) {
-        g[7] += b.axis_torque(e);
-        g[8] += b.drive_power(e);
+        g[7] += l.axis_torque[e];
+        g[8] += l.drive_power[e];
       }
     }
     groups_->row(row);

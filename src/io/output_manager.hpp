@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "integrate/step_report.hpp"
+#include "io/barrier_load_means.hpp"
 #include "io/binary_stream.hpp"
 #include "io/global_log.hpp"
 #include "model/scene.hpp"
@@ -51,6 +52,9 @@ class OutputManager {
   // half a step of it). With pieces > 1 a due particle VTU snapshot is written as its .pvtu index
   // (the ranks have written its pieces), and p is read for the CSV snapshot only.
   void snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force);
+  // After every accepted step of length h (s): its end-of-step barrier loads enter the means
+  // that the barrier outputs write ([output] barrier_loads = "mean").
+  void accumulate_barrier_loads(const Barriers& b, double h);
   void global_log(const GlobalLogRow& row, const ParticleTotals& totals, const InteractionStats& stats);
   // The particle files snapshots(t, dt, ..., force) would write (changes nothing): a run on
   // several ranks writes the pieces of a VTU snapshot and gathers its particles for a CSV one.
@@ -69,8 +73,6 @@ class OutputManager {
   // Checkpoints: when each series is next due.
   void save(BinaryWriter& w) const;
   void restore(BinaryReader& r);
-  // Bytes that save() writes (and restore() reads).
-  static std::size_t state_bytes();
   const std::filesystem::path& dir() const { return dir_; }
 
  private:
@@ -100,6 +102,7 @@ class OutputManager {
   std::vector<char> group_turns_;          // [groups] 1: a rotating element (torque and power columns)
   std::vector<std::size_t> group_column_;  // [groups] first column of the group in barrier_groups.csv
   GlobalLogLayout log_layout_;
+  BarrierLoadMeans vtu_means_, log_means_;  // since the last barrier VTU / barrier_groups.csv row
 };
 
 }  // namespace mpdem

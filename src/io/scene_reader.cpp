@@ -317,9 +317,9 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     s->get("energy_jump", p.checks.energy_jump, kNonNegative);
     s->get("energy_drift", p.checks.energy_drift, kNonNegative);  // checked once, at the end of the run
   }
-  if (const auto s = root.table("output",
-                                {"dir", "particles_every", "barriers_every", "particle_csv_every", "barrier_log_every",
-                                 "log_every", "checkpoint_every", "progress_every", "format", "contacts_every"})) {
+  if (const auto s = root.table("output", {"dir", "particles_every", "barriers_every", "particle_csv_every",
+                                           "barrier_log_every", "log_every", "checkpoint_every", "progress_every",
+                                           "format", "contacts_every", "barrier_loads"})) {
     s->get("dir", p.output.dir);
     if (p.output.dir.empty()) s->fail("dir", "expected a non-empty folder name");
     if (const auto name = s->string("format")) {
@@ -336,6 +336,11 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     s->get("checkpoint_every", p.output.checkpoint_every, 0);
     s->get("progress_every", p.output.progress_every, kNonNegative);
     s->get("contacts_every", p.output.contacts_every, kNonNegative);
+    if (const auto loads = s->string("barrier_loads")) {
+      if (*loads == "mean") p.output.mean_barrier_loads = true;
+      else if (*loads == "sample") p.output.mean_barrier_loads = false;
+      else s->fail("barrier_loads", "expected \"mean\" or \"sample\", got \"" + *loads + "\"");
+    }
   }
 }
 

@@ -156,14 +156,17 @@ enum class VtkFormat { Ascii, Binary, Compressed };
 struct OutputParams {
   std::string dir = "output";            // relative to the scene file's folder
   VtkFormat format = VtkFormat::Binary;  // VTU/VTP/VTI encoding ("format"; binary: the fastest to write)
-  double contacts_every = 0.0;           // s between contact snapshots (VTP + CSV; 0 = off)
-  double particles_every = 0.0;          // s of simulated time between particle VTU (0 = off)
-  double barriers_every = 0.0;           // s between barrier VTU (0 = off)
-  double particle_csv_every = 0.0;       // s between particle CSV snapshots (0 = off)
-  double barrier_log_every = 0.0;        // s between barrier-group log rows (0 = off)
-  int log_every = 100;                   // steps between global log rows (>= 1)
-  int checkpoint_every = 0;              // steps between checkpoints (0 = off)
-  double progress_every = 10.0;          // s of wall time between plain progress lines
+  double contacts_every = 0.0;           // s between contact snapshots (VTU + CSV; 0 = off)
+  // Barrier loads written (barrier VTU, barrier_groups.csv): true: means over each output's
+  // interval ("mean"), false: the last evaluation's sample ("sample")
+  bool mean_barrier_loads = true;
+  double particles_every = 0.0;     // s of simulated time between particle VTU (0 = off)
+  double barriers_every = 0.0;      // s between barrier VTU (0 = off)
+  double particle_csv_every = 0.0;  // s between particle CSV snapshots (0 = off)
+  double barrier_log_every = 0.0;   // s between barrier-group log rows (0 = off)
+  int log_every = 100;              // steps between global log rows (>= 1)
+  int checkpoint_every = 0;         // steps between checkpoints (0 = off)
+  double progress_every = 10.0;     // s of wall time between plain progress lines
 };
 
 // How the ranks of a decomposed run share the work (docs/parallel.md, "Load balance"); a

@@ -381,6 +381,7 @@ void Simulation::step(double end) {
   if (adaptive) last_ = advance_adaptive(end - time_);
   else last_ = advance(std::min(prm.time.dt, end - time_));  // the last step ends exactly at `end`
   const double h = time_ - t0;
+  if (output_) output_->accumulate_barrier_loads(scene_.barriers, h);
   if (out) {
     snapshots(h, false);
     if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) == 0)

@@ -93,11 +93,15 @@ TEST(CoarseGrainKeys, DefaultFormatIsBinaryAndContactsOff) {
   EXPECT_EQ(s.model.params.output.format, VtkFormat::Binary);
   EXPECT_EQ(s.model.params.output.contacts_every, 0.0);
   EXPECT_TRUE(s.model.params.coarse_grain.empty());
+  EXPECT_TRUE(s.model.params.output.mean_barrier_loads);
+  const Scene sample = parse(d, "[output]\nbarrier_loads = \"sample\"\n");
+  EXPECT_FALSE(sample.model.params.output.mean_barrier_loads);
 }
 
 TEST(CoarseGrainKeys, BadValuesNameTheKey) {
   EXPECT_NE(error("[output]\nformat = \"hdf5\"\n").find("output.format"), std::string::npos);
   EXPECT_NE(error("[output]\ncontacts_every = -1.0\n").find("output.contacts_every"), std::string::npos);
+  EXPECT_NE(error("[output]\nbarrier_loads = \"peak\"\n").find("output.barrier_loads"), std::string::npos);
   const std::string grid =
       "[[coarse_grain]]\ngrid = { min = [0.0, 0.0, 0.0], max = [0.04, 0.04, 0.02], cells = [2, 2, 2] }\n";
   EXPECT_NE(error(grid + "every = 0.1\n").find("coarse_grain.width"), std::string::npos);

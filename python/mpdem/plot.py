@@ -466,23 +466,19 @@ def plot_barrier_group_chunk(p, np, table, t, groups, name, k, n_chunks):
                 p.line(ax, t, y, f"M{c[1]}")
         p.finish_axes(ax, "moment (N m)", f"'{g}': moment about the origin")
         c_idx = 2
-        if has_torque:
+        for shown, column, color, unit, title in (
+                (has_torque, "torque", "tab:purple", "torque (N m)", "torque about its rotation axis"),
+                (has_power, "power", "tab:red", "power (W)", "power put into the particles")):
+            if not shown:
+                continue
             ax = axes[row, c_idx]
-            y = col(g, "torque")
+            y = col(g, column)
             if y is not None:
-                p.line(ax, t, y, "torque", color="tab:purple")
-                p.finish_axes(ax, "torque (N m)", f"'{g}': torque about its rotation axis", legend=False)
+                p.line(ax, t, y, column, color=color)
+                p.finish_axes(ax, unit, f"'{g}': {title}", legend=False)
             else:
                 ax.set_axis_off()
             c_idx += 1
-        if has_power:
-            ax = axes[row, c_idx]
-            y = col(g, "power")
-            if y is not None:
-                p.line(ax, t, y, "power", color="tab:red")
-                p.finish_axes(ax, "power (W)", f"'{g}': power put into the particles", legend=False)
-            else:
-                ax.set_axis_off()
     for c in range(ncols):
         axes[-1, c].set_xlabel("time t (s)")
         axes[-1, c].xaxis.set_tick_params(labelbottom=True)

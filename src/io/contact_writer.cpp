@@ -1,7 +1,5 @@
 #include "io/contact_writer.hpp"
 
-#include <fmt/core.h>
-
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -9,15 +7,20 @@
 #include "io/atomic_file.hpp"
 #include "io/csv_log.hpp"
 #include "io/vtk_xml.hpp"
+#include "io/vtu_writer.hpp"
 
 namespace mpdem {
+
+namespace {
+constexpr int kVtkLine = 3;
+}  // namespace
 
 void write_contacts_vtu(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time,
                         VtkFormat format) {
   const std::size_t n = contacts.size();
   std::vector<Vec3> points(2 * n), point(n), normal(n), fn(n), ft(n);  // m, m, -, N, N
   std::vector<double> overlap(n), f_mag(n), fn_mag(n);                 // m, N, N
-  std::vector<std::int64_t> first(n), second(n), element(n), connectivity(2 * n), offsets(n);
+  std::vector<std::int64_t> first(n), second(n), element(n);
   std::vector<std::uint8_t> sliding(n);
   for (std::size_t k = 0; k < n; ++k) {
     const ContactEntry& c = contacts[k];
@@ -34,14 +37,9 @@ void write_contacts_vtu(const std::filesystem::path& file, std::span<const Conta
     second[k] = c.second;
     element[k] = c.element;
     sliding[k] = c.sliding ? 1 : 0;
-    connectivity[2 * k] = static_cast<std::int64_t>(2 * k);
-    connectivity[2 * k + 1] = static_cast<std::int64_t>(2 * k + 1);
-    offsets[k] = static_cast<std::int64_t>(2 * k + 2);
   }
   VtkXmlDocument d(format, "UnstructuredGrid");
-  d.text("  <UnstructuredGrid>\n    <FieldData>\n");
-  d.field("TimeValue", time);
-  d.text(fmt::format("    </FieldData>\n    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", 2 * n, n));
+  open_unstructured_piece(d, time, 2 * n, n);
   d.text("      <CellData Scalars=\"normal_force_magnitude\" Vectors=\"normal_force\">\n");
   d.array({"first", "Int64", 0}, std::span<const std::int64_t>(first));                // -, id
   d.array({"second", "Int64", 0}, std::span<const std::int64_t>(second));              // -, id or -1
@@ -56,11 +54,9 @@ void write_contacts_vtu(const std::filesystem::path& file, std::span<const Conta
   d.array({"sliding", "UInt8", 0}, std::span<const std::uint8_t>(sliding));            // 1: at the Coulomb limit
   d.text("      </CellData>\n      <Points>\n");
   d.array(kVtuPoints, std::span<const Vec3>(points));  // m: first's centre, then the other end
-  d.text("      </Points>\n      <Cells>\n");
-  d.array({"connectivity", "Int64", 0}, std::span<const std::int64_t>(connectivity));
-  d.array({"offsets", "Int64", 0}, std::span<const std::int64_t>(offsets));
-  d.owned_array({"types", "UInt8", 0}, std::vector<std::uint8_t>(n, 3));  // VTK_LINE
-  d.text("      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n");
+  d.text("      </Points>\n");
+  separate_cells(d, n, 2, kVtkLine);
+  close_unstructured_piece(d);
   write_file_atomically(file, [&](std::ostream& os) { d.write(os); });
 }
 

@@ -13,10 +13,8 @@
 
 namespace mpdem {
 
-namespace {
-
-void header(VtkXmlDocument& d, double time, std::size_t points, std::size_t cells, const char* names_prefix,
-            std::span<const std::string> names) {
+void open_unstructured_piece(VtkXmlDocument& d, double time, std::size_t points, std::size_t cells,
+                             const char* names_prefix, std::span<const std::string> names) {
   d.text("  <UnstructuredGrid>\n"
          "    <FieldData>\n");
   d.field("TimeValue", time);
@@ -29,9 +27,7 @@ void header(VtkXmlDocument& d, double time, std::size_t points, std::size_t cell
                      points, cells));
 }
 
-// Cells that each use `per_cell` consecutive points of their own, all of one VTK type; Int32
-// indices (half the bytes to write and compress) while they fit.
-void cells(VtkXmlDocument& d, std::size_t count, int per_cell, int vtk_type) {
+void separate_cells(VtkXmlDocument& d, std::size_t count, int per_cell, int vtk_type) {
   d.text("      <Cells>\n");
   const std::size_t n = count * static_cast<std::size_t>(per_cell);
   const auto fill = [&](auto zero) {
@@ -50,10 +46,12 @@ void cells(VtkXmlDocument& d, std::size_t count, int per_cell, int vtk_type) {
   d.text("      </Cells>\n");
 }
 
-void footer(VtkXmlDocument& d) {
+void close_unstructured_piece(VtkXmlDocument& d) {
   d.text("    </Piece>\n"
          "  </UnstructuredGrid>\n");
 }
+
+namespace {
 
 constexpr int kVtkVertex = 1;
 constexpr int kVtkTriangle = 5;
@@ -101,7 +99,7 @@ void write_particles_vtu(const std::filesystem::path& file, const Particles& p, 
   const auto owned = [n](const auto& a) { return std::span(a.data(), n); };
   const auto& a = kParticleArrays;  // names, types, units
   VtkXmlDocument d(options.format, "UnstructuredGrid");
-  header(d, time, n, n, "material:", options.material_names);
+  open_unstructured_piece(d, time, n, n, "material:", options.material_names);
   d.text(
       fmt::format("      <PointData Scalars=\"{}\" Vectors=\"{}\">\n", kParticleActiveScalars, kParticleActiveVectors));
   d.array(a[kId], owned(p.id));
@@ -118,15 +116,15 @@ void write_particles_vtu(const std::filesystem::path& file, const Particles& p, 
          "      <Points>\n");
   d.array(kVtuPoints, owned(p.x));  // m, centres
   d.text("      </Points>\n");
-  cells(d, n, 1, kVtkVertex);
-  footer(d);
+  separate_cells(d, n, 1, kVtkVertex);
+  close_unstructured_piece(d);
   write_file_atomically(file, [&](std::ostream& os) { d.write(os); });
 }
 
 void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, double time, VtkFormat format) {
   const std::size_t m = b.size();
   VtkXmlDocument d(format, "UnstructuredGrid");
-  header(d, time, 3 * m, m, "group:", b.group_names);
+  open_unstructured_piece(d, time, 3 * m, m, "group:", b.group_names);
   d.text("      <CellData Scalars=\"pressure\" Vectors=\"force\">\n");
   d.array({"id", "Int64", 0}, std::span<const std::int64_t>(b.id));          // -
   d.array({"group", "Int32", 0}, std::span<const std::int32_t>(b.group));    // index into group_names
@@ -156,8 +154,8 @@ void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, do
     for (int k = 0; k < 3; ++k) vertices[3 * e + static_cast<std::size_t>(k)] = b.vertex(e, k);
   d.owned_array(kVtuPoints, vertices);
   d.text("      </Points>\n");
-  cells(d, m, 3, kVtkTriangle);
-  footer(d);
+  separate_cells(d, m, 3, kVtkTriangle);
+  close_unstructured_piece(d);
   write_file_atomically(file, [&](std::ostream& os) { d.write(os); });
 }
 

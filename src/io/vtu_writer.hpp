@@ -22,6 +22,17 @@ struct VtuOptions {
   std::vector<std::string> material_names;
 };
 
+// The parts every UnstructuredGrid file of mpdem shares, in file order. open_unstructured_piece:
+// <UnstructuredGrid>, FieldData "TimeValue" = time (s) and one Int32 "PREFIX NAME" = index per
+// name (the names beside the indices), <Piece> with the counts. separate_cells: the <Cells> of
+// `count` cells of one VTK type that each use `per_cell` consecutive points of their own; Int32
+// indices (half the bytes to write and compress) while they fit. close_unstructured_piece: the
+// closing tags.
+void open_unstructured_piece(VtkXmlDocument& d, double time, std::size_t points, std::size_t cells,
+                             const char* names_prefix = "", std::span<const std::string> names = {});
+void separate_cells(VtkXmlDocument& d, std::size_t count, int per_cell, int vtk_type);
+void close_unstructured_piece(VtkXmlDocument& d);
+
 // The scene's [output] format and its material names.
 VtuOptions vtu_options(const Model& model);
 

@@ -371,16 +371,17 @@ void Simulation::step(double end) {
   const bool out = options_.write_output;
   const double t0 = time_;
   const bool adaptive = prm.time.adaptive && prm.time.integrator == Integrator::Trapezoidal;
+  // The step to take (an adaptive step may turn out shorter); the last one ends exactly at `end`.
+  const double planned = std::min(adaptive ? dt_ : prm.time.dt, end - time_);
   if (analysis_) {  // the contact list of a step that an analysis output samples
-    const double h = std::min(adaptive ? dt_ : prm.time.dt, end - time_);
     ParticleContacts& pc = interactions_->particle_contacts();
-    if (!pc.recording() && analysis_->needs_contacts(time_ + h, h, prm.time.duration)) {
+    if (!pc.recording() && analysis_->needs_contacts(time_ + planned, planned, prm.time.duration)) {
       pc.record_contacts(true);
       analysis_recording_ = true;
     }
   }
   if (adaptive) last_ = advance_adaptive(end - time_);
-  else last_ = advance(std::min(prm.time.dt, end - time_));  // the last step ends exactly at `end`
+  else last_ = advance(planned);
   const double h = time_ - t0;
   if (output_) output_->accumulate_barrier_loads(scene_.barriers, h);
   if (out) {

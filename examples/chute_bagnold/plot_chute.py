@@ -3,10 +3,12 @@ Run by run.sh after the run; reads
 
     output/particles_csv/particles_*.csv    snapshots (time, id, x, y, z, vx, ..., fixed, ...)
     output/log.csv                          global log (kinetic energy per row)
+    output/cg_chute.csv                     coarse-grained profile (chute_fields.py)
 
 and writes chute_profile.png (v_x(z) with the fits and the 1.5 law, the shear rate, the volume
 fraction), chute_steady.png (mean velocity
-and kinetic energy against time) and prints results.txt (run.sh tees it).
+and kinetic energy against time), chute_fields.png (velocity, stress and friction coefficient from
+the coarse-grained profile, chute_fields.py) and prints results.txt (run.sh tees it).
 
 Reduced units: d = 1 mm (mean diameter), tau = sqrt(d/g), velocities in sqrt(g d). Heights z are
 measured from the base plane z_b = mean top of the base spheres (mean centre height + d/2).
@@ -33,6 +35,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
+
+import chute_fields
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 OUT = os.path.join(HERE, "output")
@@ -380,6 +384,11 @@ def main():
             t_lo, t_lo + TREND_DT, hq, vm_q, fit(zq[sq], vq[sq])[0], fit_pinned(zq[sq], vq[sq], hq)[0],
             fit_shear(ziq[mq], gq[mq], hq)[0]))
         t_lo += TREND_DT
+
+    p("")
+    accel = float(np.polyfit(tw, vmean[start:], 1)[0]) * VU  # m/s^2, mean downhill acceleration
+    chute_fields.report(OUT, os.path.join(HERE, "chute_fields.png"), tw[0], z_base, D, G, THETA, accel, zc,
+                        np.where(filled, v, np.nan), h_s, EXCLUDE, p)
 
     # --- plots
     fig, ax = plt.subplots(1, 3, figsize=(14, 5.5), gridspec_kw={"width_ratios": [3, 2, 1]})

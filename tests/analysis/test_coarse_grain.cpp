@@ -261,18 +261,65 @@ TEST(CoarseGrain, MassConservation) {
   }
 }
 
-// A random packing (jittered lattice, volume fraction 0.393, 32768 spheres): away from the walls
-// by 3w the density is nu rho_p, pointwise within 1% (2% for Lucy at w = 2d, whose cutoff 4d and
-// standard deviation 1.2d hold too few spheres for 1%), on average over the interior within
-// 0.1%; and rho = nu rho_p exactly for one material.
+namespace {
+// A random packing: random sequential addition of non-overlapping spheres of two sizes (d and
+// 0.8 d, one particle density) in a periodic box, until 20 000 tries in a row fail (volume fraction ~0.3).
+std::vector<CgParticle> random_packing(double box, std::mt19937_64& rng) {
+  const int nc = static_cast<int>(box / kD);  // cells of at least the largest diameter
+  const double h = box / nc;
+  std::vector<std::vector<std::size_t>> cells(static_cast<std::size_t>(nc) * nc * nc);
+  const auto cell_of = [&](double x) { return std::clamp(static_cast<int>(x / h), 0, nc - 1); };
+  std::uniform_real_distribution<double> u(0.0, box);
+  std::bernoulli_distribution large(0.5);
+  std::vector<CgParticle> p;
+  std::vector<double> radius;
+  for (int failed = 0; failed < 20000;) {
+    const double r = large(rng) ? 0.5 * kD : 0.4 * kD;
+    const Vec3 x{u(rng), u(rng), u(rng)};
+    const int cx = cell_of(x.x), cy = cell_of(x.y), cz = cell_of(x.z);
+    bool free = true;  // minimum image: the packing is periodic, uniform up to the box faces
+    for (int a = cx - 1; free && a <= cx + 1; ++a)
+      for (int b = cy - 1; free && b <= cy + 1; ++b)
+        for (int c = cz - 1; free && c <= cz + 1; ++c)
+          for (std::size_t j :
+               cells[(static_cast<std::size_t>((c + nc) % nc) * nc + (b + nc) % nc) * nc + (a + nc) % nc]) {
+            Vec3 s = x - p[j].x;
+            s = s - Vec3{box * std::round(s.x / box), box * std::round(s.y / box), box * std::round(s.z / box)};
+            if (dot(s, s) < (r + radius[j]) * (r + radius[j])) {
+              free = false;
+              break;
+            }
+          }
+    if (!free) {
+      ++failed;
+      continue;
+    }
+    failed = 0;
+    cells[(static_cast<std::size_t>(cz) * nc + cy) * nc + cx].push_back(p.size());
+    const double vol = 4.0 / 3.0 * kPi * r * r * r;
+    p.push_back({x, {}, kRhoP * vol, vol, 0});
+    radius.push_back(r);
+  }
+  return p;
+}
+}  // namespace
+
+// A random packing of two sizes: rho = nu rho_p at every point (one particle density), to 1e-12;
+// away from the walls by 3w the spatial mean of rho is the packing's nu rho_p within 1% for
+// w = 2..4 d (measured: at most 4e-3). Pointwise the field fluctuates with the packing, not within 1%
+// (random sphere positions: rms a few % at w = 2 d); the rms falls as w grows (~w^-3/2).
 TEST(CoarseGrain, DensityOfRandomPacking) {
   std::mt19937_64 rng(2024);
-  const int n = 32;
-  const double a = 1.1 * kD;
-  const auto p = jittered_lattice(n, a, 0.05 * kD, rng);  // none overlapping
-  const double box = n * a, nu = static_cast<double>(p.size()) * kVol / (box * box * box);
-  const CgGrid g = grid({0, 0, 0}, {box, box, box}, {18, 18, 18});  // points ~2d apart
-  for (CgKernel k : kKernels)
+  const double box = 36 * kD;
+  const auto p = random_packing(box, rng);
+  double volume = 0.0;
+  for (const CgParticle& q : p) volume += q.volume;
+  const double nu = volume / (box * box * box);
+  std::printf("[cg] random packing: %zu spheres, volume fraction %.4f\n", p.size(), nu);
+  EXPECT_GT(nu, 0.28);
+  const CgGrid g = grid({0, 0, 0}, {box, box, box}, {18, 18, 18});  // points 2d apart
+  for (CgKernel k : kKernels) {
+    double previous_rms = 1.0;
     for (double wd : {2.0, 3.0, 4.0}) {
       const double w = wd * kD;
       const CgFields f = coarse_grain(g, k, w, p, {});
@@ -288,15 +335,17 @@ TEST(CoarseGrain, DensityOfRandomPacking) {
         sum2 += e * e;
         ++count;
       }
-      const double mean = sum / count, rms = std::sqrt(sum2 / count);
-      std::printf("[cg] random packing %-8s w=%.0fd: rho/(nu rho_p) - 1 over %d interior points: max %.2e, rms %.2e, "
-                  "mean %+.1e\n",
-                  name(k), wd, count, worst, rms, mean);
+      const double mean = sum / count, rms = std::sqrt(sum2 / count - mean * mean);
+      std::printf("[cg] random packing %-8s w=%.0fd: rho/(nu rho_p) - 1 over %d interior points: mean %+.1e, rms "
+                  "%.2e, max %.2e\n",
+                  name(k), wd, count, mean, rms, worst);
       EXPECT_GT(count, 100);
-      EXPECT_LT(worst, k == CgKernel::lucy && wd == 2.0 ? 0.02 : 0.01);
-      EXPECT_LT(std::abs(mean), 1e-3);
+      EXPECT_LT(std::abs(mean), 0.01);
       EXPECT_LT(worst_nu, 1e-12);
+      EXPECT_LT(rms, previous_rms);
+      previous_rms = rms;
     }
+  }
 }
 
 namespace {

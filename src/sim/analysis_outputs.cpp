@@ -2,8 +2,11 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
+#include <tuple>
 #include <unordered_map>
 
 #include "io/cg_writer.hpp"
@@ -11,6 +14,7 @@
 #include "io/csv_log.hpp"
 #include "io/output_manager.hpp"
 #include "io/pvd_index.hpp"
+#include "parallel/gather.hpp"
 #include "sim/contact_list.hpp"
 
 namespace mpdem {
@@ -19,41 +23,72 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The coarse-graining input of the owned particles and the listed contacts.
-void cg_input(const Particles& p, const std::vector<ContactEntry>& list, std::vector<CgParticle>& particles,
-              std::vector<CgContact>& contacts) {
+// The owned particles as coarse-graining input (contacts not yet counted) and their ids.
+void cg_particles(const Particles& p, std::vector<CgParticle>& particles, std::vector<std::int64_t>& ids) {
   const std::size_t n = p.size();
   particles.resize(n);
-  std::unordered_map<std::int64_t, std::size_t> index;  // id -> owned index (a ghost's second member)
-  index.reserve(n);
+  ids.assign(p.id.begin(), p.id.begin() + static_cast<std::ptrdiff_t>(n));
   for (std::size_t i = 0; i < n; ++i) {
     const double r = p.radius[i];
     particles[i] = {p.x[i], p.v[i], p.mass[i], 4.0 / 3.0 * std::numbers::pi * r * r * r, 0};
-    index.emplace(p.id[i], i);
   }
+}
+
+// The listed contacts' forces, and each particle's contact count; members found by id (ids [N]
+// of particles [N]; a periodic image or another rank's particle carries its source's id).
+void cg_contacts(std::span<const std::int64_t> ids, const std::vector<ContactEntry>& list,
+                 std::vector<CgParticle>& particles, std::vector<CgContact>& contacts) {
+  std::unordered_map<std::int64_t, std::size_t> index;  // id -> index
+  index.reserve(ids.size());
+  for (std::size_t i = 0; i < ids.size(); ++i) index.emplace(ids[i], i);
   contacts.clear();
   contacts.reserve(list.size());
   for (const ContactEntry& c : list) {
-    if (c.first_index >= n) continue;  // not an owned particle's contact
-    ++particles[c.first_index].contacts;
+    const auto first = index.find(c.first);
+    if (first == index.end()) continue;  // not a listed particle's contact
+    ++particles[first->second].contacts;
     if (c.second >= 0)
       if (const auto it = index.find(c.second); it != index.end()) ++particles[it->second].contacts;
-    contacts.push_back({c.first_index, c.normal_force + c.tangential_force, c.branch, c.element >= 0});
+    contacts.push_back({first->second, c.normal_force + c.tangential_force, c.branch, c.element >= 0});
   }
+}
+
+// Contact snapshot rows that do not depend on the rank count or the particle order: each pair
+// seen from its member of lower id, the rows by first id, then second id (pairs) or element id
+// (barrier contacts).
+void orient_and_sort(std::vector<ContactEntry>& list) {
+  for (ContactEntry& c : list)
+    if (c.second >= 0 && c.second < c.first) {
+      std::swap(c.first, c.second);
+      c.normal = -c.normal;
+      c.normal_force = -c.normal_force;
+      c.tangential_force = -c.tangential_force;
+      c.centre = c.centre - c.branch;  // the other's centre (its image across a periodic boundary)
+      c.branch = -c.branch;
+    }
+  std::stable_sort(list.begin(), list.end(), [](const ContactEntry& a, const ContactEntry& b) {
+    return std::tie(a.first, a.second, a.element) < std::tie(b.first, b.second, b.element);
+  });
 }
 
 }  // namespace
 
-AnalysisOutputs::AnalysisOutputs(const Model& model, fs::path dir, std::optional<double> resume_time)
-    : model_(model), dir_(std::move(dir)), resume_time_(resume_time) {
+AnalysisOutputs::AnalysisOutputs(const Model& model, fs::path dir, std::optional<double> resume_time,
+                                 const Communicator* comm)
+    : model_(model), comm_(comm), dir_(std::move(dir)), resume_time_(resume_time) {
   const Params& prm = model.params;
+  const bool files = writes();
   auto pvd = [&](const fs::path& f) {
+    if (!files) return std::unique_ptr<PvdIndex>();
     return resume_time ? std::make_unique<PvdIndex>(f, *resume_time) : std::make_unique<PvdIndex>(f);
   };
-  fs::create_directories(dir_);
-  if (prm.output.contacts_every > 0.0) {
-    fs::create_directories(dir_ / "contacts");
-    fs::create_directories(dir_ / "contacts_csv");
+  if (files) fs::create_directories(dir_);
+  contacts_on_ = prm.output.contacts_every > 0.0;
+  if (contacts_on_) {
+    if (files) {
+      fs::create_directories(dir_ / "contacts");
+      fs::create_directories(dir_ / "contacts_csv");
+    }
     contacts_pvd_ = pvd(dir_ / "contacts.pvd");
     contacts_next_ = prm.output.contacts_every;
   }
@@ -63,7 +98,10 @@ AnalysisOutputs::AnalysisOutputs(const Model& model, fs::path dir, std::optional
     Field f;
     f.next_sample = sample_time(c, 0, 0);
     fields_.push_back(std::move(f));
-    if (c.profile) {
+    if (!files) {
+      profile_csv_.emplace_back();
+      grid_pvd_.emplace_back();
+    } else if (c.profile) {
       const fs::path file = dir_ / (stem + ".csv");
       if (resume_time) keep_rows_until(file, *resume_time);
       profile_csv_.push_back(
@@ -80,6 +118,8 @@ AnalysisOutputs::AnalysisOutputs(const Model& model, fs::path dir, std::optional
 
 AnalysisOutputs::~AnalysisOutputs() = default;
 
+bool AnalysisOutputs::writes() const { return !comm_ || comm_->rank() == 0; }
+
 // s, sample `sample` of window `window`: the window ends at output (window + 1) * every and its
 // samples are spaced evenly, the last one at its end.
 double AnalysisOutputs::sample_time(const CoarseGrainSpec& c, std::uint64_t window, std::uint64_t sample) const {
@@ -91,7 +131,7 @@ double AnalysisOutputs::sample_time(const CoarseGrainSpec& c, std::uint64_t wind
 
 bool AnalysisOutputs::needs_contacts(double t_end, double dt, double end) const {
   const double slack = 0.5 * dt;
-  if (contacts_pvd_ && (t_end >= contacts_next_ - slack || t_end >= end - slack)) return true;
+  if (contacts_on_ && (t_end >= contacts_next_ - slack || t_end >= end - slack)) return true;
   for (const Field& f : fields_)
     if (t_end >= f.next_sample - slack) return true;
   return false;
@@ -103,29 +143,46 @@ void AnalysisOutputs::after_step(double t, double h, double end, const Particles
   // The run's last step writes a contact snapshot; a periodic one due within half a step before
   // it is left to it, so the end state is written once.
   const bool last = t >= end - 1e-9 * h;
-  const bool contacts_due = contacts_pvd_ && (last || (t >= contacts_next_ - slack && t < end - slack));
+  const bool contacts_due = contacts_on_ && (last || (t >= contacts_next_ - slack && t < end - slack));
   bool due = contacts_due;
   for (const Field& f : fields_) due = due || t >= f.next_sample - slack;
   if (!due) return;
-  const std::vector<ContactEntry> list = contact_list(p, b, in);
+  bool fields_due = false;
+  for (const Field& f : fields_) fields_due = fields_due || t >= f.next_sample - slack;
+  // This rank's contacts and particles; on several ranks, every rank's on rank 0 (in rank order).
+  std::vector<ContactEntry> list = contact_list(p, b, in);
+  std::vector<CgParticle> particles;
+  std::vector<std::int64_t> ids;
+  if (fields_due) cg_particles(p, particles, ids);
+  if (comm_ && comm_->size() > 1) {
+    list = gather_values<ContactEntry>(*comm_, list, 0);
+    if (fields_due) {
+      particles = gather_values<CgParticle>(*comm_, particles, 0);
+      ids = gather_values<std::int64_t>(*comm_, ids, 0);
+    }
+  }
+  const bool files = writes();
   const Params& prm = model_.params;
   if (contacts_due) {
     const std::string name = fmt::format("contacts/contacts_{:06d}.vtu", contact_snapshots_);
-    write_contacts_vtu(dir_ / name, list, t, prm.output.format);
-    write_contacts_csv(dir_ / fmt::format("contacts_csv/contacts_{:06d}.csv", contact_snapshots_), list, t);
-    contacts_pvd_->add(t, name);
+    if (files) {
+      std::vector<ContactEntry> rows = list;
+      orient_and_sort(rows);
+      write_contacts_vtu(dir_ / name, rows, t, prm.output.format);
+      write_contacts_csv(dir_ / fmt::format("contacts_csv/contacts_{:06d}.csv", contact_snapshots_), rows, t);
+      contacts_pvd_->add(t, name);
+    }
     ++contact_snapshots_;
     while (contacts_next_ <= t + slack)
       contacts_next_ = static_cast<double>(contact_snapshots_ + 1) * prm.output.contacts_every;
   }
-  std::vector<CgParticle> particles;
   std::vector<CgContact> contacts;
+  if (files && fields_due) cg_contacts(ids, list, particles, contacts);
   for (std::size_t k = 0; k < fields_.size(); ++k) {
     Field& f = fields_[k];
     const CoarseGrainSpec& c = prm.coarse_grain[k];
     if (t < f.next_sample - slack) continue;
-    if (particles.empty() && p.size() > 0) cg_input(p, list, particles, contacts);
-    f.average.add(coarse_grain(c.grid, c.kernel, c.width, particles, contacts));
+    if (files) f.average.add(coarse_grain(c.grid, c.kernel, c.width, particles, contacts));
     // The next sample: the first one after this step (a step longer than the spacing skips some).
     const std::uint64_t per_window = c.average > 0.0 ? static_cast<std::uint64_t>(c.samples) : 1;
     bool window_done = false;
@@ -138,7 +195,7 @@ void AnalysisOutputs::after_step(double t, double h, double end, const Particles
       f.next_sample = sample_time(c, f.outputs, f.sample);
     } while (f.next_sample <= t + slack && !window_done);
     if (window_done) {
-      write_field(k, t, f.average.mean());
+      if (files) write_field(k, t, f.average.mean());
       f.average.clear();
       while (f.next_sample <= t + slack) f.next_sample = sample_time(c, ++f.outputs, 0);
     }

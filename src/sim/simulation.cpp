@@ -331,11 +331,6 @@ void Simulation::start() {
   if (started_) return;
   const Params& prm = scene_.model.params;
   const bool out = options_.write_output;  // on every rank; rank 0 writes, the others their particle pieces
-  // Refused on every rank alike before any file is opened, so that all of them stop with one message.
-  if (out && comm_ && AnalysisOutputs::wanted(prm))
-    throw InputError(scene_.file.string(), 0, prm.coarse_grain.empty() ? "output.contacts_every" : "coarse_grain",
-                     "contact snapshots and coarse-grained fields are written by one-rank runs only so far "
-                     "(run without mpirun, or drop the key)");
   if (out && root()) {
     output_ = std::make_unique<OutputManager>(scene_.model, output_dir_for(scene_, options_), scene_.barriers,
                                               resumed_ ? std::optional<double>(time_) : std::nullopt,
@@ -345,9 +340,9 @@ void Simulation::start() {
       output_->restore(r);
     }
   }
-  if (out && root() && AnalysisOutputs::wanted(prm)) {
+  if (out && AnalysisOutputs::wanted(prm)) {  // on every rank: each sample gathers on rank 0
     analysis_ = std::make_unique<AnalysisOutputs>(scene_.model, output_dir_for(scene_, options_),
-                                                  resumed_ ? std::optional<double>(time_) : std::nullopt);
+                                                  resumed_ ? std::optional<double>(time_) : std::nullopt, comm_);
     if (!resume_analysis_state_.empty()) {
       BinaryReader r(resume_analysis_state_.data(), resume_analysis_state_.size());
       analysis_->restore(r);

@@ -62,10 +62,4 @@ check collision 1 "particles id 3 and id 4 (on rank $((NP - 1)) of $NP)" "$WORK/
 sed 's/^restitution = 0.5$/restitutoin = 0.5/' "$WORK/collision.toml" > "$WORK/misspelt.toml"
 check misspelt 2 "misspelt.toml:6" "$WORK/misspelt.toml"
 
-# Contact snapshots are one-rank only so far: refused on every rank before any file is written.
-sed 's/^dir = "out"$/dir = "out_contacts"\ncontacts_every = 0.0005/' "$WORK/collision.toml" > "$WORK/contacts.toml"
-check contacts 2 "'output.contacts_every': contact snapshots and coarse-grained fields are written by one-rank runs only" \
-  "$WORK/contacts.toml"
-if [ -e "$WORK/out_contacts" ]; then echo "FAIL contacts: the output folder was created"; fails=1; fi
-
 exit $fails

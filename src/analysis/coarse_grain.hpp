@@ -94,10 +94,11 @@ class CgAverage {
   // f(std::vector<T>&)), in a fixed order, so a caller can write them and read them back.
   template <class F>
   void visit_state(F&& f) {
-    f(samples_);
-    f(sum_.density), f(sum_.solid_fraction), f(sum_.number_density), f(sum_.momentum), f(sum_.velocity);
-    f(sum_.boundary_force_density), f(sum_.kinetic_stress), f(sum_.contact_stress), f(sum_.stress);
-    f(sum_.temperature), f(sum_.coordination), f(coordination_sum_), f(spread_);
+    visit(*this, f);
+  }
+  template <class F>
+  void visit_state(F&& f) const {  // f(const std::size_t&), f(const std::vector<T>&)
+    visit(*this, f);
   }
 
  private:
@@ -105,6 +106,14 @@ class CgAverage {
   CgFields sum_;                               // sums over samples of the primary fields
   std::vector<double> coordination_sum_;       // 1/m^3, Σ_samples Σ z phi
   std::vector<std::array<double, 9>> spread_;  // Pa, Σ_samples rho_s (V_s - <V>) ⊗ (V_s - <V>)
+
+  template <class Self, class F>
+  static void visit(Self& a, F& f) {
+    f(a.samples_);
+    f(a.sum_.density), f(a.sum_.solid_fraction), f(a.sum_.number_density), f(a.sum_.momentum), f(a.sum_.velocity);
+    f(a.sum_.boundary_force_density), f(a.sum_.kinetic_stress), f(a.sum_.contact_stress), f(a.sum_.stress);
+    f(a.sum_.temperature), f(a.sum_.coordination), f(a.coordination_sum_), f(a.spread_);
+  }
 };
 
 }  // namespace mpdem

@@ -154,12 +154,9 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
   if (barriers_pvd_ && due(barriers_vtu_, t, dt, end, force)) {
     const std::string name = fmt::format("barriers/barriers_{:06d}.vtu", barriers_vtu_.count - 1);
     if (means && vtu_means_.span() > 0.0) {
-      Barriers averaged = b;
-      BarrierLoads l = vtu_means_.mean(b);
-      averaged.force = std::move(l.force);
-      averaged.moment = std::move(l.moment);
-      averaged.pressure = std::move(l.pressure);
-      write_barriers_vtu(dir_ / name, averaged, t, model_.params.output.format);
+      const BarrierLoads l = vtu_means_.mean(b);
+      const ElementLoadView view{l.force, l.moment, l.pressure};
+      write_barriers_vtu(dir_ / name, b, t, model_.params.output.format, &view);
     } else {
       write_barriers_vtu(dir_ / name, b, t, model_.params.output.format);
     }

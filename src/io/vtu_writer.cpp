@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <ostream>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -121,16 +122,21 @@ void write_particles_vtu(const std::filesystem::path& file, const Particles& p, 
   write_file_atomically(file, [&](std::ostream& os) { d.write(os); });
 }
 
-void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, double time, VtkFormat format) {
+void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, double time, VtkFormat format,
+                        const ElementLoadView* loads) {
   const std::size_t m = b.size();
+  const ElementLoadView own{b.force, b.moment, b.pressure};
+  const ElementLoadView& l = loads ? *loads : own;
+  if (l.force.size() != m || l.moment.size() != m || l.pressure.size() != m)
+    throw std::invalid_argument("write_barriers_vtu: element loads of another size than the barriers");
   VtkXmlDocument d(format, "UnstructuredGrid");
   open_unstructured_piece(d, time, 3 * m, m, "group:", b.group_names);
   d.text("      <CellData Scalars=\"pressure\" Vectors=\"force\">\n");
-  d.array({"id", "Int64", 0}, std::span<const std::int64_t>(b.id));          // -
-  d.array({"group", "Int32", 0}, std::span<const std::int32_t>(b.group));    // index into group_names
-  d.array({"force", "Float64", 3}, std::span<const Vec3>(b.force));          // N
-  d.array({"moment", "Float64", 3}, std::span<const Vec3>(b.moment));        // N m, about the element centre
-  d.array({"pressure", "Float64", 0}, std::span<const double>(b.pressure));  // Pa
+  d.array({"id", "Int64", 0}, std::span<const std::int64_t>(b.id));        // -
+  d.array({"group", "Int32", 0}, std::span<const std::int32_t>(b.group));  // index into group_names
+  d.array({"force", "Float64", 3}, l.force);                               // N
+  d.array({"moment", "Float64", 3}, l.moment);                             // N m, about the element centre
+  d.array({"pressure", "Float64", 0}, l.pressure);                         // Pa
   // Elements with an activity window are all written (at their law's place); 0 marks the
   // switched-off ones, whose loads are zero.
   if (b.timed()) d.array({"active", "UInt8", 0}, std::span<const std::uint8_t>(b.active));

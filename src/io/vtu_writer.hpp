@@ -52,7 +52,13 @@ inline constexpr const char* kParticleActiveVectors = "velocity";
 // since elements may move with different laws). CellData: id, group, force, moment, pressure,
 // normal, velocity, and with activity windows active (1 on, 0 off). FieldData "TimeValue" = time (s),
 // "group:NAME" = group index.
+// loads: the element loads to write instead of the barriers' own (each span [M]; interval means).
+struct ElementLoadView {
+  std::span<const Vec3> force;       // N
+  std::span<const Vec3> moment;      // N m, about the element centre
+  std::span<const double> pressure;  // Pa
+};
 void write_barriers_vtu(const std::filesystem::path& file, const Barriers& barriers, double time,
-                        VtkFormat format = VtkFormat::Binary);
+                        VtkFormat format = VtkFormat::Binary, const ElementLoadView* loads = nullptr);
 
 }  // namespace mpdem

@@ -228,7 +228,7 @@ void AnalysisOutputs::save(BinaryWriter& w) const {
     w.value(f.outputs);
     w.value(f.sample);
     w.value(f.next_sample);
-    const_cast<CgAverage&>(f.average).visit_state([&](auto& v) {  // visit_state only reads here
+    f.average.visit_state([&](const auto& v) {
       if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::size_t>) w.value(static_cast<std::uint64_t>(v));
       else w.vector(v);
     });

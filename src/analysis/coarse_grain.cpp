@@ -114,6 +114,28 @@ void finish(CgFields& f, const std::vector<double>& coordination_sum) {
   }
 }
 
+// m, the image shifts a particle acts through: 0, then -L and +L along each periodic resolved
+// axis and their combinations (averaged axes integrate the whole extent and need none).
+std::vector<Vec3> image_shifts(const Layout& layout, const Vec3& period, double reach) {
+  std::vector<Vec3> shifts{Vec3{}};
+  for (int k = 0; k < 3; ++k) {
+    const double L = period[k];
+    if (!layout.axis[static_cast<std::size_t>(k)].resolved || !(L > 0.0)) continue;
+    // Images two periods away would reach the cell only if the cutoff exceeded a period.
+    if (!std::isfinite(L) || L < reach)
+      throw std::invalid_argument("coarse_grain: a period (" + std::to_string(L) +
+                                  " m) shorter than the kernel cutoff (" + std::to_string(reach) + " m)");
+    const std::size_t n = shifts.size();
+    for (double sign : {-1.0, 1.0})
+      for (std::size_t j = 0; j < n; ++j) {
+        Vec3 s = shifts[j];
+        s[k] += sign * L;
+        shifts.push_back(s);
+      }
+  }
+  return shifts;
+}
+
 }  // namespace
 
 void cg_validate(const CgGrid& g) {
@@ -153,10 +175,11 @@ Vec3 cg_point(const CgGrid& g, std::size_t index) {
 }
 
 CgFields coarse_grain(const CgGrid& grid, CgKernel kernel, double width, std::span<const CgParticle> particles,
-                      std::span<const CgContact> contacts) {
+                      std::span<const CgContact> contacts, const Vec3& period) {
   const Layout layout(grid);
   const CgKernelFunction phi(kernel, width, layout.dims);
-  const double reach = phi.cutoff();  // m
+  const double reach = phi.cutoff();                                     // m
+  const std::vector<Vec3> shifts = image_shifts(layout, period, reach);  // m, {0} first
   const double ie = layout.inv_extent;
   CgFields f;
   allocate(f, layout.points);
@@ -168,15 +191,18 @@ CgFields coarse_grain(const CgGrid& grid, CgKernel kernel, double width, std::sp
     const Vec3 x = layout.mask(p.x);
     const double m = p.mass * ie, vol = p.volume * ie, z = p.contacts * ie;
     const Vec3 mv = p.v * m;
-    layout.for_each_near(x, x, reach, [&](std::size_t k, const Vec3& r) {
-      const double w = phi(norm2(r - x));
-      if (w == 0.0) return;
-      f.density[k] += m * w;
-      f.solid_fraction[k] += vol * w;
-      f.number_density[k] += ie * w;
-      coordination_sum[k] += z * w;
-      f.momentum[k] += mv * w;
-    });
+    for (const Vec3& s : shifts) {
+      const Vec3 xs = x + s;
+      layout.for_each_near(xs, xs, reach, [&](std::size_t k, const Vec3& r) {
+        const double w = phi(norm2(r - xs));
+        if (w == 0.0) return;
+        f.density[k] += m * w;
+        f.solid_fraction[k] += vol * w;
+        f.number_density[k] += ie * w;
+        coordination_sum[k] += z * w;
+        f.momentum[k] += mv * w;
+      });
+    }
   }
   derive_velocity(f);
 
@@ -185,12 +211,15 @@ CgFields coarse_grain(const CgGrid& grid, CgKernel kernel, double width, std::sp
   for (const CgParticle& p : particles) {
     const Vec3 x = layout.mask(p.x);
     const double m = p.mass * ie;
-    layout.for_each_near(x, x, reach, [&](std::size_t k, const Vec3& r) {
-      const double w = phi(norm2(r - x));
-      if (w == 0.0) return;
-      const Vec3 dv = p.v - f.velocity[k];
-      add_outer(f.kinetic_stress[k], dv, dv, m * w);
-    });
+    for (const Vec3& s : shifts) {
+      const Vec3 xs = x + s;
+      layout.for_each_near(xs, xs, reach, [&](std::size_t k, const Vec3& r) {
+        const double w = phi(norm2(r - xs));
+        if (w == 0.0) return;
+        const Vec3 dv = p.v - f.velocity[k];
+        add_outer(f.kinetic_stress[k], dv, dv, m * w);
+      });
+    }
   }
 
   // Contacts: f ⊗ b spread along the branch from x_i (s = 0) to x_i - b (s = 1): the other
@@ -207,15 +236,16 @@ CgFields coarse_grain(const CgGrid& grid, CgKernel kernel, double width, std::sp
     Tensor fb{};  // Pa m^d, f ⊗ b (full 3-D vectors) per unit averaged extent
     add_outer(fb, c.force, c.branch, ie);
     const Vec3 t = c.force * ie;
-    layout.for_each_near(lo, hi, reach, [&](std::size_t k, const Vec3& r) {
-      const Vec3 a = r - x;
-      const double w = phi.line_integral(a, b);
-      if (w != 0.0)
-        for (std::size_t q = 0; q < 9; ++q) f.contact_stress[k][q] += w * fb[q];
-      // The barrier's force density, applied at the contact point: it closes the momentum
-      // balance within a kernel width of the wall (Weinhart et al. 2012, boundary term).
-      if (c.boundary) f.boundary_force_density[k] += t * phi(norm2(a + b));
-    });
+    for (const Vec3& s : shifts)
+      layout.for_each_near(lo + s, hi + s, reach, [&](std::size_t k, const Vec3& r) {
+        const Vec3 a = r - x - s;
+        const double w = phi.line_integral(a, b);
+        if (w != 0.0)
+          for (std::size_t q = 0; q < 9; ++q) f.contact_stress[k][q] += w * fb[q];
+        // The barrier's force density, applied at the contact point: it closes the momentum
+        // balance within a kernel width of the wall (Weinhart et al. 2012, boundary term).
+        if (c.boundary) f.boundary_force_density[k] += t * phi(norm2(a + b));
+      });
   }
   finish(f, coordination_sum);
   return f;

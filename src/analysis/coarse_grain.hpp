@@ -75,8 +75,12 @@ struct CgFields {
 // points within the kernel's cutoff of it (of its branch segment for a contact). Throws
 // std::invalid_argument for an invalid grid/width or a non-finite position or branch, and
 // std::out_of_range for a contact index >= particles.size().
+// period: m, the periodic cell's length along each periodic axis (0: not periodic). Along a
+// periodic resolved axis particles and branches also act through their images one period either
+// side, so points near a periodic face see the particles across it (the grid should lie within
+// the cell; throws std::invalid_argument when a period is shorter than the kernel cutoff).
 CgFields coarse_grain(const CgGrid& grid, CgKernel kernel, double width, std::span<const CgParticle> particles,
-                      std::span<const CgContact> contacts);
+                      std::span<const CgContact> contacts, const Vec3& period = {});
 
 // Time average of snapshots on one grid. Averages the primary sums (rho, nu, n, p, t, the contact
 // stress, Σ z phi) and derives V = <p>/<rho>, Z = <Σ z phi>/<n>, T and the stress from them. The

@@ -1,7 +1,10 @@
 #include "io/coarse_grain_reader.hpp"
 
+#include <fmt/core.h>
+
 #include <string>
 
+#include "analysis/cg_kernel.hpp"
 #include "io/input_error.hpp"
 
 namespace mpdem {
@@ -88,6 +91,15 @@ void read_coarse_grain(const TomlSection& root, Model& model) {
       else s.fail("kernel", "expected \"gaussian\" or \"lucy\", got \"" + *k + "\"");
     }
     c.width = s.require(s.number("width", kPositive), "width");
+    // Along a periodic resolved axis the kernel reaches through one image either side only.
+    const DomainParams& d = model.params.domain;
+    for (int k = 0; k < 3; ++k) {
+      const double period = d.max[k] - d.min[k], cutoff = cg_cutoff(c.kernel, c.width);
+      if (d.periodic[static_cast<std::size_t>(k)] && c.grid.resolved[static_cast<std::size_t>(k)] && period < cutoff)
+        s.fail("width", fmt::format("the kernel's cutoff {:.6g} m (width {:.6g} m) exceeds the period {:.6g} m along "
+                                    "the periodic axis {}; use a smaller width or average over that axis",
+                                    cutoff, c.width, period, kAxes[k]));
+    }
     c.every = s.require(s.number("every", kPositive), "every");
     s.get("average", c.average, kNonNegative);
     if (c.average > c.every) s.fail("average", "expected a window no longer than every (the windows would overlap)");

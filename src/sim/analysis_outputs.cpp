@@ -14,6 +14,7 @@
 #include "io/csv_log.hpp"
 #include "io/output_manager.hpp"
 #include "io/pvd_index.hpp"
+#include "neighbor/periodic_images.hpp"
 #include "parallel/gather.hpp"
 #include "sim/contact_list.hpp"
 
@@ -75,7 +76,8 @@ void orient_and_sort(std::vector<ContactEntry>& list) {
 
 AnalysisOutputs::AnalysisOutputs(const Model& model, fs::path dir, std::optional<double> resume_time,
                                  const Communicator* comm)
-    : model_(model), comm_(comm), dir_(std::move(dir)), resume_time_(resume_time) {
+    : model_(model), comm_(comm), dir_(std::move(dir)), resume_time_(resume_time),
+      period_(PeriodicImages(model.params.domain).period()) {
   const Params& prm = model.params;
   const bool files = writes();
   auto pvd = [&](const fs::path& f) {
@@ -182,7 +184,7 @@ void AnalysisOutputs::after_step(double t, double h, double end, const Particles
     Field& f = fields_[k];
     const CoarseGrainSpec& c = prm.coarse_grain[k];
     if (t < f.next_sample - slack) continue;
-    if (files) f.average.add(coarse_grain(c.grid, c.kernel, c.width, particles, contacts));
+    if (files) f.average.add(coarse_grain(c.grid, c.kernel, c.width, particles, contacts, period_));
     // The next sample: the first one after this step (a step longer than the spacing skips some).
     const std::uint64_t per_window = c.average > 0.0 ? static_cast<std::uint64_t>(c.samples) : 1;
     bool window_done = false;

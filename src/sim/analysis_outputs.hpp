@@ -61,6 +61,7 @@ class AnalysisOutputs {
   const Communicator* comm_;  // null: one rank
   std::filesystem::path dir_;
   std::optional<double> resume_time_;
+  Vec3 period_;                          // m, the periodic cell's length along periodic axes (0 elsewhere)
   bool contacts_on_ = false;             // [output] contacts_every > 0
   double contacts_next_ = 0.0;           // s
   std::uint64_t contact_snapshots_ = 0;  // written so far

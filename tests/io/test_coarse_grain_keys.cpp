@@ -155,3 +155,29 @@ every = 0.1
   EXPECT_EQ(g.max, (Vec3{0.1, 1.0, 2.0}));
   EXPECT_EQ(g.cells, (std::array<int, 3>{4, 1, 1}));
 }
+
+// Along a periodic axis the kernel reaches one image either side: a cutoff longer than the period
+// is refused when the axis is resolved, and allowed when it is averaged.
+TEST(CoarseGrainKeys, PeriodicAxisNeedsACutoffWithinThePeriod) {
+  TempDir d("mpdem_cg_keys");
+  const std::string head = R"([time]
+duration = 1.0
+dt = 1e-5
+[domain]
+min = [0.0, 0.0, 0.0]
+max = [0.004, 0.03, 0.1]
+periodic = ["x"]
+[[coarse_grain]]
+)";
+  const std::string grid = "grid = { min = [0.0, 0.0, 0.0], max = [0.004, 0.03, 0.1], cells = [4, 3, 10] }\n";
+  const std::string msg = test::error_of(
+      [&] { parse_scene_file(d.write("s.toml", head + grid + "width = 0.002\nevery = 0.1\n")); });
+  EXPECT_NE(msg.find("coarse_grain.width"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("exceeds the period 0.004 m along the periodic axis x"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("s.toml:10"), std::string::npos) << msg;
+  // Cutoff 3 mm < 4 mm: accepted; averaged over x: any width.
+  EXPECT_NO_THROW(parse_scene_file(d.write("t.toml", head + grid + "width = 0.001\nevery = 0.1\n")));
+  const std::string slabs = "grid = { min = [0.0, 0.0, 0.0], max = [0.004, 0.03, 0.1], cells = [1, 3, 10], "
+                            "average_over = [\"x\"] }\n";
+  EXPECT_NO_THROW(parse_scene_file(d.write("u.toml", head + slabs + "width = 0.002\nevery = 0.1\n")));
+}

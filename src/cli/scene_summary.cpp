@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <vector>
 
+#include "contact/contact_table.hpp"
 #include "physics/barrier_moduli.hpp"
 #include "physics/time_step_estimate.hpp"
 
@@ -17,6 +19,16 @@ std::string speed_text(const TimeStepAdvice& a) {
     return fmt::format("{:.3g} m/s (the floor; expected impacts are slower)", a.reference_speed);
   return fmt::format("{:.3g} m/s (expected impact speed: {})", a.reference_speed, a.impact.origin());
 }
+std::string rayleigh_text(const TimeStepAdvice& a) {
+  return a.hertz ? fmt::format("Rayleigh time {:.4g} s", a.rayleigh)
+                 : std::string("Rayleigh time not used (no Hertz contact)");
+}
+// Which contact times: Hertz at the reference speed, linear pi sqrt(m*/k_n), or both.
+std::string contact_text(const TimeStepAdvice& a) {
+  if (!a.linear) return "Hertz contact time at " + speed_text(a);
+  if (!a.hertz) return "linear-law contact time pi sqrt(m*/k_n)";
+  return "contact time (Hertz at " + speed_text(a) + ", linear pi sqrt(m*/k_n))";
+}
 }  // namespace
 
 TimeStepAdvice time_step_advice(const Scene& scene) {
@@ -27,43 +39,73 @@ TimeStepAdvice time_step_advice(const Scene& scene) {
   // A floor for scenes with little motion: slower impacts last longer.
   a.reference_speed = std::max(a.impact.speed, 1.0);
   const double inf = std::numeric_limits<double>::infinity();
-  a.rayleigh = a.hertz_pp = inf;
-  double hertz_pb = inf;
+  double rayleigh = inf, pp = inf, pb = inf;
   double stiffest_barrier = 0.0, stiffest_nu = 0.0;
-  for (std::size_t e = 0; e < b.size(); ++e)
+  std::vector<int> barrier_materials;  // distinct, >= 0
+  for (std::size_t e = 0; e < b.size(); ++e) {
     if (b.young[e] > stiffest_barrier) {
       stiffest_barrier = b.young[e];
       stiffest_nu = b.poisson[e];
     }
-  // One sphere of radius r (m), mass (kg) and material m: the smallest Rayleigh and contact times.
+    if (b.material[e] >= 0 &&
+        std::find(barrier_materials.begin(), barrier_materials.end(), b.material[e]) == barrier_materials.end())
+      barrier_materials.push_back(b.material[e]);
+  }
+  ContactTable table;  // the laws the run's kernels will use
+  table.build(scene.model);
+  // One sphere of radius r (m) and mass (kg) of material k: its contact times with an equal
+  // sphere and with the barriers, by the law of each pair, and its Rayleigh time if a Hertz law
+  // (the only one that uses the material's E) acts on it.
   bool any = false;
-  const auto take = [&](double r, double mass, const Material& m) {
+  const auto take = [&](double r, double mass, std::size_t k) {
     any = true;
-    a.rayleigh = std::min(a.rayleigh, rayleigh_time(r, m.density, m.young, m.poisson));
-    const double Epp = effective_modulus(m.young, m.poisson, m.young, m.poisson);
-    a.hertz_pp = std::min(a.hertz_pp, hertz_contact_time(0.5 * mass, Epp, 0.5 * r, a.reference_speed));
+    const Material& m = scene.model.materials[k];
+    bool hertz = false;
+    const PairLaw& law = table.particle_pair(k, k);
+    if (law.law == ContactLawKind::Linear) {
+      a.linear = true;
+      pp = std::min(pp, linear_contact_time(0.5 * mass, law.cn));
+    } else {
+      hertz = true;
+      const double Epp = effective_modulus(m.young, m.poisson, m.young, m.poisson);
+      pp = std::min(pp, hertz_contact_time(0.5 * mass, Epp, 0.5 * r, a.reference_speed));
+    }
     if (stiffest_barrier > 0.0) {
-      // A rigid barrier (E = +inf) is the stiffest; E* is then the particle's E/(1 - nu^2).
-      const double Epb = barrier_effective_modulus(m.young, m.poisson, stiffest_barrier, stiffest_nu);
-      hertz_pb = std::min(hertz_pb, hertz_contact_time(mass, Epb, r, a.reference_speed));
+      bool barrier_hertz = barrier_materials.empty();
+      for (const int bm : barrier_materials) {
+        const PairLaw& bl = table.barrier_pair(k, static_cast<std::size_t>(bm));
+        if (bl.law == ContactLawKind::Linear) {
+          a.linear = true;
+          pb = std::min(pb, linear_contact_time(mass, bl.cn));
+        } else {
+          barrier_hertz = true;
+        }
+      }
+      if (barrier_hertz) {
+        // A rigid barrier (E = +inf) is the stiffest; E* is then the particle's E/(1 - nu^2).
+        hertz = true;
+        const double Epb = barrier_effective_modulus(m.young, m.poisson, stiffest_barrier, stiffest_nu);
+        pb = std::min(pb, hertz_contact_time(mass, Epb, r, a.reference_speed));
+      }
+    }
+    if (hertz) {
+      a.hertz = true;
+      rayleigh = std::min(rayleigh, rayleigh_time(r, m.density, m.young, m.poisson));
     }
   };
-  for (std::size_t i = 0; i < p.size(); ++i)
-    take(p.radius[i], p.mass[i], scene.model.materials[static_cast<std::size_t>(p.material[i])]);
+  for (std::size_t i = 0; i < p.size(); ++i) take(p.radius[i], p.mass[i], static_cast<std::size_t>(p.material[i]));
   // The inlets' smallest particles (a silo filled from empty has none at t = 0).
   for (const InletSpec& in : scene.model.params.inlets) {
     const int k = in.material.empty() ? 0 : scene.model.material_index(in.material);
     const double r = in.radius.smallest();
     if (k < 0 || static_cast<std::size_t>(k) >= scene.model.materials.size() || !(r > 0.0)) continue;
-    const Material& m = scene.model.materials[static_cast<std::size_t>(k)];
-    take(r, sphere_mass(r, m.density), m);
+    take(r, sphere_mass(r, scene.model.materials[static_cast<std::size_t>(k)].density), static_cast<std::size_t>(k));
   }
-  a.hertz_pb = std::isfinite(hertz_pb) ? hertz_pb : 0.0;
-  if (!any) {
-    a.rayleigh = a.hertz_pp = 0.0;
-    return a;
-  }
-  a.recommended = std::min(0.2 * a.rayleigh, std::min(a.hertz_pp, hertz_pb) / 50.0);
+  if (!any) return a;
+  a.rayleigh = std::isfinite(rayleigh) ? rayleigh : 0.0;
+  a.contact_pp = pp;
+  a.contact_pb = std::isfinite(pb) ? pb : 0.0;
+  a.recommended = std::min(std::isfinite(rayleigh) ? 0.2 * rayleigh : inf, std::min(pp, pb) / 50.0);
   return a;
 }
 
@@ -102,20 +144,20 @@ void print_summary(const Scene& scene) {
              prm.time.integrator == Integrator::Verlet ? "verlet" : "trapezoidal", prm.time.phi, prm.time.dt,
              prm.time.duration, std::ceil(prm.time.duration / prm.time.dt));
   const TimeStepAdvice a = time_step_advice(scene);
-  fmt::print("time step: Rayleigh time {:.4g} s; Hertz contact time at {}: particle-particle {:.4g} s", a.rayleigh,
-             speed_text(a), a.hertz_pp);
-  if (a.hertz_pb > 0.0) fmt::print(", particle-barrier {:.4g} s", a.hertz_pb);
-  fmt::print("\nrecommended dt <= {:.4g} s (min of 0.2 x Rayleigh time and contact time / 50)\n", a.recommended);
+  fmt::print("time step: {}; {}: particle-particle {:.4g} s", rayleigh_text(a), contact_text(a), a.contact_pp);
+  if (a.contact_pb > 0.0) fmt::print(", particle-barrier {:.4g} s", a.contact_pb);
+  fmt::print("\nrecommended dt <= {:.4g} s ({})\n", a.recommended,
+             a.hertz ? "min of 0.2 x Rayleigh time and contact time / 50" : "contact time / 50");
 }
 
 void warn_about_time_step(const Scene& scene) {
   const TimeStepAdvice a = time_step_advice(scene);
   if (a.recommended > 0.0 && scene.model.params.time.dt > a.recommended)
     fmt::print(stderr,
-               "warning: time.dt = {:.4g} s exceeds the recommended {:.4g} s (0.2 x Rayleigh time {:.4g} s, Hertz "
-               "contact time {:.4g} s at {} / 50); contacts may be under-resolved\n",
-               scene.model.params.time.dt, a.recommended, a.rayleigh,
-               std::min(a.hertz_pp, a.hertz_pb > 0 ? a.hertz_pb : a.hertz_pp), speed_text(a));
+               "warning: time.dt = {:.4g} s exceeds the recommended {:.4g} s ({}{} {:.4g} s / 50); contacts may be "
+               "under-resolved\n",
+               scene.model.params.time.dt, a.recommended, a.hertz ? rayleigh_text(a) + " x 0.2, " : "", contact_text(a),
+               std::min(a.contact_pp, a.contact_pb > 0 ? a.contact_pb : a.contact_pp));
 }
 
 std::size_t print_problems(const SceneProblems& problems, bool for_run) {

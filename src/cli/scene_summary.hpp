@@ -8,12 +8,14 @@
 namespace mpdem::cli {
 
 struct TimeStepAdvice {
-  double rayleigh = 0.0;         // s, smallest Rayleigh time over the particles
-  double hertz_pp = 0.0;         // s, shortest particle-particle Hertz contact at the reference speed
-  double hertz_pb = 0.0;         // s, shortest particle-barrier Hertz contact (0 without barriers)
+  double rayleigh = 0.0;         // s, smallest Rayleigh time over the particles under a Hertz law (0: none)
+  double contact_pp = 0.0;       // s, shortest particle-particle contact (0 without particles)
+  double contact_pb = 0.0;       // s, shortest particle-barrier contact (0 without barriers)
+  bool hertz = false;            // some contact uses the Hertz law: its time at the reference speed
+  bool linear = false;           // some contact uses the linear law: pi sqrt(m*/k_n), any speed
   double reference_speed = 0.0;  // m/s, max(expected impact speed, 1 m/s)
   ImpactSpeed impact;            // the expected impact speed and what sets it
-  double recommended = 0.0;      // s, min(0.2 rayleigh, hertz / 50)
+  double recommended = 0.0;      // s, min(0.2 rayleigh, contact / 50)
 };
 
 TimeStepAdvice time_step_advice(const Scene& scene);

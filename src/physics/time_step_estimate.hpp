@@ -22,6 +22,10 @@ inline double hertz_peak_overlap(double m_eff, double E_eff, double r_eff, doubl
 //   delta_max = v sqrt(m* / k)   [m]
 inline double linear_peak_overlap(double m_eff, double k, double v) { return v * std::sqrt(m_eff / k); }
 
+// Duration of an undamped linear-spring impact (stiffness k, N/m; any speed):
+//   t_c = pi sqrt(m* / k)   [s]   (damping lengthens it by 1/sqrt(1 - xi^2))
+inline double linear_contact_time(double m_eff, double k) { return std::numbers::pi * std::sqrt(m_eff / k); }
+
 // Duration of an elastic Hertz impact at normal speed v:
 //   t_c = 2.943275 delta_max / v   [s]
 // (2.943275 = 2 integral_0^1 dx / sqrt(1 - x^(5/2)) = 0.8 B(2/5, 1/2), from energy

@@ -1,8 +1,10 @@
 // `mpdem check` reports every problem it finds before step 1, each with file and line or ids
 // (exit 2 on errors, 0 with warnings only); `mpdem run` refuses a start that would stop at step 1
 // and warns about the rest.
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "support/run_command.hpp"
@@ -128,4 +130,28 @@ TEST(CheckCommand, InletOnlySceneRecommendsAStepFromTheInletParticles) {
   // 0.2 x the Rayleigh time of a 2.5 mm bead of E = 2e6 Pa (4.8e-4 s): 9.7e-5 s, or less.
   EXPECT_GT(dt, 1e-6) << r.out;
   EXPECT_LT(dt, 1e-4) << r.out;
+}
+
+// Under the linear law the recommended step is the linear contact time pi sqrt(m*/k_n) / 50, for
+// two equal spheres (m* = m/2) and a sphere on the floor (m* = m), whatever the unused Young's
+// modulus; the Rayleigh time (from E) is not used.
+TEST(CheckCommand, LinearLawRecommendsFromTheLinearContactTime) {
+  const fs::path d = scene_dir("check_linear", "x,y,z,radius\n0,0,0.002,0.001\n0.01,0,0.002,0.001\n");
+  const std::string law = "[contact.particle_particle]\nlaw = \"linear\"\nstiffness_normal = 200.0\n"
+                          "[contact.particle_barrier]\nlaw = \"linear\"\nstiffness_normal = 400.0\n";
+  const double m = 2500.0 * 4.0 / 3.0 * M_PI * 1e-9;  // kg, default density 2500 kg/m^3
+  const double pp = M_PI * std::sqrt(0.5 * m / 200.0), pb = M_PI * std::sqrt(m / 400.0);  // s
+  for (const char* young : {"1e6", "1e9"}) {
+    write_text(d / "scene.toml", scene(young, law));
+    const CommandResult r = run_mpdem("check scene.toml", d);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("Rayleigh time not used"), std::string::npos) << r.out;
+    const auto at = r.out.find("recommended dt <= ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const double dt = std::stod(r.out.substr(at + 18));
+    EXPECT_NEAR(dt, std::min(pp, pb) / 50.0, 1e-3 * dt) << r.out;  // printed to 4 digits
+    EXPECT_NE(r.out.find(fmt::format("particle-particle {:.4g} s, particle-barrier {:.4g} s", pp, pb)),
+              std::string::npos)
+        << r.out;
+  }
 }

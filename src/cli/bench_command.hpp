@@ -16,6 +16,11 @@ struct BenchArgs {
   long relax = 1000;                  // untimed steps before the timed window
   double dt = 4e-6;                   // s
   double skin = 2e-4;                 // m, Verlet skin
+  // Output cost: empty, no files (steps via Simulation::advance); else a fresh or empty folder the
+  // run writes to as `mpdem run` would (steps via Simulation::step: global log rows, snapshots).
+  std::filesystem::path output;
+  long snapshot_every = 0;        // steps between particle VTU snapshots (0: none; needs output)
+  std::string format = "binary";  // their VTK format: "ascii", "binary" or "compressed"
 };
 
 // Runs the benchmark and prints the results on stdout (a human-readable block and one

@@ -1,6 +1,7 @@
 // `mpdem bench`: the settled-bed benchmark driver (docs/benchmark.md). The scene is the one of the
 // shared bench README, identical to the LIGGGHTS input liggghts_bench.in. Under mpirun the bed is
 // decomposed over the ranks like any run (docs/parallel.md); rank 0 reports the job's totals.
+// With --output the steps are whole run steps writing their files (output cost, docs/benchmark.md).
 #include <fmt/core.h>
 #include <omp.h>
 #include <sys/resource.h>
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "cli/bench_command.hpp"
@@ -59,6 +61,13 @@ void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
   prm.analysis.rotation = true;
   prm.analysis.thermal = false;
   prm.neighbor.skin = a.skin;
+  if (!a.output.empty()) {
+    prm.output.particles_every = a.dt * static_cast<double>(a.snapshot_every);
+    prm.output.format = a.format == "ascii"        ? VtkFormat::Ascii
+                        : a.format == "compressed" ? VtkFormat::Compressed
+                                                   : VtkFormat::Binary;
+    prm.output.progress_every = 0.0;
+  }
   Material m;
   m.name = "bed";
   m.young = kYoung;
@@ -113,6 +122,11 @@ int bench_command(const BenchArgs& args) {
   if (args.threads < 1) throw InputError("", 0, "--threads", "expected >= 1");
   if (!(args.dt > 0.0) || !(args.skin >= 0.0) || args.relax < 0 || args.steps < 0)
     throw InputError("", 0, "--dt/--skin/--relax/--steps", "expected dt > 0, skin >= 0, relax >= 0, steps >= 0");
+  if (args.snapshot_every > 0 && args.output.empty())
+    throw InputError("", 0, "--snapshot-every", "snapshots need --output FOLDER");
+  if (std::error_code ec;
+      !args.output.empty() && std::filesystem::exists(args.output, ec) && !std::filesystem::is_empty(args.output, ec))
+    throw InputError(args.output.string(), 0, "--output", "the bench writes only into a fresh or empty folder");
   omp_set_num_threads(args.threads);
 
   BenchArgs a = args;
@@ -125,15 +139,25 @@ int bench_command(const BenchArgs& args) {
   const std::size_t n = scene.particles.size();
 
   const Communicator& comm = Communicator::world();
-  Simulation sim(std::move(scene), RunOptions{{}, false, false, &comm});
-  for (long k = 0; k < a.relax; ++k) sim.advance(a.dt);
+  const bool files = !a.output.empty();
+  Simulation sim(std::move(scene), RunOptions{a.output, false, files, &comm});
+  const double end = a.dt * static_cast<double>(a.relax + a.steps);  // s
+  // One step: with files the whole step of a run (outputs included), else the evaluation and
+  // integration alone. Returns its force evaluations.
+  const auto step = [&] {
+    if (!files) return static_cast<std::uint64_t>(sim.advance(a.dt).evaluations);
+    const std::uint64_t before = sim.evaluations();
+    sim.step(end);
+    return sim.evaluations() - before;
+  };
+  for (long k = 0; k < a.relax; ++k) step();
 
   const std::uint64_t rebuilds0 = sim.interactions().stats().rebuilds;
   const PhaseTimes times0 = sim.interactions().times();
   std::uint64_t evaluations = 0;
   comm.barrier();  // every rank starts the timed steps together; the slowest one's time counts
   const auto t0 = std::chrono::steady_clock::now();
-  for (long k = 0; k < a.steps; ++k) evaluations += static_cast<std::uint64_t>(sim.advance(a.dt).evaluations);
+  for (long k = 0; k < a.steps; ++k) evaluations += step();
   const auto t1 = std::chrono::steady_clock::now();
   const PhaseTimes& times1 = sim.interactions().times();
 

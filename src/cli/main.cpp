@@ -7,6 +7,7 @@
 
 #include "cli/bench_command.hpp"
 #include "cli/commands.hpp"
+#include "cli/openmp_environment.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/run_paths.hpp"
 #include "cli/tool_commands.hpp"
@@ -54,6 +55,11 @@ int dispatch(int argc, char** argv) {
   bench_cmd->add_option("--relax", bench.relax, "untimed steps first")->check(CLI::NonNegativeNumber);
   bench_cmd->add_option("--dt", bench.dt, "time step [s]")->check(CLI::PositiveNumber);
   bench_cmd->add_option("--skin", bench.skin, "Verlet skin [m]")->check(CLI::NonNegativeNumber);
+  bench_cmd->add_option("--output", bench.output, "write the run's files there (a fresh or empty folder)");
+  bench_cmd->add_option("--snapshot-every", bench.snapshot_every, "steps between particle VTU snapshots (0: none)")
+      ->check(CLI::NonNegativeNumber);
+  bench_cmd->add_option("--format", bench.format, "VTK format of the snapshots")
+      ->check(CLI::IsMember({"ascii", "binary", "compressed"}));
 
   mpdem::cli::ToolAction tool;  // set by `generate` / `mesh` when selected
   mpdem::cli::add_generate_command(app, tool);
@@ -118,6 +124,7 @@ int dispatch(int argc, char** argv) {
 // Nothing escapes: setting up the command line or reporting an error may itself throw (out of
 // memory, a closed stderr); the exit status then still says "failed".
 int main(int argc, char** argv) {
+  mpdem::cli::apply_openmp_defaults(argv);  // first: it may re-execute the program
   try {
     const mpdem::MpiSession mpi(argc, argv);
     return dispatch(argc, argv);

@@ -34,7 +34,8 @@ std::filesystem::path temporary_path_for(const std::filesystem::path& path) {
   return tmp;
 }
 
-void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body) {
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body,
+                           Durability durability) {
   const std::filesystem::path tmp = temporary_path_for(path);
   auto discard = [&tmp] {
     std::error_code ec;
@@ -58,7 +59,7 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
       fail(path, "write error (disk full?)");
     }
   }
-  sync_file(tmp);
+  if (durability == Durability::power_loss) sync_file(tmp);
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   if (ec) {

@@ -14,11 +14,17 @@ namespace mpdem {
 // Name of the temporary file used while writing `path`: "<path>.tmp-<pid>" in the same folder.
 std::filesystem::path temporary_path_for(const std::filesystem::path& path);
 
-// Calls body(stream) on "<path>.tmp-<pid>", flushes and syncs it, checks the stream state, then
-// renames it onto `path`. Throws std::runtime_error naming `path` if the file cannot be written;
-// if body throws, its exception propagates. In both cases the temporary file is removed and any
-// previous file at `path` is left untouched.
-void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body);
+// What a written file must survive. Both survive a killed run (the rename is atomic); only
+// `power_loss` forces the data to disk first (fsync, milliseconds per file): checkpoints, which
+// a resume depends on. Snapshots and indexes a run rewrites or adds to need only `kill`.
+enum class Durability { power_loss, kill };
+
+// Calls body(stream) on "<path>.tmp-<pid>", flushes it (and syncs it to disk for power_loss),
+// checks the stream state, then renames it onto `path`. Throws std::runtime_error naming `path`
+// if the file cannot be written; if body throws, its exception propagates. In both cases the
+// temporary file is removed and any previous file at `path` is left untouched.
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body,
+                           Durability durability = Durability::power_loss);
 
 // Appends `text` (expected to end in '\n') to `path`, creating the file if needed. The text is
 // written with a single O_APPEND write loop and the descriptor closed before returning.

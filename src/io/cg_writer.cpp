@@ -51,7 +51,8 @@ void write_cg_vti(const std::filesystem::path& file, const CgGrid& g, const CgFi
   d.array({"coordination", "Float64", 0}, std::span<const double>(f.coordination));                    // -
   d.array({"boundary_force_density", "Float64", 3}, std::span<const Vec3>(f.boundary_force_density));  // N/m^3
   d.text("      </PointData>\n      <CellData>\n      </CellData>\n    </Piece>\n  </ImageData>\n");
-  write_file_atomically(file, [&](std::ostream& os) { d.write(os); });
+  write_file_atomically(
+      file, [&](std::ostream& os) { d.write(os); }, Durability::kill);
 }
 
 std::vector<std::string> cg_profile_columns(int axis) {

@@ -57,43 +57,47 @@ void write_contacts_vtu(const std::filesystem::path& file, std::span<const Conta
   d.text("      </Points>\n");
   separate_cells(d, n, 2, kVtkLine);
   close_unstructured_piece(d);
-  write_file_atomically(file, [&](std::ostream& os) { d.write(os); });
+  write_file_atomically(
+      file, [&](std::ostream& os) { d.write(os); }, Durability::kill);
 }
 
 void write_contacts_csv(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time) {
-  write_file_atomically(file, [&](std::ostream& os) {
-    std::string line = "time,first,second,element,px,py,pz,nx,ny,nz,overlap,fnx,fny,fnz,ftx,fty,ftz,sliding\n";
-    for (const ContactEntry& c : contacts) {
-      const double v[] = {time,
-                          static_cast<double>(c.first),
-                          static_cast<double>(c.second),
-                          static_cast<double>(c.element),
-                          c.point.x,
-                          c.point.y,
-                          c.point.z,
-                          c.normal.x,
-                          c.normal.y,
-                          c.normal.z,
-                          c.overlap,
-                          c.normal_force.x,
-                          c.normal_force.y,
-                          c.normal_force.z,
-                          c.tangential_force.x,
-                          c.tangential_force.y,
-                          c.tangential_force.z,
-                          c.sliding ? 1.0 : 0.0};
-      for (std::size_t k = 0; k < std::size(v); ++k) {
-        if (k) line += ',';
-        append_csv_number(line, v[k]);
-      }
-      line += '\n';
-      if (line.size() > (1u << 16)) {
+  write_file_atomically(
+      file,
+      [&](std::ostream& os) {
+        std::string line = "time,first,second,element,px,py,pz,nx,ny,nz,overlap,fnx,fny,fnz,ftx,fty,ftz,sliding\n";
+        for (const ContactEntry& c : contacts) {
+          const double v[] = {time,
+                              static_cast<double>(c.first),
+                              static_cast<double>(c.second),
+                              static_cast<double>(c.element),
+                              c.point.x,
+                              c.point.y,
+                              c.point.z,
+                              c.normal.x,
+                              c.normal.y,
+                              c.normal.z,
+                              c.overlap,
+                              c.normal_force.x,
+                              c.normal_force.y,
+                              c.normal_force.z,
+                              c.tangential_force.x,
+                              c.tangential_force.y,
+                              c.tangential_force.z,
+                              c.sliding ? 1.0 : 0.0};
+          for (std::size_t k = 0; k < std::size(v); ++k) {
+            if (k) line += ',';
+            append_csv_number(line, v[k]);
+          }
+          line += '\n';
+          if (line.size() > (1u << 16)) {
+            os << line;
+            line.clear();
+          }
+        }
         os << line;
-        line.clear();
-      }
-    }
-    os << line;
-  });
+      },
+      Durability::kill);
 }
 
 }  // namespace mpdem

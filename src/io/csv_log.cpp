@@ -103,51 +103,54 @@ void CsvLog::flush() {
 
 void write_particles_csv(const std::filesystem::path& file, const Particles& p, double time, const Vec3& period) {
   const bool periodic = period.x > 0.0 || period.y > 0.0 || period.z > 0.0;
-  write_file_atomically(file, [&](std::ostream& os) {
-    std::string line = "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed";
-    line += periodic ? ",ix,iy,iz,xu,yu,zu\n" : "\n";
-    auto num = [&line](double v) {
-      append_csv_number(line, v);
-      line += ',';
-    };
-    auto vec = [&num](const Vec3& v) {
-      num(v.x);
-      num(v.y);
-      num(v.z);
-    };
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      num(time);
-      // Ids are printed as integers directly: a double would round ids beyond 2^53.
-      char buf[24];
-      line.append(buf, std::to_chars(buf, buf + sizeof buf, p.id[i]).ptr);
-      line += ',';
-      vec(p.x[i]);
-      vec(p.v[i]);
-      vec(p.w[i]);
-      num(p.radius[i]);
-      line.append(buf, std::to_chars(buf, buf + sizeof buf, p.material[i]).ptr);
-      line += ',';
-      num(p.T[i]);
-      num(p.charge[i]);
-      vec(p.force[i]);
-      line += p.fixed[i] ? '1' : '0';  // 1: prescribed motion (a rough base, a driven plate)
-      line += ',';
-      if (periodic) {
-        const auto& im = p.image[i];
-        for (int c = 0; c < 3; ++c) {
-          line.append(buf, std::to_chars(buf, buf + sizeof buf, im[static_cast<std::size_t>(c)]).ptr);
+  write_file_atomically(
+      file,
+      [&](std::ostream& os) {
+        std::string line = "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed";
+        line += periodic ? ",ix,iy,iz,xu,yu,zu\n" : "\n";
+        auto num = [&line](double v) {
+          append_csv_number(line, v);
           line += ',';
+        };
+        auto vec = [&num](const Vec3& v) {
+          num(v.x);
+          num(v.y);
+          num(v.z);
+        };
+        for (std::size_t i = 0; i < p.size(); ++i) {
+          num(time);
+          // Ids are printed as integers directly: a double would round ids beyond 2^53.
+          char buf[24];
+          line.append(buf, std::to_chars(buf, buf + sizeof buf, p.id[i]).ptr);
+          line += ',';
+          vec(p.x[i]);
+          vec(p.v[i]);
+          vec(p.w[i]);
+          num(p.radius[i]);
+          line.append(buf, std::to_chars(buf, buf + sizeof buf, p.material[i]).ptr);
+          line += ',';
+          num(p.T[i]);
+          num(p.charge[i]);
+          vec(p.force[i]);
+          line += p.fixed[i] ? '1' : '0';  // 1: prescribed motion (a rough base, a driven plate)
+          line += ',';
+          if (periodic) {
+            const auto& im = p.image[i];
+            for (int c = 0; c < 3; ++c) {
+              line.append(buf, std::to_chars(buf, buf + sizeof buf, im[static_cast<std::size_t>(c)]).ptr);
+              line += ',';
+            }
+            vec(p.x[i] + Vec3{im[0] * period.x, im[1] * period.y, im[2] * period.z});  // m, unwrapped
+          }
+          line.back() = '\n';
+          if (line.size() >= kFlushBytes) {
+            os << line;
+            line.clear();
+          }
         }
-        vec(p.x[i] + Vec3{im[0] * period.x, im[1] * period.y, im[2] * period.z});  // m, unwrapped
-      }
-      line.back() = '\n';
-      if (line.size() >= kFlushBytes) {
         os << line;
-        line.clear();
-      }
-    }
-    os << line;
-  });
+      },
+      Durability::kill);
 }
 
 }  // namespace mpdem

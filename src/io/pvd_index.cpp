@@ -109,16 +109,19 @@ void PvdIndex::add(double time, const std::string& relative_vtu_name) {
 }
 
 void PvdIndex::write() const {
-  write_file_atomically(file_, [this](std::ostream& os) {
-    os << "<?xml version=\"1.0\"?>\n"
-          "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-          "  <Collection>\n";
-    for (const Entry& e : entries_)
-      os << "    <DataSet timestep=\"" << format_time(e.time) << "\" group=\"\" part=\"0\" file=\""
-         << xml_escape(e.file) << "\"/>\n";
-    os << "  </Collection>\n"
-          "</VTKFile>\n";
-  });
+  write_file_atomically(
+      file_,
+      [this](std::ostream& os) {
+        os << "<?xml version=\"1.0\"?>\n"
+              "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+              "  <Collection>\n";
+        for (const Entry& e : entries_)
+          os << "    <DataSet timestep=\"" << format_time(e.time) << "\" group=\"\" part=\"0\" file=\""
+             << xml_escape(e.file) << "\"/>\n";
+        os << "  </Collection>\n"
+              "</VTKFile>\n";
+      },
+      Durability::kill);
 }
 
 }  // namespace mpdem

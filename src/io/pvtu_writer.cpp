@@ -35,24 +35,27 @@ void write_particles_piece(const std::filesystem::path& file, const Particles& p
 }
 
 void write_particles_pvtu(const std::filesystem::path& dir, std::uint64_t index, int pieces) {
-  write_file_atomically(dir / particle_pvtu_name(index), [&](std::ostream& os) {
-    os << "<?xml version=\"1.0\"?>\n"
-          "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-          "header_type=\"UInt64\">\n"
-          "  <PUnstructuredGrid GhostLevel=\"0\">\n"
-       << "    <PPointData Scalars=\"" << kParticleActiveScalars << "\" Vectors=\"" << kParticleActiveVectors
-       << "\">\n";
-    for (const VtuArray& a : particle_point_arrays()) declare(os, a);
-    os << "    </PPointData>\n"
-          "    <PPoints>\n";
-    declare(os, kVtuPoints);  // m, centres
-    os << "    </PPoints>\n";
-    for (int k = 0; k < pieces; ++k)  // the pieces lie beside the .pvtu
-      os << "    <Piece Source=\"" << std::filesystem::path(particle_piece_name(index, k)).filename().string()
-         << "\"/>\n";
-    os << "  </PUnstructuredGrid>\n"
-          "</VTKFile>\n";
-  });
+  write_file_atomically(
+      dir / particle_pvtu_name(index),
+      [&](std::ostream& os) {
+        os << "<?xml version=\"1.0\"?>\n"
+              "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+              "header_type=\"UInt64\">\n"
+              "  <PUnstructuredGrid GhostLevel=\"0\">\n"
+           << "    <PPointData Scalars=\"" << kParticleActiveScalars << "\" Vectors=\"" << kParticleActiveVectors
+           << "\">\n";
+        for (const VtuArray& a : particle_point_arrays()) declare(os, a);
+        os << "    </PPointData>\n"
+              "    <PPoints>\n";
+        declare(os, kVtuPoints);  // m, centres
+        os << "    </PPoints>\n";
+        for (int k = 0; k < pieces; ++k)  // the pieces lie beside the .pvtu
+          os << "    <Piece Source=\"" << std::filesystem::path(particle_piece_name(index, k)).filename().string()
+             << "\"/>\n";
+        os << "  </PUnstructuredGrid>\n"
+              "</VTKFile>\n";
+      },
+      Durability::kill);
 }
 
 }  // namespace mpdem

@@ -119,7 +119,8 @@ void write_particles_vtu(const std::filesystem::path& file, const Particles& p, 
   d.text("      </Points>\n");
   separate_cells(d, n, 1, kVtkVertex);
   close_unstructured_piece(d);
-  write_file_atomically(file, [&](std::ostream& os) { d.write(os); });
+  write_file_atomically(
+      file, [&](std::ostream& os) { d.write(os); }, Durability::kill);
 }
 
 void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, double time, VtkFormat format,
@@ -162,7 +163,8 @@ void write_barriers_vtu(const std::filesystem::path& file, const Barriers& b, do
   d.text("      </Points>\n");
   separate_cells(d, m, 3, kVtkTriangle);
   close_unstructured_piece(d);
-  write_file_atomically(file, [&](std::ostream& os) { d.write(os); });
+  write_file_atomically(
+      file, [&](std::ostream& os) { d.write(os); }, Durability::kill);
 }
 
 }  // namespace mpdem

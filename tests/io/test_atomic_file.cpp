@@ -16,18 +16,26 @@ namespace fs = std::filesystem;
 using namespace mpdem;
 using namespace mpdem::test::output;  // OutputTest, slurp, split, lines_of, files_in
 
+// Both durabilities (power_loss syncs the temporary before the rename, kill does not): the data
+// goes to the temporary, the final name appears only complete, nothing is left behind.
 TEST_F(OutputTest, AtomicWriteUsesTemporaryBesideTargetAndLeavesNoneBehind) {
-  const fs::path file = dir / "a.txt";
-  const fs::path expected_tmp = dir / ("a.txt.tmp-" + std::to_string(::getpid()));
-  EXPECT_EQ(temporary_path_for(file), expected_tmp);
-  write_file_atomically(file, [&](std::ostream& os) {
-    // While the body runs the final name does not exist yet; the data goes to the temporary.
-    EXPECT_FALSE(fs::exists(file));
-    EXPECT_TRUE(fs::exists(expected_tmp));
-    os << "new content\n";
-  });
-  EXPECT_EQ(slurp(file), "new content\n");
-  EXPECT_EQ(files_in(dir), std::vector<fs::path>{"a.txt"});
+  for (const Durability durability : {Durability::power_loss, Durability::kill}) {
+    const fs::path file = dir / "a.txt";
+    fs::remove(file);
+    const fs::path expected_tmp = dir / ("a.txt.tmp-" + std::to_string(::getpid()));
+    EXPECT_EQ(temporary_path_for(file), expected_tmp);
+    write_file_atomically(
+        file,
+        [&](std::ostream& os) {
+          // While the body runs the final name does not exist yet; the data goes to the temporary.
+          EXPECT_FALSE(fs::exists(file));
+          EXPECT_TRUE(fs::exists(expected_tmp));
+          os << "new content\n";
+        },
+        durability);
+    EXPECT_EQ(slurp(file), "new content\n");
+    EXPECT_EQ(files_in(dir), std::vector<fs::path>{"a.txt"});
+  }
 }
 
 TEST_F(OutputTest, ThrowingBodyLeavesPreviousFileIntact) {

@@ -15,6 +15,7 @@
 #include "cli/bench_command.hpp"
 #include "io/input_error.hpp"
 #include "io/lammps_data.hpp"
+#include "io/vtk_xml.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "parallel/gather.hpp"
 #include "sim/simulation.hpp"
@@ -63,9 +64,7 @@ void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
   prm.neighbor.skin = a.skin;
   if (!a.output.empty()) {
     prm.output.particles_every = a.dt * static_cast<double>(a.snapshot_every);
-    prm.output.format = a.format == "ascii"        ? VtkFormat::Ascii
-                        : a.format == "compressed" ? VtkFormat::Compressed
-                                                   : VtkFormat::Binary;
+    prm.output.format = vtk_format_from_name(a.format).value();  // the command line checked the name
     prm.output.progress_every = 0.0;
   }
   Material m;

@@ -93,8 +93,9 @@ void read_coarse_grain(const TomlSection& root, Model& model) {
     c.width = s.require(s.number("width", kPositive), "width");
     // Along a periodic resolved axis the kernel reaches through one image either side only.
     const DomainParams& d = model.params.domain;
+    const double cutoff = cg_cutoff(c.kernel, c.width);  // m
     for (int k = 0; k < 3; ++k) {
-      const double period = d.max[k] - d.min[k], cutoff = cg_cutoff(c.kernel, c.width);
+      const double period = d.max[k] - d.min[k];
       if (d.periodic[static_cast<std::size_t>(k)] && c.grid.resolved[static_cast<std::size_t>(k)] && period < cutoff)
         s.fail("width", fmt::format("the kernel's cutoff {:.6g} m (width {:.6g} m) exceeds the period {:.6g} m along "
                                     "the periodic axis {}; use a smaller width or average over that axis",

@@ -11,10 +11,6 @@
 
 namespace mpdem {
 
-namespace {
-constexpr int kVtkLine = 3;
-}  // namespace
-
 void write_contacts_vtu(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time,
                         VtkFormat format) {
   const std::size_t n = contacts.size();

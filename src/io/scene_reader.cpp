@@ -18,6 +18,7 @@
 #include "io/particle_csv.hpp"
 #include "io/stl_reader.hpp"
 #include "io/toml_section.hpp"
+#include "io/vtk_xml.hpp"
 #include "model/derived_limits.hpp"
 #include "model/material_variants.hpp"
 #include "model/scene.hpp"
@@ -323,9 +324,7 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     s->get("dir", p.output.dir);
     if (p.output.dir.empty()) s->fail("dir", "expected a non-empty folder name");
     if (const auto name = s->string("format")) {
-      if (*name == "ascii") p.output.format = VtkFormat::Ascii;
-      else if (*name == "binary") p.output.format = VtkFormat::Binary;
-      else if (*name == "compressed") p.output.format = VtkFormat::Compressed;
+      if (const auto f = vtk_format_from_name(*name)) p.output.format = *f;
       else s->fail("format", "expected \"ascii\", \"binary\" or \"compressed\", got \"" + *name + "\"");
     }
     s->get("particles_every", p.output.particles_every, kNonNegative);

@@ -73,6 +73,12 @@ const char* vtk_format_name(VtkFormat f) {
   return "?";
 }
 
+std::optional<VtkFormat> vtk_format_from_name(std::string_view name) {
+  for (const VtkFormat f : {VtkFormat::Ascii, VtkFormat::Binary, VtkFormat::Compressed})
+    if (name == vtk_format_name(f)) return f;
+  return std::nullopt;
+}
+
 std::vector<std::byte> vtk_zlib_blocks(std::span<const std::byte> bytes) {
   const std::size_t blocks = (bytes.size() + kBlockBytes - 1) / kBlockBytes;
   // Each block is a complete zlib stream, as VTK reads them (libdeflate writes the zlib format).

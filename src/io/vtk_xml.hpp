@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <ostream>
 #include <span>
 #include <string>
@@ -33,8 +34,10 @@ struct VtuArray {
 // The points of every VTU file: m, 3 components.
 inline constexpr VtuArray kVtuPoints{"Points", "Float64", 3};
 
-// "ascii", "binary", "compressed": the [output] format key's values.
+// "ascii", "binary", "compressed": the [output] format key's values, and back (none for any
+// other name).
 const char* vtk_format_name(VtkFormat f);
+std::optional<VtkFormat> vtk_format_from_name(std::string_view name);
 
 class VtkXmlDocument {
  public:

@@ -54,8 +54,6 @@ void close_unstructured_piece(VtkXmlDocument& d) {
 
 namespace {
 
-constexpr int kVtkVertex = 1;
-constexpr int kVtkTriangle = 5;
 
 // The particle point arrays; write_particles_vtu writes each by its index here, in this order.
 enum ParticleArray : std::size_t {

@@ -31,6 +31,9 @@ struct VtuOptions {
 void open_unstructured_piece(VtkXmlDocument& d, double time, std::size_t points, std::size_t cells,
                              const char* names_prefix = "", std::span<const std::string> names = {});
 void separate_cells(VtkXmlDocument& d, std::size_t count, int per_cell, int vtk_type);
+inline constexpr int kVtkVertex = 1;  // VTK cell types (vtkCellType.h)
+inline constexpr int kVtkLine = 3;
+inline constexpr int kVtkTriangle = 5;
 void close_unstructured_piece(VtkXmlDocument& d);
 
 // The scene's [output] format and its material names.

@@ -85,8 +85,7 @@ AnalysisOutputs::AnalysisOutputs(const Model& model, fs::path dir, std::optional
     return resume_time ? std::make_unique<PvdIndex>(f, *resume_time) : std::make_unique<PvdIndex>(f);
   };
   if (files) fs::create_directories(dir_);
-  contacts_on_ = prm.output.contacts_every > 0.0;
-  if (contacts_on_) {
+  if (contacts_on()) {
     if (files) {
       fs::create_directories(dir_ / "contacts");
       fs::create_directories(dir_ / "contacts_csv");
@@ -133,7 +132,7 @@ double AnalysisOutputs::sample_time(const CoarseGrainSpec& c, std::uint64_t wind
 
 bool AnalysisOutputs::needs_contacts(double t_end, double dt, double end) const {
   const double slack = 0.5 * dt;
-  if (contacts_on_ && (t_end >= contacts_next_ - slack || t_end >= end - slack)) return true;
+  if (contacts_on() && (t_end >= contacts_next_ - slack || t_end >= end - slack)) return true;
   for (const Field& f : fields_)
     if (t_end >= f.next_sample - slack) return true;
   return false;
@@ -145,12 +144,10 @@ void AnalysisOutputs::after_step(double t, double h, double end, const Particles
   // The run's last step writes a contact snapshot; a periodic one due within half a step before
   // it is left to it, so the end state is written once.
   const bool last = t >= end - 1e-9 * h;
-  const bool contacts_due = contacts_on_ && (last || (t >= contacts_next_ - slack && t < end - slack));
-  bool due = contacts_due;
-  for (const Field& f : fields_) due = due || t >= f.next_sample - slack;
-  if (!due) return;
+  const bool contacts_due = contacts_on() && (last || (t >= contacts_next_ - slack && t < end - slack));
   bool fields_due = false;
   for (const Field& f : fields_) fields_due = fields_due || t >= f.next_sample - slack;
+  if (!contacts_due && !fields_due) return;
   // This rank's contacts and particles; on several ranks, every rank's on rank 0 (in rank order).
   std::vector<ContactEntry> list = contact_list(p, b, in);
   std::vector<CgParticle> particles;

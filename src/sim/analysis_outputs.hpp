@@ -56,13 +56,13 @@ class AnalysisOutputs {
   void write_field(std::size_t k, double t, const CgFields& f);
 
   bool writes() const;  // this rank computes the fields and writes the files (rank 0)
+  bool contacts_on() const { return model_.params.output.contacts_every > 0.0; }
 
   const Model& model_;
   const Communicator* comm_;  // null: one rank
   std::filesystem::path dir_;
   std::optional<double> resume_time_;
   Vec3 period_;                          // m, the periodic cell's length along periodic axes (0 elsewhere)
-  bool contacts_on_ = false;             // [output] contacts_every > 0
   double contacts_next_ = 0.0;           // s
   std::uint64_t contact_snapshots_ = 0;  // written so far
   std::vector<Field> fields_;            // [coarse_grain]

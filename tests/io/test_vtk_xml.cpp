@@ -121,3 +121,11 @@ TEST(VtkXmlDocument, BinaryOffsetsPointAtEachArray) {
   EXPECT_EQ(last, 8);
   EXPECT_EQ(f.substr(f.size() - 11), "</VTKFile>\n");
 }
+
+// The [output] format key's names map to the formats and back; any other name to none.
+TEST(VtkXml, FormatNamesRoundTrip) {
+  for (const VtkFormat f : {VtkFormat::Ascii, VtkFormat::Binary, VtkFormat::Compressed})
+    EXPECT_EQ(vtk_format_from_name(vtk_format_name(f)), f);
+  EXPECT_EQ(vtk_format_from_name("hdf5"), std::nullopt);
+  EXPECT_EQ(vtk_format_from_name("Binary"), std::nullopt);
+}

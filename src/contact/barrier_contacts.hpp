@@ -87,7 +87,8 @@ class BarrierContacts {
   // the particles' force and torque, and the sums acc; with loads_to, also each load onto its element. Empties the
   // batch.
   void flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch, BarrierSums& acc);
-  void element_loads(Barriers& b);  // sums the loads of the last evaluation onto the elements, in particle order
+  // Sums the loads of the last evaluation onto element e, over its users in particle order.
+  void element_loads(Barriers& b, std::size_t e);
 
   const ContactTable& table_;
   BarrierTopology topo_;

@@ -129,19 +129,20 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
       block_seconds_[b] = t1 - t0;
       t0 = t1;
     }
-  }
-
-  // 2. The second members' shares of the cross pairs, each in ascending cross index.
-  const auto& members = blocks.cross_particles();
-#pragma omp parallel for schedule(static) if (members.size() > kParallelThreshold)
-  for (std::size_t mb = 0; mb < members.size(); ++mb) {
-    Vec3 f{}, t{};
-    for (std::uint32_t c : blocks.entries(mb)) {
-      f += cross_force_[c];
-      t += cross_torque_[c];
+    // 2. Once every block is done: the second members' shares of the cross pairs, each in
+    // ascending cross index (in this region: one fork and join less per evaluation).
+    const auto& members = blocks.cross_particles();
+#pragma omp barrier
+#pragma omp for schedule(static) nowait
+    for (std::size_t mb = 0; mb < members.size(); ++mb) {
+      Vec3 f{}, t{};
+      for (std::uint32_t c : blocks.entries(mb)) {
+        f += cross_force_[c];
+        t += cross_torque_[c];
+      }
+      p.force[members[mb]] += f;
+      p.torque[members[mb]] += t;
     }
-    p.force[members[mb]] += f;
-    p.torque[members[mb]] += t;
   }
 
   // 3. Totals in block order (independent of the thread count).

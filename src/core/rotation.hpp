@@ -46,8 +46,10 @@ Vec3 rodrigues_from_rotation_vector(const Vec3& theta);
 // Split in two so that the integrators' per-particle loops vectorise: below kSeriesAngle2 (rad^2)
 // the increment's quaternion is a short series (branch-free, rotate_by_small_increment); above,
 // cos and sin (rotate_by_increment), which loops call for the rare particles that spin that fast.
-// Both give exactly what the one function gives.
-inline constexpr double kSeriesAngle2 = 1e-8;  // rad^2: terms of order a^4 are below round-off
+// Both give exactly what the one function gives. The series runs to a^6: its first omitted term,
+// a^8 / 10321920 at a^2 = 1e-3, is 1e-19, below round-off; 1e-3 rad^2 (|theta| < 0.032 rad)
+// covers a 2 mm sphere rolling at 30 m/s with dt = 4e-6 s, so flowing beds stay on the series.
+inline constexpr double kSeriesAngle2 = 1e-3;
 
 // Renormalised so that round-off does not accumulate over millions of steps. |r|^2 = 1 + e
 // with e of the order of round-off (a product of unit quaternions): one Newton step for
@@ -61,7 +63,9 @@ inline Quat renormalized(const Quat& r) {
 // rotate_by_increment for |theta|^2 < kSeriesAngle2 (the caller checks).
 inline Quat rotate_by_small_increment(const Quat& q, const Vec3& theta) {
   const double a2 = norm2(theta);
-  const double c = 1.0 - 0.125 * a2, s = 0.5 - a2 * (1.0 / 48.0);  // cos(a/2), sin(a/2)/a
+  // cos(a/2) and sin(a/2)/a: sum_k (-1)^k (a/2)^2k / (2k)!, and (a/2)^2k / (2 (2k+1)!).
+  const double c = 1.0 - a2 * (1.0 / 8.0 - a2 * (1.0 / 384.0 - a2 * (1.0 / 46080.0)));
+  const double s = 0.5 - a2 * (1.0 / 48.0 - a2 * (1.0 / 3840.0 - a2 * (1.0 / 645120.0)));
   return renormalized(quat_multiply({c, s * theta.x, s * theta.y, s * theta.z}, q));
 }
 

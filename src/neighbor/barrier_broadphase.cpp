@@ -1,6 +1,7 @@
 #include "neighbor/barrier_broadphase.hpp"
 
 #include "neighbor/cell_grid.hpp"  // kNeighborParallelMin
+#include "physics/triangle_closest_point.hpp"
 
 #include <omp.h>
 
@@ -18,6 +19,9 @@ constexpr std::uint32_t kLeafSize = 4;
 // Node boxes are padded outward by this relative amount so that rounding in the node test can
 // never reject an element the exact per-element test would accept (node test is conservative).
 constexpr double kPadRel = 1e-12;
+// The distance test is widened by this relative amount (header), far above the rounding of the
+// closest point (~1e-16 of the coordinates) and far below any skin.
+constexpr double kPadDist = 1e-9;
 
 Vec3 vmin(const Vec3& a, const Vec3& b) { return {std::min(a.x, b.x), std::min(a.y, b.y), std::min(a.z, b.z)}; }
 Vec3 vmax(const Vec3& a, const Vec3& b) { return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)}; }
@@ -26,6 +30,13 @@ Vec3 vmax(const Vec3& a, const Vec3& b) { return {std::max(a.x, b.x), std::max(a
 bool in_expanded_box(const Vec3& p, const Vec3& lo, const Vec3& hi, double margin) {
   return p.x >= lo.x - margin && p.x <= hi.x + margin && p.y >= lo.y - margin && p.y <= hi.y + margin &&
          p.z >= lo.z - margin && p.z <= hi.z + margin;
+}
+
+// The documented distance test (header): |x - closest point of triangle abc| <= margin, widened.
+bool within_distance(const Vec3& p, const Vec3* abc, double margin) {
+  const double scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  const double lim = margin + kPadDist * (margin + scale);
+  return norm2(closest_point_on_triangle(p, abc[0], abc[1], abc[2]).point - p) <= lim * lim;
 }
 
 }  // namespace
@@ -83,7 +94,8 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
   centroid_.resize(m);
   perm_.resize(m);
   offset_build_.assign(barriers.offset.begin(), barriers.offset.end());
-  vertex_build_.assign(barriers.rotating() ? 3 * m : 0, Vec3{});
+  vertex_build_.resize(3 * m);
+  rotating_build_ = barriers.rotating();
   const bool timed = barriers.timed();
   if (timed) active_build_.assign(barriers.active.begin(), barriers.active.end());
   else active_build_.clear();
@@ -95,7 +107,7 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
     if (!isfinite(a) || !isfinite(b) || !isfinite(c) || !(t >= 0.0) || !std::isfinite(t))
       throw std::invalid_argument("barrier broad phase: element " + std::to_string(barriers.id[e]) +
                                   " has a non-finite vertex or an invalid thickness");
-    if (barriers.rotating()) vertex_build_[3 * e] = a, vertex_build_[3 * e + 1] = b, vertex_build_[3 * e + 2] = c;
+    vertex_build_[3 * e] = a, vertex_build_[3 * e + 1] = b, vertex_build_[3 * e + 2] = c;
     lo_[e] = vmin(vmin(a, b), c);
     hi_[e] = vmax(vmax(a, b), c);
     grow_[e] = 0.5 * t + skin;
@@ -147,7 +159,9 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
         }
         for (std::uint32_t k = nd.first; k < nd.first + nd.count; ++k) {
           const std::uint32_t e = perm_[k];
-          if (in_expanded_box(p, lo_[e], hi_[e], r + grow_[e])) buf.push_back(e);
+          const double margin = r + grow_[e];
+          if (in_expanded_box(p, lo_[e], hi_[e], margin) && within_distance(p, &vertex_build_[3 * e], margin))
+            buf.push_back(e);
         }
       }
       std::sort(buf.begin() + static_cast<std::ptrdiff_t>(first), buf.end());
@@ -173,7 +187,7 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
 double BarrierBroadphase::max_barrier_displacement(const Barriers& barriers) const {
   if (!built_ || barriers.size() != offset_build_.size()) return std::numeric_limits<double>::infinity();
   double m2 = 0.0;
-  if (barriers.rotating() != !vertex_build_.empty()) return std::numeric_limits<double>::infinity();
+  if (barriers.rotating() != rotating_build_) return std::numeric_limits<double>::infinity();
   // An element switched on or off since the build: the lists must follow (an O(M) compare, only
   // for scenes with activity windows). Otherwise inactive elements are in no list and ignored.
   const bool timed = barriers.timed();

@@ -1,12 +1,15 @@
 #pragma once
 // Broad phase between particles and barrier triangles (physics.md sections 7 and 11).
 //
-// Element e is a candidate of particle i when the centre x_i lies in the axis-aligned bounding
-// box of e's current vertices (Barriers::vertex) expanded on every side by
+// Element e is a candidate of particle i when the distance from the centre x_i to e's current
+// triangle (Barriers::vertex) is at most
 //     margin = R_i + (t_b,e / 2 + skin)          (evaluated in exactly this order)
-// i.e. for each axis a:  lo_a - margin <= x_i,a <= hi_a + margin.
-// A true contact (distance to the triangle < R_i + t_b/2) always passes this test, since the
-// distance to a triangle is at least the per-axis distance to its box.
+// widened by kPadDist (margin + max_a |x_i,a|) against rounding. A true contact (distance < R_i +
+// t_b/2) always passes. The box test first - x_i in e's vertex box expanded by margin on every
+// side, for each axis a: lo_a - margin <= x_i,a <= hi_a + margin - is exact and cheap and lets
+// only those through (the distance to a triangle is at least the per-axis distance to its box);
+// the distance test then drops what the box keeps of a long slanted element (a hopper's cone, a
+// drum's wall), whose box holds many particles far from its plane.
 //
 // Elements are held in a bounding-volume hierarchy (median split on the longest axis), so a
 // particle's query costs ~log M and an element of any size - a 100 m floor triangle among
@@ -81,7 +84,8 @@ class BarrierBroadphase {
   std::vector<std::uint32_t> perm_;         // [active elements] indices in leaf order
   std::vector<Node> nodes_;                 // [< 2M] hierarchy, root at 0
   std::vector<Vec3> offset_build_;          // [M] m, barrier offsets u(t) at build
-  std::vector<Vec3> vertex_build_;          // [3M] m, vertices at build (only with rotating barriers; else empty)
+  std::vector<Vec3> vertex_build_;          // [3M] m, current vertices of each element at the build
+  bool rotating_build_ = false;             // the barriers rotated at the build
   std::vector<std::uint8_t> active_build_;  // [M] -, Barriers::active at build (only when timed; else empty)
   std::vector<std::size_t> offset_{0};      // [N+1] CSR offsets
   std::vector<std::uint32_t> index_;        // [candidates] element indices

@@ -2,6 +2,7 @@
 // quaternion accumulation of step increments for a long constant spin (physics.md section 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -97,4 +98,32 @@ TEST(Rotation, ConstantSpinTenTurns) {
     EXPECT_LT(norm(got - expected), 1e-9) << (integ == Integrator::Verlet ? "verlet" : "trapezoidal");
     EXPECT_DOUBLE_EQ(norm(sim.particles().w[0] - omega * axis), 0.0);
   }
+}
+
+// The series branch of rotate_by_increment (|theta|^2 < kSeriesAngle2) and its cos/sin branch
+// both give the increment's quaternion to round-off: against long double cos/sin of half the
+// angle, for angles from 1e-7 rad to well past the series limit (sqrt(kSeriesAngle2) = 0.032 rad).
+TEST(Rotation, IncrementSeriesAgreesWithTrigonometry) {
+  std::mt19937_64 rng(11);
+  const Quat q0 = quat_normalized({0.3, -0.2, 0.9, 0.1});
+  double worst = 0.0;
+  for (int k = 0; k < 4000; ++k) {
+    const double a = std::pow(10.0, -7.0 + 6.5 * static_cast<double>(k) / 4000.0);  // 1e-7 .. 0.3 rad
+    Vec3 e = random_vec(rng, 1.0);
+    e = e / norm(e);
+    const Vec3 th = a * e;
+    const long double al = std::sqrt(static_cast<long double>(norm2(th)));
+    const long double c = std::cos(0.5L * al), s = std::sin(0.5L * al) / al;
+    const long double iw = c, ix = s * th.x, iy = s * th.y, iz = s * th.z;  // increment (w, x, y, z)
+    const long double ew = iw * q0.w - ix * q0.x - iy * q0.y - iz * q0.z;
+    const long double ex = iw * q0.x + ix * q0.w + iy * q0.z - iz * q0.y;
+    const long double ey = iw * q0.y - ix * q0.z + iy * q0.w + iz * q0.x;
+    const long double ez = iw * q0.z + ix * q0.y - iy * q0.x + iz * q0.w;
+    const Quat got = rotate_by_increment(q0, th);
+    const double d = static_cast<double>(
+        std::max({std::abs(got.w - ew), std::abs(got.x - ex), std::abs(got.y - ey), std::abs(got.z - ez)}));
+    worst = std::max(worst, d);
+  }
+  // A few units of round-off of unit-sized components (2^-52 = 2.2e-16).
+  EXPECT_LT(worst, 1e-15);
 }

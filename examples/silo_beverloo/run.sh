@@ -25,8 +25,8 @@ T_FEED=${T_FEED:-0.75}         # s, ... this rate until T_FEED (the bed reaches 
 T_FILL=${T_FILL:-0.95}         # s, ... the rest is shortfall), then it settles until T_FILL
 FEED_RATE=${FEED_RATE:-40000}  # 1/s, discharges: the inlet keeps feeding (largest discharge ~21 000/s)
 T_OPEN=0.03             # s, discharge runs: the lid (re)settles the seeded bed, then opens at T_OPEN
-T_DIS=${T_DIS:-0.5}               # s of discharge after T_OPEN
-DS=${DS:-"0.025 0.0375 0.0525 0.07"}   # m, orifice sides D0 = 5, 7.5, 10.5, 14 d
+T_DIS=${T_DIS:-0.8}               # s of discharge after T_OPEN
+DS=${DS:-"0.025 0.03 0.0375 0.045 0.0525 0.06 0.07"}   # m, orifice sides D0 = 5, 6, 7.5, 9, 10.5, 12, 14 d
 
 calc() { "$PY" -c "from math import *; print(repr($1))"; }
 scene() {  # scene FILE WHAT DURATION FLOOR PARTICLES INLET OUTDIR CSVEVERY

@@ -1,4 +1,4 @@
-# Shared by scripts/bench_vs_liggghts.sh and scripts/scaling.sh (sourced): the tools they need,
+# Shared by scripts/bench_vs_liggghts.sh, bench_silo_vs_liggghts.sh and scaling.sh (sourced): the tools they need,
 # the beds, LIGGGHTS's timed run, and the parsing of results. Expects ROOT (the repository).
 
 # Installs LIGGGHTS, Open MPI and GNU time when missing (NO_INSTALL=1: fail instead).
@@ -60,20 +60,28 @@ bed_file() {
   echo "$data"
 }
 
-# liggghts_ns DATA STEPS RELAX RANKS LOG: runs LIGGGHTS's timed bench (one thread per rank) and
-# prints its ns per particle-step; the peak RSS of every rank goes to LOG.rank*, its state line
-# (BENCH_STATE) stays in LOG.out.
-liggghts_ns() {
-  local data=$1 steps=$2 relax=$3 ranks=$4 log=$5 n secs
+# liggghts_job LOG RANKS INPUT [-var NAME VALUE ...]: runs LIGGGHTS on INPUT in LOG's folder (one
+# thread per rank); its screen output goes to LOG.out, its log to LOG.log, and the peak RSS of
+# every rank (GNU time around each rank, KiB) to LOG.rank*.
+liggghts_job() {
+  local log=$1 ranks=$2 input=$3
+  shift 3
   rm -f "$log".rank*
-  local cmd=(liggghts -in "$SHARED/liggghts_bench.in" -log "$log.log" -var data "$data" -var nrelax "$relax"
-             -var nsteps "$steps" -var dt 4e-6)
+  local cmd=(liggghts -in "$input" -log "$log.log" "$@")
   local wrap=(sh -c '/usr/bin/time -f "%M" -o "$0.rank${OMPI_COMM_WORLD_RANK:-0}" "$@"' "$log")
   if [ "$ranks" -gt 1 ]; then
     (cd "$(dirname "$log")" && OMP_NUM_THREADS=1 mpirun -np "$ranks" --allow-run-as-root --oversubscribe "${wrap[@]}" "${cmd[@]}" > "$log.out" 2>&1)
   else
     (cd "$(dirname "$log")" && OMP_NUM_THREADS=1 "${wrap[@]}" "${cmd[@]}" > "$log.out" 2>&1)
   fi
+}
+
+# liggghts_ns DATA STEPS RELAX RANKS LOG: runs LIGGGHTS's timed bench (liggghts_job) and prints its
+# ns per particle-step; its state line (BENCH_STATE) stays in LOG.out.
+liggghts_ns() {
+  local data=$1 steps=$2 relax=$3 ranks=$4 log=$5 n secs
+  liggghts_job "$log" "$ranks" "$SHARED/liggghts_bench.in" -var data "$data" -var nrelax "$relax" \
+    -var nsteps "$steps" -var dt 4e-6
   n=$(awk '$2 == "atoms" {print $1; exit}' "$data")
   secs=$(awk '/TIMED_RUN_BEGIN/ {t=1} t && /^Loop time of/ {print $4; exit}' "$log.out")
   awk -v s="$secs" -v n="$n" -v k="$steps" 'BEGIN {printf "%.3f\n", 1e9 * s / (n * k)}'

@@ -16,6 +16,11 @@ bench_tools() {
   $sudo apt-get install -y -q --no-install-recommends "${need[@]}" >/dev/null
 }
 
+# The environment every mpdem run of the scripts gets: threads bound to cores, and mpdem's own
+# default spin (src/cli/openmp_environment.hpp) given explicitly, since mpdem leaves the OpenMP
+# environment alone under a binding.
+MPDEM_OMP_ENV=(GOMP_SPINCOUNT=1000 OMP_PROC_BIND=close)
+
 # median of the numbers on stdin (blank-separated)
 median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{a[NR]=$1} END {if (NR%2) print a[(NR+1)/2]; else print (a[NR/2]+a[NR/2+1])/2}'; }
 # value of key=... in a BENCH_RESULT / BENCH_STATE line on stdin

@@ -114,7 +114,7 @@ for th in $THREADS; do
       rm -rf "$dir" && mkdir -p "$dir"
       cp "$BED/particles.csv" "$BED/silo.stl" "$dir/"
       scene "$dir/scene.toml" particles.csv "" "$DURATION" out 0
-      GOMP_SPINCOUNT=1000 OMP_PROC_BIND=close /usr/bin/time -v "$exe" run "$dir/scene.toml" --threads "$th" --overwrite \
+      env "${MPDEM_OMP_ENV[@]}" /usr/bin/time -v "$exe" run "$dir/scene.toml" --threads "$th" --overwrite \
         > "$dir/run.out" 2> "$dir/run.err"
       secs=$(sed -n 's/^done: .* steps in \([0-9.e+-]*\) s .*/\1/p' "$dir/run.out" "$dir/run.err" | head -1)
       awk -F, 'NR == 1 {for (i = 1; i <= NF; i++) if ($i == "particles") c = i; next} {print $1, $c}' \

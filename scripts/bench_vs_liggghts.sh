@@ -69,7 +69,7 @@ for bed in "${BEDS[@]}"; do
           log="$WORK/mpdem_${bed}_${code}_t${th}_r$r"
           k=$steps; rx=$RELAX
           [ "$integ" = trapezoidal ] && k=${TRAP_STEPS:-$steps} && rx=${TRAP_RELAX:-$RELAX}
-          GOMP_SPINCOUNT=1000 OMP_PROC_BIND=close /usr/bin/time -v "$exe" bench "$data" --integrator "$integ" --phi 0.5 --threads "$th" \
+          env "${MPDEM_OMP_ENV[@]}" /usr/bin/time -v "$exe" bench "$data" --integrator "$integ" --phi 0.5 --threads "$th" \
             --steps "$k" --relax "$rx" > "$log.out" 2> "$log.time"
           line=$(grep '^BENCH_RESULT' "$log.out")
           SAMPLES[$code,$th]+=" $(echo "$line" | field ns_per_pstep)"

@@ -43,7 +43,7 @@ mpdem_bench() {
     [ "$ranks" -gt "$(nproc)" ] && bind=(--oversubscribe --bind-to none)
     OMP_NUM_THREADS=$threads mpirun -np "$ranks" "${bind[@]}" "${cmd[@]}" > "$log" 2>&1
   else
-    GOMP_SPINCOUNT=1000 OMP_PROC_BIND=close "${cmd[@]}" > "$log" 2>&1
+    env "${MPDEM_OMP_ENV[@]}" "${cmd[@]}" > "$log" 2>&1
   fi
   grep '^BENCH_RESULT' "$log"
 }

@@ -54,7 +54,6 @@ void close_unstructured_piece(VtkXmlDocument& d) {
 
 namespace {
 
-
 // The particle point arrays; write_particles_vtu writes each by its index here, in this order.
 enum ParticleArray : std::size_t {
   kId,

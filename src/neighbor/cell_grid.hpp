@@ -47,6 +47,8 @@ class CellGrid {
   std::size_t num_cells() const { return coord_.size(); }
   double cell_side() const { return side_; }      // m
   const Vec3& origin() const { return origin_; }  // m, corner of cell (0, 0, 0)
+  // Cells along axis a (0: x) spanned by the particles: occupied coordinates are in [0, dim(a)).
+  std::int64_t dim(int a) const { return dims_[a]; }
 
   // Particle indices in cell (Morton) order; within a cell ascending by index [N].
   std::span<const std::uint32_t> sorted() const { return sorted_; }

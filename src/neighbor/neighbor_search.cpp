@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "neighbor/size_levels.hpp"
 #include "neighbor/spatial_order.hpp"
 
 namespace mpdem {
@@ -111,10 +112,11 @@ void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Ba
 }
 
 std::vector<std::uint32_t> NeighborSearch::spatial_order(const Particles& p) const {
-  double rmax = 0.0;
+  // Cells of the finest size level (the largest radius when all are within a factor 2): a few
+  // large spheres must not coarsen the order of the many small ones.
   const std::size_t n = p.size();
-  for (std::size_t i = 0; i < n; ++i) rmax = std::max(rmax, p.radius[i]);
-  return mpdem::spatial_order(std::span<const Vec3>(p.x.data(), n), 2.0 * rmax + skin_ + extra_);
+  const double r = size_levels(std::span<const double>(p.radius.data(), n)).finest_r_max();
+  return mpdem::spatial_order(std::span<const Vec3>(p.x.data(), n), 2.0 * r + skin_ + extra_);
 }
 
 }  // namespace mpdem

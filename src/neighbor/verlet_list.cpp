@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -11,8 +12,13 @@
 namespace mpdem {
 
 namespace {
-// Insertion sort: a particle has a handful of neighbours, where std::sort's setup dominates.
-void sort_short(std::uint32_t* first, std::uint32_t* last) {
+// Insertion sort: a particle has a handful of neighbours, where std::sort's setup dominates; a
+// large sphere among small ones has hundreds, where insertion sort would be quadratic.
+void sort_row(std::uint32_t* first, std::uint32_t* last) {
+  if (last - first > 32) {
+    std::sort(first, last);
+    return;
+  }
   for (std::uint32_t* p = first + (first != last); p < last; ++p) {
     const std::uint32_t v = *p;
     std::uint32_t* q = p;
@@ -20,6 +26,60 @@ void sort_short(std::uint32_t* first, std::uint32_t* last) {
     *q = v;
   }
 }
+
+// Grows buf so that `more` entries fit after the first `used`.
+void reserve_row(std::vector<std::uint32_t>& buf, std::size_t used, std::size_t more) {
+  if (buf.size() < used + more) buf.resize(std::max(2 * buf.size(), used + more));
+}
+
+// Fills the CSR rows of the owned particles [0, owned) of n: make() gives each thread its row
+// finder, row(i, buf, used), which appends the neighbours j of row i to buf from position used.
+// Each thread owns a contiguous block of rows: it writes only those counts and its own buffer,
+// so the result is the same for any number of threads. Counts -> exclusive scan -> copy.
+template <class MakeRow>
+void fill_rows(std::size_t n, std::size_t owned, std::vector<std::size_t>& offset, std::vector<std::uint32_t>& index,
+               MakeRow&& make) {
+  offset.assign(n + 1, 0);
+  std::vector<std::vector<std::uint32_t>> thread_buf;  // per-thread pair buffers
+#pragma omp parallel if (n >= kNeighborParallelMin)
+  {
+    const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+#pragma omp single
+    thread_buf.resize(nt);
+    std::vector<std::uint32_t>& buf = thread_buf[t];
+    std::size_t used = 0;                                              // entries of buf in use
+    const std::size_t lo = owned * t / nt, hi = owned * (t + 1) / nt;  // ghosts list no pairs
+    auto row = make();
+    for (std::size_t i = lo; i < hi; ++i) {
+      const std::size_t first = used;
+      row(i, buf, used);
+      sort_row(buf.data() + first, buf.data() + used);
+      offset[i + 1] = used - first;
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (std::size_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
+      index.resize(offset[n]);
+    }
+    std::copy(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(used),
+              index.begin() + static_cast<std::ptrdiff_t>(offset[lo]));
+  }
+}
+
+// One size level's particles binned in cells of their own side, in cell order.
+struct LevelCells {
+  CellGrid grid;
+  double r_max = 0.0;                // m, the level's largest radius
+  std::vector<std::uint32_t> index;  // [n_l] particle index, in cell order
+  std::vector<Vec3> x;               // [n_l] m, centres in cell order
+  std::vector<double> r;             // [n_l] m, radii in cell order
+  std::vector<std::int64_t> id;      // [n_l] ids in cell order (with ghosts only)
+};
+
+// Rounding margin of a level's search box (relative): the box can only be wider than the ranges.
+constexpr double kReachPad = 1.0 + 1e-9;
 }  // namespace
 
 void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range,
@@ -36,67 +96,73 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
     throw std::invalid_argument("neighbour list: too many particles for 32-bit indices");
 
   double rmax = 0.0;
-  bool radii_ok = true;
-#pragma omp parallel for schedule(static) reduction(max : rmax) reduction(&& : radii_ok) if (n >= kNeighborParallelMin)
+  bool radii_ok = true, finite = true;
+#pragma omp parallel for schedule(static) reduction(max : rmax) reduction(&& : radii_ok, finite) if (n >= kNeighborParallelMin)
   for (std::size_t i = 0; i < n; ++i) {
     radii_ok = radii_ok && radius[i] >= 0.0 && std::isfinite(radius[i]);
+    finite = finite && isfinite(x[i]);
     rmax = std::max(rmax, radius[i]);
   }
   if (!radii_ok) throw std::invalid_argument("neighbour list: radii must be finite and >= 0");
+  if (!finite) {  // named here: the size levels' grids see subsets, with their own indices
+    for (std::size_t i = 0; i < n; ++i)
+      if (!isfinite(x[i]))
+        throw std::invalid_argument("neighbour search: particle at index " + std::to_string(i) +
+                                    " has a non-finite position");
+  }
 
   skin_ = skin;
   extra_ = extra_range;
   max_radius_ = rmax;
+  SizeLevels levels = size_levels(radius);
+  if (levels.count() > 1) {
+    build_levels(x, radius, levels, owned, id);
+  } else {
+    build_single(x, radius, owned, id);
+  }
+  x_build_.assign(x.begin(), x.end());
+  owned_ = owned;
+  built_ = true;
+}
+
+void VerletList::build_single(std::span<const Vec3> x, std::span<const double> radius, std::size_t owned,
+                              std::span<const std::int64_t> id) {
+  const std::size_t n = x.size();
+  const bool ghosts = owned < n;
+  const double extra_range = extra_, skin = skin_;
   // Any listed pair is closer than 2 R_max + extra + skin, so it lies in adjacent cells.
   CellGrid grid;
-  grid.build(x, 2.0 * rmax + extra_range + skin);
+  grid.build(x, 2.0 * max_radius_ + extra_range + skin);
   grid_stats_ = {grid.num_cells(),    grid.hash_slots(),      grid.dense_slots(),
                  grid.memory_bytes(), grid.uses_morton_key(), grid.uses_dense_index()};
 
   // Centres and radii in cell order: the inner loop then streams contiguous memory.
   const auto sorted = grid.sorted();
   const auto start = grid.cell_start();
-  std::vector<Vec3> xs(n);                             // m
-  std::vector<double> rs(n);                           // m
-  std::vector<std::int64_t> ids(ghosts ? n : 0);       // ids in cell order (with ghosts only)
-  std::vector<std::vector<std::uint32_t>> thread_buf;  // per-thread pair buffers
+  std::vector<Vec3> xs(n);                        // m
+  std::vector<double> rs(n);                      // m
+  std::vector<std::int64_t> ids(ghosts ? n : 0);  // ids in cell order (with ghosts only)
 #pragma omp parallel for schedule(static) if (n >= kNeighborParallelMin)
   for (std::size_t k = 0; k < n; ++k) {
     xs[k] = x[sorted[k]];
     rs[k] = radius[sorted[k]];
     if (ghosts) ids[k] = id[sorted[k]];
   }
-  x_build_.assign(x.begin(), x.end());
-  owned_ = owned;
-  offset_.assign(n + 1, 0);
 
-  // Each thread owns a contiguous block of i: it writes only those counts and its own buffer,
-  // so the result is the same for any number of threads. Counts -> exclusive scan -> copy.
-#pragma omp parallel if (n >= kNeighborParallelMin)
-  {
-    const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
-    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
-#pragma omp single
-    thread_buf.resize(nt);
-    std::vector<std::uint32_t>& buf = thread_buf[t];
-    std::size_t used = 0;                                              // entries of buf in use
-    const std::size_t lo = owned * t / nt, hi = owned * (t + 1) / nt;  // ghosts list no pairs
-    std::uint32_t cell_buf[27];
-    int ncells = 0;
-    std::uint32_t last_cell = CellGrid::kNone;
-    for (std::size_t i = lo; i < hi; ++i) {
-      const std::size_t first = used;
+  fill_rows(n, owned, offset_, index_, [&] {
+    return [&, cell_buf = std::array<std::uint32_t, 27>{}, ncells = 0,
+            last_cell = CellGrid::kNone](std::size_t i, std::vector<std::uint32_t>& buf, std::size_t& used) mutable {
       const Vec3 xi = x[i];
       const double ri = radius[i];
       const std::uint32_t cell = grid.cell_of(i);
       if (cell != last_cell) {  // particles come in space-filling-curve order: cells repeat
-        ncells = grid.neighbor_cells(cell, cell_buf);
+        ncells = grid.neighbor_cells(cell, cell_buf.data());
         last_cell = cell;
       }
-      const std::span<const std::uint32_t> cells(cell_buf, static_cast<std::size_t>(ncells));
+      const std::span<const std::uint32_t> cells(cell_buf.data(), static_cast<std::size_t>(ncells));
       std::size_t candidates = 0;
       for (std::uint32_t nc : cells) candidates += start[nc + 1] - start[nc];
-      if (buf.size() < used + candidates) buf.resize(std::max(2 * buf.size(), used + candidates));
+      reserve_row(buf, used, candidates);
       std::uint32_t* out = buf.data();
       // Branch-free filter: every candidate is written, the slot is kept only on a hit (the
       // j > i and distance tests are data-dependent coin flips a branch predictor loses).
@@ -123,19 +189,99 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
           }
         }
       }
-      sort_short(out + first, out + used);
-      offset_[i + 1] = used - first;
+    };
+  });
+}
+
+void VerletList::build_levels(std::span<const Vec3> x, std::span<const double> radius, const SizeLevels& levels,
+                              std::size_t owned, std::span<const std::int64_t> id) {
+  const std::size_t n = x.size();
+  const bool ghosts = owned < n;
+  const double extra_range = extra_, skin = skin_;
+  // Each level in cells of side 2 R_max(level) + extra + skin, its particles in cell order.
+  std::vector<LevelCells> cells(levels.count());
+  std::vector<std::vector<std::uint32_t>> members(levels.count());
+  for (std::size_t i = 0; i < n; ++i) members[levels.level[i]].push_back(static_cast<std::uint32_t>(i));
+  grid_stats_ = {};
+  for (std::size_t l = 0; l < cells.size(); ++l) {
+    LevelCells& c = cells[l];
+    const std::vector<std::uint32_t>& m = members[l];
+    const std::size_t nl = m.size();
+    if (nl == 0) continue;
+    c.r_max = levels.r_max[l];
+    std::vector<Vec3> xl(nl);
+    Vec3 lo = x[m[0]], hi = x[m[0]];  // m, the level's bounding box
+    for (std::size_t k = 0; k < nl; ++k) {
+      xl[k] = x[m[k]];
+      lo = {std::min(lo.x, xl[k].x), std::min(lo.y, xl[k].y), std::min(lo.z, xl[k].z)};
+      hi = {std::max(hi.x, xl[k].x), std::max(hi.y, xl[k].y), std::max(hi.z, xl[k].z)};
     }
-#pragma omp barrier
-#pragma omp single
-    {
-      for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
-      index_.resize(offset_[n]);
+    // A sparse level (a few small spheres among large ones) gets cells of about one particle each,
+    // so that a large sphere's search box on it spans a few cells rather than thousands of empty
+    // ones; a wider cell only adds candidates, never loses a pair.
+    const double side = 2.0 * c.r_max + extra_range + skin;
+    const double volume = (hi.x - lo.x + side) * (hi.y - lo.y + side) * (hi.z - lo.z + side);  // m^3
+    c.grid.build(xl, std::max(side, std::cbrt(volume / static_cast<double>(nl))));
+    c.index.resize(nl);
+    c.x.resize(nl);
+    c.r.resize(nl);
+    c.id.resize(ghosts ? nl : 0);
+    const auto sorted = c.grid.sorted();
+    for (std::size_t k = 0; k < nl; ++k) {
+      const std::uint32_t i = m[sorted[k]];
+      c.index[k] = i;
+      c.x[k] = x[i];
+      c.r[k] = radius[i];
+      if (ghosts) c.id[k] = id[i];
     }
-    std::copy(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(used),
-              index_.begin() + static_cast<std::ptrdiff_t>(offset_[lo]));
+    grid_stats_.cells += c.grid.num_cells();
+    grid_stats_.hash_slots += c.grid.hash_slots();
+    grid_stats_.dense_slots += c.grid.dense_slots();
+    grid_stats_.bytes += c.grid.memory_bytes();
   }
-  built_ = true;
+  members = {};
+  grid_stats_.morton_key = grid_stats_.dense_index = true;
+  for (const LevelCells& c : cells) {
+    if (c.index.empty()) continue;
+    grid_stats_.morton_key = grid_stats_.morton_key && c.grid.uses_morton_key();
+    grid_stats_.dense_index = grid_stats_.dense_index && c.grid.uses_dense_index();
+  }
+  grid_stats_.levels = cells.size();
+
+  // Row i searches every level over the cells its largest pair range with that level can reach.
+  fill_rows(n, owned, offset_, index_, [&] {
+    return [&](std::size_t i, std::vector<std::uint32_t>& buf, std::size_t& used) {
+      const Vec3 xi = x[i];
+      const double ri = radius[i];
+      const std::int64_t idi = ghosts ? id[i] : 0;
+      for (const LevelCells& level : cells) {
+        if (level.index.empty()) continue;
+        const CellGrid& g = level.grid;
+        const double reach = (ri + level.r_max + extra_range + skin) * kReachPad;
+        const Vec3 span{reach, reach, reach};
+        CellCoord lo = g.coord_of(xi - span), hi = g.coord_of(xi + span);
+        lo = {std::max<std::int64_t>(lo.x, 0), std::max<std::int64_t>(lo.y, 0), std::max<std::int64_t>(lo.z, 0)};
+        hi = {std::min(hi.x, g.dim(0) - 1), std::min(hi.y, g.dim(1) - 1), std::min(hi.z, g.dim(2) - 1)};
+        const auto start = g.cell_start();
+        for (std::int64_t cz = lo.z; cz <= hi.z; ++cz)
+          for (std::int64_t cy = lo.y; cy <= hi.y; ++cy)
+            for (std::int64_t cx = lo.x; cx <= hi.x; ++cx) {
+              const std::uint32_t c = g.find({cx, cy, cz});
+              if (c == CellGrid::kNone) continue;
+              reserve_row(buf, used, start[c + 1] - start[c]);
+              std::uint32_t* out = buf.data();
+              for (std::uint32_t k = start[c]; k < start[c + 1]; ++k) {
+                const std::uint32_t j = level.index[k];
+                const Vec3 d = level.x[k] - xi;
+                const double cut = ri + level.r[k] + extra_range + skin;  // the same criterion
+                const bool second = j < owned ? j > i : idi < level.id[k];
+                out[used] = j;
+                used += static_cast<std::size_t>(second & (norm2(d) < cut * cut));
+              }
+            }
+      }
+    };
+  });
 }
 
 double VerletList::max_displacement(std::span<const Vec3> x) const {

@@ -19,6 +19,7 @@
 
 #include "core/vec3.hpp"
 #include "neighbor/cell_grid.hpp"
+#include "neighbor/size_levels.hpp"
 
 namespace mpdem {
 
@@ -62,8 +63,9 @@ class VerletList {
   // (rebuilds are rare; between them the memory matters more), so only its figures are kept.
   struct GridStats {
     std::size_t cells = 0, hash_slots = 0, dense_slots = 0;
-    std::size_t bytes = 0;  // held by the grid during the build
-    bool morton_key = false, dense_index = false;
+    std::size_t bytes = 0;                         // held by the grid during the build
+    bool morton_key = false, dense_index = false;  // of every level's grid (false: some level's was not)
+    std::size_t levels = 1;                        // size levels, one grid each (size_levels.hpp)
   };
   const GridStats& grid_stats() const { return grid_stats_; }
   std::size_t memory_bytes() const;  // bytes held between builds
@@ -78,6 +80,13 @@ class VerletList {
   std::vector<Vec3> x_build_;           // [N] m, centres at build time
   std::vector<std::size_t> offset_{0};  // [N+1] CSR offsets
   std::vector<std::uint32_t> index_;    // [pairs] neighbour indices
+
+  // The two searches behind build(), the same pairs either way: one grid for radii within a
+  // factor 2, else a grid per size level (size_levels.hpp).
+  void build_single(std::span<const Vec3> x, std::span<const double> radius, std::size_t owned,
+                    std::span<const std::int64_t> id);
+  void build_levels(std::span<const Vec3> x, std::span<const double> radius, const SizeLevels& levels,
+                    std::size_t owned, std::span<const std::int64_t> id);
 };
 
 }  // namespace mpdem

@@ -4,7 +4,9 @@
 #include <omp.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdint>
+#include <random>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -57,9 +59,29 @@ std::vector<Cloud> test_clouds() {
   return {clustered(2000, 1), spread(2000, 0.15, 2, 1e4), spread(2000, 0.08, 3, 1e5)};
 }
 
+// The test clouds with radii squeezed into [kR0, 1.9 kR0]: one size level, one grid.
+Cloud narrow(Cloud c) {
+  for (double& r : c.r) r = kR0 + 0.9 * (r - kR0) / 4.0;
+  return c;
+}
+
+// Radius ratio 1:20: 1 % of the spheres large (bimodal), or radii uniform in [kR0, 20 kR0].
+Cloud wide(std::size_t n, bool bimodal, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 0.12), ur(kR0, 20 * kR0);
+  Cloud c;
+  for (std::size_t i = 0; i < n; ++i) {
+    c.x.push_back({u(rng), u(rng), u(rng)});
+    c.r.push_back(bimodal ? (i % 100 == 37 ? 20 * kR0 : kR0) : ur(rng));
+  }
+  return c;
+}
+
 TEST(VerletList, MatchesBruteForceForSeveralSkinsAndExtraRange) {
   int fast_paths = 0, dense_index = 0, builds = 0;
-  for (const Cloud& c : test_clouds()) {
+  std::vector<Cloud> clouds = test_clouds();                         // radii 1:5: size levels
+  for (const Cloud& c : test_clouds()) clouds.push_back(narrow(c));  // one grid
+  for (const Cloud& c : clouds) {
     for (double skin : {0.0, 0.1 * kR0, 0.5 * kR0, 2.0 * kR0}) {
       for (double extra : {0.0, 1.5 * kR0}) {
         VerletList l;
@@ -68,7 +90,7 @@ TEST(VerletList, MatchesBruteForceForSeveralSkinsAndExtraRange) {
         dense_index += l.grid_stats().dense_index;
         ++builds;
         const PairSet expect = brute_pairs(c, skin, extra);
-        EXPECT_GT(expect.size(), 100u) << "test set must have pairs to be meaningful";
+        EXPECT_GT(expect.size(), 50u) << "test set must have pairs to be meaningful";
         EXPECT_EQ(list_pairs(l), expect) << "skin " << skin << " extra " << extra;
         EXPECT_EQ(l.num_pairs(), expect.size());
       }
@@ -79,6 +101,66 @@ TEST(VerletList, MatchesBruteForceForSeveralSkinsAndExtraRange) {
   EXPECT_LT(fast_paths, builds);
   EXPECT_GT(dense_index, 0);
   EXPECT_LT(dense_index, builds);
+}
+
+TEST(VerletList, OneGridForNarrowRadiiMatchesBruteForce) {
+  for (const Cloud& wide_cloud : test_clouds()) {
+    const Cloud c = narrow(wide_cloud);
+    for (double skin : {0.0, 0.5 * kR0}) {
+      VerletList l;
+      l.build(c.x, c.r, skin, 1.5 * kR0);
+      EXPECT_EQ(l.grid_stats().levels, 1u);
+      const PairSet expect = brute_pairs(c, skin, 1.5 * kR0);
+      EXPECT_GT(expect.size(), 100u);
+      EXPECT_EQ(list_pairs(l), expect) << "skin " << skin;
+    }
+  }
+}
+
+TEST(VerletList, SizeLevelsMatchBruteForceForRatioOneToTwenty) {
+  for (bool bimodal : {true, false}) {
+    const Cloud c = wide(3000, bimodal, bimodal ? 31 : 32);
+    for (double skin : {0.0, 0.2 * kR0}) {
+      for (double extra : {0.0, 1.5 * kR0}) {
+        VerletList l;
+        l.build(c.x, c.r, skin, extra);
+        EXPECT_EQ(l.grid_stats().levels, 5u);  // 1, 2, 4, 8, 16 R_min
+        const PairSet expect = brute_pairs(c, skin, extra);
+        EXPECT_GT(expect.size(), 1000u);
+        EXPECT_EQ(list_pairs(l), expect) << (bimodal ? "bimodal" : "uniform") << " skin " << skin;
+        // The large spheres' rows are long (their neighbours are found in the finer levels).
+        std::size_t longest = 0;
+        for (std::size_t i = 0; i < l.size(); ++i) longest = std::max(longest, l.neighbors(i).size());
+        EXPECT_GT(longest, 32u);
+      }
+    }
+  }
+}
+
+// Ghosts (periodic images or halo copies) are second members only, paired with an owned particle
+// of smaller id: the same rule on one grid and on the size levels.
+TEST(VerletList, GhostRuleHoldsOnOneGridAndOnSizeLevels) {
+  for (bool several : {false, true}) {
+    const Cloud c = several ? wide(2000, false, 41) : narrow(clustered(2000, 42));
+    const std::size_t owned = 1500;
+    std::vector<std::int64_t> id(c.x.size());
+    for (std::size_t i = 0; i < id.size(); ++i) id[i] = static_cast<std::int64_t>((i * 7919) % 2003);
+    PairSet expect;
+    for (std::uint32_t i = 0; i < owned; ++i)
+      for (std::uint32_t j = 0; j < c.x.size(); ++j) {
+        const bool second = j < owned ? j > i : id[i] < id[j];
+        const double cut = c.r[i] + c.r[j] + 0.0 + 0.3 * kR0;
+        if (second && norm2(c.x[j] - c.x[i]) < cut * cut) expect.insert({i, j});
+      }
+    VerletList l;
+    l.build(c.x, c.r, 0.3 * kR0, 0.0, owned, id);
+    EXPECT_EQ(l.grid_stats().levels, several ? 5u : 1u);
+    PairSet got;
+    for (std::uint32_t i = 0; i < l.size(); ++i)
+      for (std::uint32_t j : l.neighbors(i)) got.insert({i, j});
+    EXPECT_GT(expect.size(), 500u);
+    EXPECT_EQ(got, expect);
+  }
 }
 
 TEST(VerletList, KeepsEveryTruePairWhileMotionBelowHalfSkin) {
@@ -124,7 +206,10 @@ TEST(VerletList, NeedsRebuildFlipsExactlyAtHalfSkin) {
 
 TEST(VerletList, IdenticalForOneTwoAndFourThreads) {
   const int saved = omp_get_max_threads();
-  for (const Cloud& c : test_clouds()) {
+  std::vector<Cloud> clouds = test_clouds();
+  clouds.push_back(narrow(clustered(2000, 1)));
+  clouds.push_back(wide(3000, true, 5));
+  for (const Cloud& c : clouds) {
     std::vector<std::vector<std::size_t>> offs;
     std::vector<std::vector<std::uint32_t>> idx;
     for (int nt : {1, 2, 4}) {

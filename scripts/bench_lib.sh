@@ -1,5 +1,6 @@
-# Shared by scripts/bench_vs_liggghts.sh, bench_silo_vs_liggghts.sh and scaling.sh (sourced): the tools they need,
-# the beds, LIGGGHTS's timed run, and the parsing of results. Expects ROOT (the repository).
+# Shared by scripts/bench_vs_liggghts.sh, bench_silo_vs_liggghts.sh, bench_size_ratio.sh and scaling.sh
+# (sourced): the tools they need, the beds, LIGGGHTS's timed run, scene templates, and the parsing
+# of results. Expects ROOT (the repository).
 
 # Installs LIGGGHTS, Open MPI and GNU time when missing (NO_INSTALL=1: fail instead).
 bench_tools() {
@@ -20,6 +21,21 @@ bench_tools() {
 # default spin (src/cli/openmp_environment.hpp) given explicitly, since mpdem leaves the OpenMP
 # environment alone under a binding.
 MPDEM_OMP_ENV=(GOMP_SPINCOUNT=1000 OMP_PROC_BIND=close)
+
+# fill_template SRC DST KEY VALUE [KEY VALUE ...]: DST is SRC with every @KEY@ replaced by VALUE
+# (values may span lines and hold any character).
+fill_template() {
+  /usr/bin/python3 - "$@" <<'PYEOF'
+import sys
+src, dst, pairs = sys.argv[1], sys.argv[2], sys.argv[3:]
+t = open(src).read()
+for k, v in zip(pairs[::2], pairs[1::2]):
+    t = t.replace("@" + k + "@", v)
+open(dst, "w").write(t)
+PYEOF
+}
+# run_seconds FILE...: the time loop's wall time (s) from `mpdem run`'s "done: ... steps in X s" line
+run_seconds() { sed -n 's/^done: .* steps in \([0-9.e+-]*\) s .*/\1/p' "$@" | head -1; }
 
 # median of the numbers on stdin (blank-separated)
 median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{a[NR]=$1} END {if (NR%2) print a[(NR+1)/2]; else print (a[NR/2]+a[NR/2+1])/2}'; }

@@ -48,15 +48,8 @@ WORK="$(cd "$WORK" && pwd)"
 
 # scene FILE PARTICLES LID DURATION OUTDIR CSV_EVERY: an mpdem scene from silo.toml.in.
 scene() {
-  "$PY" - "$SILO/silo.toml.in" "$@" <<'PYEOF'
-import sys
-src, f, parts, lid, dur, out, csv = sys.argv[1:8]
-t = open(src).read()
-for k, v in {"PARTICLES": parts, "LID": lid, "DURATION": dur, "INTEGRATOR": "verlet", "OUTDIR": out,
-             "CSV_EVERY": csv}.items():
-    t = t.replace("@" + k + "@", v)
-open(f, "w").write(t)
-PYEOF
+  fill_template "$SILO/silo.toml.in" "$1" PARTICLES "$2" LID "$3" DURATION "$4" INTEGRATOR verlet OUTDIR "$5" \
+    CSV_EVERY "$6"
 }
 
 # 1. The hopper and the settled bed (once per PARTICLES).
@@ -116,7 +109,7 @@ for th in $THREADS; do
       scene "$dir/scene.toml" particles.csv "" "$DURATION" out 0
       env "${MPDEM_OMP_ENV[@]}" /usr/bin/time -v "$exe" run "$dir/scene.toml" --threads "$th" --overwrite \
         > "$dir/run.out" 2> "$dir/run.err"
-      secs=$(sed -n 's/^done: .* steps in \([0-9.e+-]*\) s .*/\1/p' "$dir/run.out" "$dir/run.err" | head -1)
+      secs=$(run_seconds "$dir/run.out" "$dir/run.err")
       awk -F, 'NR == 1 {for (i = 1; i <= NF; i++) if ($i == "particles") c = i; next} {print $1, $c}' \
         "$dir/out/log.csv" > "$dir/counts"
       read -r ps rate < <(count_stats "$dir/counts")

@@ -40,27 +40,16 @@ N="${N:-8000}"
 NU="${NU:-2000}"
 STEPS="${STEPS:-10000}"
 POUR="${POUR:-0.1}"
-PY=/usr/bin/python3
 TEMPLATE="$ROOT/bench/size_ratio/mixture.toml.in"
 
 # shellcheck source=bench_lib.sh
 . "$ROOT/scripts/bench_lib.sh"
 [ -x "$MPDEM" ] || { echo "no mpdem executable at $MPDEM (build it, or set MPDEM)" >&2; exit 2; }
-[ -x /usr/bin/time ] || { echo "GNU time (/usr/bin/time) is needed: apt-get install time" >&2; exit 2; }
 mkdir -p "$WORK"
 WORK="$(cd "$WORK" && pwd)"
 
 # scene FILE SOURCE DURATION CSV_EVERY: an mpdem scene from the template.
-scene() {
-  "$PY" - "$TEMPLATE" "$@" <<'PYEOF'
-import sys
-src, f, source, dur, csv = sys.argv[1:6]
-t = open(src).read()
-for k, v in {"SOURCE": source, "DURATION": dur, "CSV_EVERY": csv}.items():
-    t = t.replace("@" + k + "@", v)
-open(f, "w").write(t)
-PYEOF
-}
+scene() { fill_template "$TEMPLATE" "$1" SOURCE "$2" DURATION "$3" CSV_EVERY "$4"; }
 
 # settle NAME CLASS...: generates the classes "COUNT|RADIUS_TABLE|MEAN_R3|R_MAX" (radius table in
 # TOML, mean r^3 in m^3, largest radius in m), the first at the bottom, each in a layer of the
@@ -114,7 +103,8 @@ settle_run() {
     "$(ls "$1"/settle/out/particles_csv/*.csv | tail -1)" > "$1/particles.csv"
 }
 
-# timed EXE NAME THREADS TAG: one timed run; prints "seconds contacts ns_per_contact_step".
+# timed EXE NAME THREADS TAG: one timed run; prints "seconds contacts ns_per_contact_step
+# ns_per_particle_step" (contacts: the mean of the log rows after the first; particles: the first row's).
 timed() {
   local exe=$1 name=$2 th=$3 tag=$4 dir="$WORK/$2/run_$4" steps=$STEPS
   rm -rf "$dir" && mkdir -p "$dir"
@@ -125,10 +115,9 @@ timed() {
     cp "$WORK/$name/particles.csv" "$WORK/$name/box.csv" "$dir/"
     scene "$dir/scene.toml" 'file = "particles.csv"' "$(awk -v s="$STEPS" 'BEGIN {printf "%.10g", s * 4e-6}')" 0
   fi
-  env "${MPDEM_OMP_ENV[@]}" /usr/bin/time -v "$exe" run "$dir/scene.toml" --threads "$th" --overwrite \
-    > "$dir/run.out" 2> "$dir/run.err"
+  env "${MPDEM_OMP_ENV[@]}" "$exe" run "$dir/scene.toml" --threads "$th" --overwrite > "$dir/run.out" 2> "$dir/run.err"
   local secs contacts
-  secs=$(sed -n 's/^done: .* steps in \([0-9.e+-]*\) s .*/\1/p' "$dir/run.out" "$dir/run.err" | head -1)
+  secs=$(run_seconds "$dir/run.out" "$dir/run.err")
   contacts=$(awk -F, 'NR == 1 {for (i = 1; i <= NF; i++) c[$i] = i; next}
                       NR > 2 {s += $c["contacts_pp"] + $c["contacts_pb"]; k++} END {printf "%.1f", s / k}' "$dir/out/log.csv")
   local parts

@@ -114,7 +114,7 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
   skin_ = skin;
   extra_ = extra_range;
   max_radius_ = rmax;
-  SizeLevels levels = size_levels(radius);
+  const SizeLevels levels = size_levels(radius);
   if (levels.count() > 1) {
     build_levels(x, radius, levels, owned, id);
   } else {

@@ -13,6 +13,7 @@ pkgs=(
   libopenmpi-dev openmpi-bin   # MPI domain decomposition (MPDEM_MPI, mpirun)
   clang-format clang-tidy libomp-dev   # scripts/lint.sh (Debian 12: version 14); omp.h for clang-tidy
   python3 python3-numpy python3-matplotlib python3-meshio   # plots; VTU read-back in tests
+  python3-vtk9          # VTK's own reader of the VTU output, in tests (tests/read_vtu.py --vtk)
   python3-dev pybind11-dev python3-pytest   # the Python module (import mpdem) and its tests
 )
 SUDO=""

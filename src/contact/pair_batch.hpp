@@ -54,7 +54,7 @@ struct PairPass {
   const double* __restrict inertia;       // [N] kg m^2 (rolling resistance)
   const int* __restrict material;         // [N] material index
   const PairLaw* __restrict laws;         // [materials x materials] contact table (contact_table.hpp)
-  const std::size_t* __restrict off;      // [N+1] half-list CSR offsets
+  const std::uint32_t* __restrict off;    // [N+1] half-list CSR offsets
   const std::uint32_t* __restrict idx;    // [pairs] second members
   const std::uint32_t* __restrict first;  // [pairs] first members
   Vec3* __restrict force;                 // [N] N, accumulated

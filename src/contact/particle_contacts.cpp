@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/release.hpp"
 #include "core/parallel.hpp"
 #include "physics/tangential.hpp"
 #include "contact/pair_batch.hpp"
@@ -171,6 +172,11 @@ std::size_t ParticleContacts::memory_bytes() const {
 
 ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborSearch& search) {
   CarriedHistory h;
+  // The per-particle terms and the cross-pair shares are recomputed at the next evaluation: free
+  // them before the history is copied out, which is the rebuild's largest transient.
+  release(cross_force_);
+  release(cross_torque_);
+  release(terms_);
   const VerletList& list = search.pairs();
   if (spring_.size() != list.num_pairs()) return h;
   const auto& off = list.offsets();
@@ -210,10 +216,10 @@ ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborS
       if (wr) h.wr0[c] = flip ? -wr0_[k] : wr0_[k];
     }
   // The slot arrays are rebuilt for the new list; free them now (peak memory).
-  spring_ = {};
-  vt0_ = {};
-  wr0_ = {};
-  slipped_ = {};
+  release(spring_);
+  release(vt0_);
+  release(wr0_);
+  release(slipped_);
   return h;
 }
 

@@ -1,5 +1,6 @@
 #include "neighbor/barrier_broadphase.hpp"
 
+#include "core/release.hpp"
 #include "neighbor/cell_grid.hpp"  // kNeighborParallelMin
 #include "physics/triangle_closest_point.hpp"
 
@@ -79,6 +80,13 @@ std::uint32_t BarrierBroadphase::build_node(std::uint32_t begin, std::uint32_t e
   return me;
 }
 
+void BarrierBroadphase::release_candidates() {
+  offset_ = std::vector<std::uint32_t>{0};
+  release(index_);
+  release(active_);
+  built_ = false;
+}
+
 void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> radius, const Barriers& barriers,
                               double skin) {
   const std::size_t n = x.size(), m = barriers.size();
@@ -128,6 +136,7 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
 
   // One query per particle; each thread owns a contiguous block of particles (see VerletList).
   offset_.assign(n + 1, 0);
+  bool too_many = false;
 #pragma omp parallel if (n >= kNeighborParallelMin)
   {
     const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
@@ -165,20 +174,31 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
         }
       }
       std::sort(buf.begin() + static_cast<std::ptrdiff_t>(first), buf.end());
-      offset_[i + 1] = buf.size() - first;
+      offset_[i + 1] = static_cast<std::uint32_t>(buf.size() - first);
       if (buf.size() > first) act.push_back(static_cast<std::uint32_t>(i));
     }
 #pragma omp barrier
 #pragma omp single
     {
-      for (std::size_t i = 0; i < n; ++i) offset_[i + 1] += offset_[i];
-      index_.resize(offset_[n]);
+      std::size_t total = 0;
+      for (std::size_t i = 0; i < n && !too_many; ++i) {
+        total += offset_[i + 1];
+        too_many = total > std::numeric_limits<std::uint32_t>::max();
+        offset_[i + 1] = static_cast<std::uint32_t>(total);
+      }
+      index_.resize(too_many ? 0 : total);
       active_start_.assign(nt + 1, 0);
       for (std::size_t k = 0; k < nt; ++k) active_start_[k + 1] = active_start_[k] + thread_active_[k].size();
       active_.resize(active_start_[nt]);
     }
-    std::copy(buf.begin(), buf.end(), index_.begin() + static_cast<std::ptrdiff_t>(offset_[lo]));
-    std::copy(act.begin(), act.end(), active_.begin() + static_cast<std::ptrdiff_t>(active_start_[t]));
+    if (!too_many) {
+      std::copy(buf.begin(), buf.end(), index_.begin() + static_cast<std::ptrdiff_t>(offset_[lo]));
+      std::copy(act.begin(), act.end(), active_.begin() + static_cast<std::ptrdiff_t>(active_start_[t]));
+    }
+  }
+  if (too_many) {
+    release_candidates();
+    throw std::invalid_argument("barrier broad phase: more than 2^32 - 1 candidates for 32-bit offsets");
   }
   built_ = true;
   ++generation_;

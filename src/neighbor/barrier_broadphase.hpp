@@ -42,6 +42,8 @@ class BarrierBroadphase {
   // Throws std::invalid_argument for mismatched sizes, a negative skin or thickness, or
   // non-finite input.
   void build(std::span<const Vec3> x, std::span<const double> radius, const Barriers& barriers, double skin);
+  // Frees the per-particle candidates before a rebuild (peak memory): none until the next build.
+  void release_candidates();
 
   std::size_t size() const { return offset_.size() - 1; }            // N at the last build
   std::size_t num_elements() const { return offset_build_.size(); }  // M at the last build
@@ -50,8 +52,8 @@ class BarrierBroadphase {
   std::span<const std::uint32_t> candidates(std::size_t i) const {
     return {index_.data() + offset_[i], offset_[i + 1] - offset_[i]};
   }
-  const std::vector<std::size_t>& offsets() const { return offset_; }   // [N+1]
-  const std::vector<std::uint32_t>& indices() const { return index_; }  // [num_candidates]
+  const std::vector<std::uint32_t>& offsets() const { return offset_; }  // [N+1]
+  const std::vector<std::uint32_t>& indices() const { return index_; }   // [num_candidates]
   // Particles with at least one candidate, ascending (so per-contact work can skip the rest).
   const std::vector<std::uint32_t>& active() const { return active_; }
 
@@ -87,7 +89,7 @@ class BarrierBroadphase {
   std::vector<Vec3> vertex_build_;          // [3M] m, current vertices of each element at the build
   bool rotating_build_ = false;             // the barriers rotated at the build
   std::vector<std::uint8_t> active_build_;  // [M] -, Barriers::active at build (only when timed; else empty)
-  std::vector<std::size_t> offset_{0};      // [N+1] CSR offsets
+  std::vector<std::uint32_t> offset_{0};    // [N+1] CSR offsets (at most 2^32 - 1 candidates)
   std::vector<std::uint32_t> index_;        // [candidates] element indices
   std::vector<std::uint32_t> active_;       // [particles with candidates] indices, ascending
   std::vector<std::vector<std::uint32_t>> thread_buf_;

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/release.hpp"
+
 namespace mpdem {
 
 namespace {
@@ -153,9 +155,9 @@ void CellGrid::build(std::span<const Vec3> x, double cell_side, bool find_neighb
   sort_particles(n);
   index_cells(find_neighbors);
   // Sort scratch and per-particle coordinates are not needed after the build (peak memory).
-  pcoord_ = {};
-  keys_ = {};
-  keys_tmp_ = {};
+  release(pcoord_);
+  release(keys_);
+  release(keys_tmp_);
 }
 
 void CellGrid::sort_particles(std::size_t n) {

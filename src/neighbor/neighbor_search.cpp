@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/release.hpp"
 #include "neighbor/size_levels.hpp"
 #include "neighbor/spatial_order.hpp"
 
@@ -16,10 +17,18 @@ bool NeighborSearch::needs_rebuild(const Particles& p, const Barriers& b) const 
   return broad_.needs_rebuild(b, list_.max_displacement(p.x));
 }
 
-void NeighborSearch::rebuild(Particles& p, const Barriers& b) {
+void NeighborSearch::rebuild(Particles& p, const Barriers& b, const std::function<void()>& after_list) {
   p.drop_ghosts();
-  build(p, p.x, b);
+  build(p, p.x, b, after_list);
   ++rebuilds_;
+}
+
+void NeighborSearch::release_for_rebuild() {
+  list_.release_build_positions();
+  broad_.release_candidates();
+  blocks_.clear();
+  release(in_offset_);
+  release(in_slot_);
 }
 
 void NeighborSearch::save(BinaryWriter& w, std::span<const Vec3> build_positions) const {
@@ -62,7 +71,8 @@ void NeighborSearch::decompose(const Communicator& comm, BrickGrid grid) {
   halo_ = std::make_unique<HaloExchange>(comm, std::move(grid));
 }
 
-void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Barriers& b) {
+void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Barriers& b,
+                           const std::function<void()>& after_list) {
   ++generation_;
   const std::size_t owned = p.size();
   std::vector<Vec3> x_all;  // m, build positions of the owned particles and their ghosts
@@ -89,15 +99,15 @@ void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Ba
     x = x_all;
   }
   const std::span<const double> radius(p.radius.data(), owned);
-  list_.build(x, p.radius, skin_, extra_, owned, p.id);
+  list_.build(x, p.radius, skin_, extra_, owned, p.id, after_list);
   broad_.build(x.first(owned), radius, b, skin_);
   barrier_offsets_build_ = b.offset;
   rotating_build_ = b.rotating();
   barrier_time_build_ = b.time;
   blocks_.build(list_);
   if (!want_incoming_) {
-    in_offset_ = {};
-    in_slot_ = {};
+    release(in_offset_);
+    release(in_slot_);
     return;
   }
   const std::size_t n = x.size();  // ghosts included: they are second members too

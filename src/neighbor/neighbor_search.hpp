@@ -4,6 +4,7 @@
 // barrier displacement since the last build exceeds skin/2. Also the transposed pair index used
 // to gather pair forces deterministically.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -48,8 +49,15 @@ class NeighborSearch {
   bool stale(const Particles& p) const {
     return list_.owned() != p.size() || (halo_ ? halo_->size() : images_.size()) != p.n_ghost;
   }
-  // Builds the lists for the current positions, replacing p's ghosts by new ones.
-  void rebuild(Particles& p, const Barriers& b);
+  // Builds the lists for the current positions, replacing p's ghosts by new ones. after_list,
+  // when given, runs once the pairs are listed, before the list stores its build positions and
+  // before the barrier candidates and pair blocks are built: what it allocates (the new contact
+  // history) does not meet them (peak memory).
+  void rebuild(Particles& p, const Barriers& b, const std::function<void()>& after_list = {});
+  // Frees what a rebuild recomputes and reading the old pairs does not need - the build
+  // positions, barrier candidates, pair blocks and transposed index - before the old contact
+  // history is carried out (peak memory). Until the next rebuild only pairs() may be read.
+  void release_for_rebuild();
   // Wraps the owned particles into the periodic domain (between steps only; then rebuild).
   void wrap(Particles& p) const { images_.wrap(p); }
   // Copies the owned particles' state onto their ghosts (every evaluation) ...
@@ -112,7 +120,8 @@ class NeighborSearch {
   std::vector<std::uint32_t> in_slot_;  // [pairs] slots, grouped by second member
 
   // Builds for the owned particles' positions x_owned [N] (m): ghosts, lists, candidates.
-  void build(Particles& p, std::span<const Vec3> x_owned, const Barriers& b);
+  void build(Particles& p, std::span<const Vec3> x_owned, const Barriers& b,
+             const std::function<void()>& after_list = {});
 };
 
 }  // namespace mpdem

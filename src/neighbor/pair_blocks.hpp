@@ -26,6 +26,7 @@ class PairBlocks {
                                                // must not depend on it changing with threads)
 
   void build(const VerletList& list);
+  void clear() { *this = PairBlocks{}; }  // frees everything: no blocks until the next build
 
   std::size_t num_blocks() const { return cross_base_.size() - 1; }
   std::size_t num_cross() const { return cross_base_.back(); }

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/release.hpp"
+
 namespace mpdem {
 
 namespace {
@@ -27,27 +29,39 @@ void sort_row(std::uint32_t* first, std::uint32_t* last) {
   }
 }
 
-// Grows buf so that `more` entries fit after the first `used`.
+// Grows buf so that `more` entries fit after the first `used`, by a quarter at least: exact
+// reservations keep the list's transient memory near its final size (resize alone doubles).
 void reserve_row(std::vector<std::uint32_t>& buf, std::size_t used, std::size_t more) {
-  if (buf.size() < used + more) buf.resize(std::max(2 * buf.size(), used + more));
+  if (buf.size() >= used + more) return;
+  const std::size_t want = std::max(used + more, buf.size() + buf.size() / 4);
+  if (want > buf.capacity()) buf.reserve(want);
+  buf.resize(want);
 }
 
 // Fills the CSR rows of the owned particles [0, owned) of n: make() gives each thread its row
 // finder, row(i, buf, used), which appends the neighbours j of row i to buf from position used.
 // Each thread owns a contiguous block of rows: it writes only those counts and its own buffer,
 // so the result is the same for any number of threads. Counts -> exclusive scan -> copy.
+// Thread 0's rows come first: it writes them into `index` itself, which keeps its storage from
+// the last build, so one thread needs no second copy of the list.
 template <class MakeRow>
-void fill_rows(std::size_t n, std::size_t owned, std::vector<std::size_t>& offset, std::vector<std::uint32_t>& index,
+void fill_rows(std::size_t n, std::size_t owned, std::vector<std::uint32_t>& offset, std::vector<std::uint32_t>& index,
                MakeRow&& make) {
   offset.assign(n + 1, 0);
-  std::vector<std::vector<std::uint32_t>> thread_buf;  // per-thread pair buffers
+  bool too_many = false;                               // more than 2^32 - 1 pairs: beyond the 32-bit offsets
+  std::vector<std::vector<std::uint32_t>> thread_buf;  // pair buffers of threads 1, 2, ...
+  std::size_t share = 0;                               // expected entries per thread (last build)
 #pragma omp parallel if (n >= kNeighborParallelMin)
   {
     const std::size_t nt = static_cast<std::size_t>(omp_get_num_threads());
     const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
 #pragma omp single
-    thread_buf.resize(nt);
-    std::vector<std::uint32_t>& buf = thread_buf[t];
+    {
+      thread_buf.resize(nt);
+      share = index.size() / nt + index.size() / (8 * nt);
+    }
+    std::vector<std::uint32_t>& buf = t == 0 ? index : thread_buf[t];
+    if (t > 0) buf.reserve(share);
     std::size_t used = 0;                                              // entries of buf in use
     const std::size_t lo = owned * t / nt, hi = owned * (t + 1) / nt;  // ghosts list no pairs
     auto row = make();
@@ -55,17 +69,27 @@ void fill_rows(std::size_t n, std::size_t owned, std::vector<std::size_t>& offse
       const std::size_t first = used;
       row(i, buf, used);
       sort_row(buf.data() + first, buf.data() + used);
-      offset[i + 1] = used - first;
+      offset[i + 1] = static_cast<std::uint32_t>(used - first);
     }
 #pragma omp barrier
 #pragma omp single
     {
-      for (std::size_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
-      index.resize(offset[n]);
+      std::size_t total = 0;
+      for (std::size_t i = 0; i < n && !too_many; ++i) {
+        total += offset[i + 1];
+        too_many = total > std::numeric_limits<std::uint32_t>::max();
+        offset[i + 1] = static_cast<std::uint32_t>(total);
+      }
+      if (!too_many) {
+        if (total > index.capacity()) index.reserve(total);  // exactly: resize alone may double
+        index.resize(total);                                 // keeps thread 0's rows at the front
+      }
     }
-    std::copy(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(used),
-              index.begin() + static_cast<std::ptrdiff_t>(offset[lo]));
+    if (t > 0 && !too_many)
+      std::copy(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(used),
+                index.begin() + static_cast<std::ptrdiff_t>(offset[lo]));
   }
+  if (too_many) throw std::invalid_argument("neighbour list: more than 2^32 - 1 pairs for 32-bit offsets");
 }
 
 // One size level's particles binned in cells of their own side, in cell order.
@@ -83,7 +107,7 @@ constexpr double kReachPad = 1.0 + 1e-9;
 }  // namespace
 
 void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range,
-                       std::size_t owned, std::span<const std::int64_t> id) {
+                       std::size_t owned, std::span<const std::int64_t> id, const std::function<void()>& after_pairs) {
   const std::size_t n = x.size();
   if (radius.size() != n) throw std::invalid_argument("neighbour list: positions and radii differ in size");
   const bool ghosts = owned < n;
@@ -120,9 +144,15 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
   } else {
     build_single(x, radius, owned, id);
   }
-  x_build_.assign(x.begin(), x.end());
   owned_ = owned;
+  if (after_pairs) after_pairs();
+  x_build_.assign(x.begin(), x.end());
   built_ = true;
+}
+
+void VerletList::release_build_positions() {
+  release(x_build_);
+  built_ = false;
 }
 
 void VerletList::build_single(std::span<const Vec3> x, std::span<const double> radius, std::size_t owned,
@@ -239,7 +269,7 @@ void VerletList::build_levels(std::span<const Vec3> x, std::span<const double> r
     grid_stats_.dense_slots += c.grid.dense_slots();
     grid_stats_.bytes += c.grid.memory_bytes();
   }
-  members = {};
+  release(members);
   grid_stats_.morton_key = grid_stats_.dense_index = true;
   for (const LevelCells& c : cells) {
     if (c.index.empty()) continue;
@@ -306,7 +336,7 @@ bool VerletList::needs_rebuild(std::span<const Vec3> x) const {
 }
 
 std::size_t VerletList::memory_bytes() const {
-  return x_build_.capacity() * sizeof(Vec3) + offset_.capacity() * sizeof(std::size_t) +
+  return x_build_.capacity() * sizeof(Vec3) + offset_.capacity() * sizeof(std::uint32_t) +
          index_.capacity() * sizeof(std::uint32_t);
 }
 

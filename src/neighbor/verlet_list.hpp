@@ -14,6 +14,7 @@
 // removing particles (a changed count is detected and reported as needing a rebuild).
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -27,16 +28,21 @@ class VerletList {
  public:
   // x [N] m centres, radius [N] m, skin >= 0 m, extra_range >= 0 m.
   // Throws std::invalid_argument for mismatched sizes, a negative/non-finite skin, extra range
-  // or radius, a non-finite position, or more than 2^32 - 1 particles.
+  // or radius, a non-finite position, or more than 2^32 - 1 particles or pairs.
   void build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range = 0.0) {
     build(x, radius, skin, extra_range, x.size(), {});
   }
   // With ghosts (state/particles.hpp): particles [owned, N) are ghosts, listed only as second
   // members of owned ones, and pair (i, g) only when id[i] < id[g] (a ghost carries its source's
   // id): of the two images of a pair across a periodic boundary, (i, ghost of j) and (j, ghost
-  // of i), exactly one is listed. id [N].
+  // of i), exactly one is listed. id [N]. after_pairs, when given, runs once the pairs are
+  // listed and before the build positions are stored (NeighborSearch::rebuild: peak memory).
   void build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range,
-             std::size_t owned, std::span<const std::int64_t> id);
+             std::size_t owned, std::span<const std::int64_t> id, const std::function<void()>& after_pairs = {});
+
+  // Frees the build positions before a rebuild (peak memory): the pairs stay readable, the list
+  // counts as not built (needs_rebuild) until the next build.
+  void release_build_positions();
 
   std::size_t size() const { return x_build_.size(); }  // N at the last build, ghosts included
   std::size_t owned() const { return owned_; }          // particles that are not ghosts
@@ -45,8 +51,8 @@ class VerletList {
   std::span<const std::uint32_t> neighbors(std::size_t i) const {
     return {index_.data() + offset_[i], offset_[i + 1] - offset_[i]};
   }
-  const std::vector<std::size_t>& offsets() const { return offset_; }   // [N+1]
-  const std::vector<std::uint32_t>& indices() const { return index_; }  // [num_pairs]
+  const std::vector<std::uint32_t>& offsets() const { return offset_; }  // [N+1]
+  const std::vector<std::uint32_t>& indices() const { return index_; }   // [num_pairs]
 
   // Largest |x_i - x_i(build)| (m) over the owned particles (ghosts follow them); x holds the
   // owned particles, with or without the ghosts. +infinity if the count changed since the build.
@@ -77,9 +83,9 @@ class VerletList {
   bool built_ = false;
   std::size_t owned_ = 0;
   GridStats grid_stats_;
-  std::vector<Vec3> x_build_;           // [N] m, centres at build time
-  std::vector<std::size_t> offset_{0};  // [N+1] CSR offsets
-  std::vector<std::uint32_t> index_;    // [pairs] neighbour indices
+  std::vector<Vec3> x_build_;             // [N] m, centres at build time
+  std::vector<std::uint32_t> offset_{0};  // [N+1] CSR offsets (at most 2^32 - 1 pairs)
+  std::vector<std::uint32_t> index_;      // [pairs] neighbour indices
 
   // The two searches behind build(), the same pairs either way: one grid for radii within a
   // factor 2, else a grid per size level (size_levels.hpp).

@@ -106,6 +106,7 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
     rebuild_decomposed(p, b, reorder);
     return;
   }
+  search_->release_for_rebuild();
   ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
   p.drop_ghosts();
   // Between steps the particles are wrapped into a periodic domain (never within a step: the
@@ -120,8 +121,7 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
     old_index.resize(p.size());
     for (std::size_t i = 0; i < old_index.size(); ++i) old_index[i] = static_cast<std::uint32_t>(i);
   }
-  search_->rebuild(p, b);
-  pp_->restore_history(*search_, std::move(history), old_index);
+  search_->rebuild(p, b, [&] { pp_->restore_history(*search_, std::move(history), old_index); });
   stats_.rebuilds = search_->rebuilds();
 }
 

@@ -1,11 +1,15 @@
 #include "state/particles.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <memory>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace mpdem {
 
@@ -58,9 +62,19 @@ void Particles::sort_by_id() {
 
 void Particles::permute(const std::vector<std::uint32_t>& order) {
   refuse_ghosts(*this, "permute");
-  for_each_array([&order](const char*, auto& a) {
-    auto old = a;
-    for (std::size_t k = 0; k < order.size(); ++k) a[k] = old[order[k]];
+  if (order.empty()) return;
+  // One scratch block for every array, sized for the widest element, instead of a copy of each
+  // array: a rebuild's reordering then allocates (and first touches) one array's worth.
+  std::size_t widest = 0;
+  for_each_array([&widest](const char*, auto& a) { widest = std::max(widest, sizeof(a[0])); });
+  const std::size_t n = order.size();
+  const std::unique_ptr<std::byte[]> scratch(new std::byte[widest * n]);
+  for_each_array([&](const char*, auto& a) {
+    using Item = typename std::decay_t<decltype(a)>::value_type;
+    static_assert(std::is_trivially_copyable_v<Item>);
+    std::byte* out = scratch.get();
+    for (std::size_t k = 0; k < n; ++k) std::memcpy(out + k * sizeof(Item), &a[order[k]], sizeof(Item));
+    std::memcpy(a.data(), out, n * sizeof(Item));
   });
 }
 

@@ -109,7 +109,7 @@ TEST(BarrierBroadphase, IdenticalForOneTwoAndFourThreads) {
   const Cloud c = barrier_cloud();
   const Barriers b = test_barriers();
   std::vector<std::vector<std::uint32_t>> idx;
-  std::vector<std::vector<std::size_t>> offs;
+  std::vector<std::vector<std::uint32_t>> offs;
   for (int nt : {1, 2, 4}) {
     omp_set_num_threads(nt);
     BarrierBroadphase bp;

@@ -43,6 +43,22 @@ TEST(CellGrid, EveryParticleIsInItsCellAndCellsAreMortonOrdered) {
   EXPECT_EQ(g.find({-1, -1, -1}), CellGrid::kNone);
 }
 
+// After a build the grid keeps what lookups need - the particle order and cell of each particle
+// (8 bytes per particle), the cells and their index - and none of the sort's scratch (cell
+// coordinates and two key arrays: 56 bytes per particle), on both index kinds.
+TEST(CellGrid, KeepsNoSortScratchAfterTheBuild) {
+  for (const bool far : {false, true}) {  // dense index; hash table (an outlier 1e4 m away)
+    Cloud c = spread(5000, 0.15, 8);
+    if (!far) c.x[c.x.size() / 2] = {0.07, 0.07, 0.07};
+    CellGrid g;
+    g.build(c.x, 0.006);
+    const std::size_t n = c.x.size(), cells = g.num_cells();
+    EXPECT_EQ(g.uses_dense_index(), !far);
+    const std::size_t bound = 8 * n + 2 * cells * (sizeof(CellCoord) + 4) + 4 * (g.hash_slots() + g.dense_slots()) + 64;
+    EXPECT_LE(g.memory_bytes(), bound) << (far ? "hash table" : "dense index");
+  }
+}
+
 TEST(CellGrid, MortonComparisonMatchesInterleavedKey) {
   std::mt19937_64 rng(11);
   std::uniform_int_distribution<std::int64_t> u(0, (1 << 21) - 1), small(0, 7);

@@ -229,6 +229,51 @@ TEST(NeighborEngine, SpringsSurviveRebuildAndReordering) {
   EXPECT_GT(flipped, 0u) << "some pairs must change orientation for the sign handling to be tested";
 }
 
+// What a rebuild recomputes is freed before the old contact history is copied out (the peak
+// memory of a run is at its rebuilds): the search keeps only its pairs, the contacts keep
+// neither springs nor per-particle terms nor cross-pair shares; the list's hook runs before the
+// build positions, barrier candidates and blocks exist again.
+TEST(NeighborEngine, RebuildFreesWhatItRecomputesBeforeTheHistoryIsCarried) {
+  const double r0 = 1e-3;
+  Scene s = dense_scene(16, 16, 6, r0, 0.05, 2.12 * r0, 0.15, 9, 4e-6);
+  Particles& p = s.particles;
+  resolve_material_variants(s.model, p, s.barriers, "");
+  Interactions in(s.model, p, s.barriers, integrator_policy(s.model.params));
+  in.force_rebuild(p, s.barriers, false);
+  in.evaluate(p, s.barriers, EvalRequest{0.0, 0.0, 1.0, true});
+  VerletIntegrator verlet(s.model);
+  for (int k = 0; k < 50; ++k) verlet.step(p, s.barriers, in, k * 4e-6, 4e-6);  // springs load
+  ParticleContacts& pc = in.particle_contacts();
+  const std::size_t held = pc.memory_bytes();
+  ASSERT_GT(held, p.size() * sizeof(ParticleContacts::Terms));
+  NeighborSearch ns(in.skin(), 0.0);
+  ns.rebuild(p, s.barriers);
+  const std::size_t pairs = ns.pairs().num_pairs();
+  ASSERT_GT(pairs, 500u);
+  ASSERT_GT(ns.blocks().num_blocks(), 0u);
+  ns.release_for_rebuild();
+  EXPECT_EQ(ns.pairs().num_pairs(), pairs) << "the old pairs stay readable for the carried history";
+  EXPECT_EQ(ns.pairs().size(), 0u);
+  EXPECT_EQ(ns.blocks().num_blocks(), 0u);
+  EXPECT_EQ(ns.barrier_candidates().size(), 0u);
+  EXPECT_TRUE(ns.needs_rebuild(p, s.barriers));
+  bool hooked = false;
+  ns.rebuild(p, s.barriers, [&] {
+    hooked = true;
+    EXPECT_EQ(ns.pairs().num_pairs(), pairs);
+    EXPECT_EQ(ns.pairs().owned(), p.size());
+    EXPECT_EQ(ns.pairs().size(), 0u);
+    EXPECT_EQ(ns.blocks().num_blocks(), 0u);
+  });
+  EXPECT_TRUE(hooked);
+  EXPECT_EQ(ns.pairs().size(), p.size());
+  EXPECT_GT(ns.blocks().num_blocks(), 0u);
+
+  const ParticleContacts::CarriedHistory h = pc.carry_history(in.search());
+  EXPECT_GT(h.second.size(), 100u);
+  EXPECT_LT(pc.memory_bytes(), held / 10) << "springs, terms and cross shares are freed";
+}
+
 // ---------------------------------------------------------------------------------------------
 // 3. Domain exit policy, through the mpdem executable.
 

@@ -210,7 +210,7 @@ TEST(VerletList, IdenticalForOneTwoAndFourThreads) {
   clouds.push_back(narrow(clustered(2000, 1)));
   clouds.push_back(wide(3000, true, 5));
   for (const Cloud& c : clouds) {
-    std::vector<std::vector<std::size_t>> offs;
+    std::vector<std::vector<std::uint32_t>> offs;
     std::vector<std::vector<std::uint32_t>> idx;
     for (int nt : {1, 2, 4}) {
       omp_set_num_threads(nt);
@@ -234,6 +234,39 @@ TEST(VerletList, RebuildingReusesStateCorrectly) {
   l.build(a.x, a.r, kR0);
   l.build(b.x, b.r, kR0);
   EXPECT_EQ(list_pairs(l), brute_pairs(b, kR0, 0.0));
+}
+
+// The list's storage stays near its size across rebuilds, on one and two threads: the rows are
+// written into the list itself (thread 0) and grown by reservations, not doubled. And the hook
+// between listing and storing the build positions sees the pairs but no positions yet.
+TEST(VerletList, StorageStaysNearItsSizeAcrossRebuilds) {
+  for (const int threads : {1, 2}) {
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    Cloud c = clustered(3000, 21);
+    VerletList l;
+    for (int build = 0; build < 3; ++build) {
+      if (build > 0) l.release_build_positions();  // as NeighborSearch does before a rebuild
+      std::size_t pairs_seen = 0, positions_seen = 1;
+      l.build(c.x, c.r, 0.3 * kR0, 0.0, c.x.size(), {}, [&] {
+        pairs_seen = l.num_pairs();
+        positions_seen = l.size();
+      });
+      ASSERT_GT(l.num_pairs(), 3000u);
+      EXPECT_EQ(pairs_seen, l.num_pairs());
+      EXPECT_EQ(positions_seen, 0u);
+      EXPECT_EQ(l.size(), c.x.size());
+      const std::size_t n = c.x.size(), slack = 4 * 1024;  // one row's candidates
+      EXPECT_LE(l.memory_bytes(), sizeof(Vec3) * n + 8 * (n + 1) + 5 * l.num_pairs() + slack)
+          << threads << " threads, build " << build;
+      c.x = jiggle(c.x, 0.5 * kR0, static_cast<unsigned>(build));
+    }
+    l.release_build_positions();
+    EXPECT_EQ(l.size(), 0u);
+    EXPECT_GT(l.num_pairs(), 0u);
+    EXPECT_TRUE(l.needs_rebuild(c.x));
+    omp_set_num_threads(saved);
+  }
 }
 
 TEST(VerletList, RejectsInvalidInput) {

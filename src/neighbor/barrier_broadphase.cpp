@@ -2,6 +2,7 @@
 
 #include "core/release.hpp"
 #include "neighbor/cell_grid.hpp"  // kNeighborParallelMin
+#include "neighbor/csr_offsets.hpp"
 #include "physics/triangle_closest_point.hpp"
 
 #include <omp.h>
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -180,13 +182,9 @@ void BarrierBroadphase::build(std::span<const Vec3> x, std::span<const double> r
 #pragma omp barrier
 #pragma omp single
     {
-      std::size_t total = 0;
-      for (std::size_t i = 0; i < n && !too_many; ++i) {
-        total += offset_[i + 1];
-        too_many = total > std::numeric_limits<std::uint32_t>::max();
-        offset_[i + 1] = static_cast<std::uint32_t>(total);
-      }
-      index_.resize(too_many ? 0 : total);
+      const std::optional<std::size_t> total = counts_to_offsets(offset_);
+      too_many = !total;
+      index_.resize(total.value_or(0));
       active_start_.assign(nt + 1, 0);
       for (std::size_t k = 0; k < nt; ++k) active_start_[k + 1] = active_start_[k] + thread_active_[k].size();
       active_.resize(active_start_[nt]);

@@ -6,10 +6,12 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "core/release.hpp"
+#include "neighbor/csr_offsets.hpp"
 
 namespace mpdem {
 
@@ -74,15 +76,11 @@ void fill_rows(std::size_t n, std::size_t owned, std::vector<std::uint32_t>& off
 #pragma omp barrier
 #pragma omp single
     {
-      std::size_t total = 0;
-      for (std::size_t i = 0; i < n && !too_many; ++i) {
-        total += offset[i + 1];
-        too_many = total > std::numeric_limits<std::uint32_t>::max();
-        offset[i + 1] = static_cast<std::uint32_t>(total);
-      }
-      if (!too_many) {
-        if (total > index.capacity()) index.reserve(total);  // exactly: resize alone may double
-        index.resize(total);                                 // keeps thread 0's rows at the front
+      const std::optional<std::size_t> total = counts_to_offsets(offset);
+      too_many = !total;
+      if (total) {
+        if (*total > index.capacity()) index.reserve(*total);  // exactly: resize alone may double
+        index.resize(*total);                                  // keeps thread 0's rows at the front
       }
     }
     if (t > 0 && !too_many)

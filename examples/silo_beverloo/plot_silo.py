@@ -2,7 +2,7 @@
 """Silo discharge (examples/silo_beverloo): bulk density of the settled fill, the steady mass flow
 rate W of every orifice from the sink's log columns, Beverloo fits, plot and table. Run by run.sh:
 
-    plot_silo.py --width L --head H_TOP --fill output/fill output/runs.txt
+    plot_silo.py --width L --hole circle|square --head H_TOP --fill output/fill [--png FILE] output/runs.txt
 
 runs.txt has one line per orifice: NAME D0 T_OPEN OUTPUT_DIR. Writes silo_beverloo.png (next to
 this file) and prints the table that run.sh saves as results.txt.
@@ -19,12 +19,17 @@ Definitions (README.md):
   falling between the floor and the sink, < 1 % of it, counted in), as a height M / (rho_b L^2);
   `fed` = fraction of the window's log rows in which the inlet reported a shortfall (its box was
   full: the head was kept at the top of the box);
-- D0 = side of the square orifice (= its hydraulic diameter 4 A / P);
+- D0 = diameter of the circular orifice (Beverloo's orifices), or the side of a square one (= its
+  hydraulic diameter 4 A / P; C and k are then also given for the circle of the same area);
 - free-exponent fit  W = C' (D0 - k d)^a: weighted least squares in ln W (weights 1 / (err/W)^2);
   for every k of a fine grid the best a, ln C' are linear, the k of the smallest chi^2 is kept;
   standard errors from the Jacobian, scaled by sqrt(chi^2/dof) when that exceeds 1;
 - Beverloo fit (a = 5/2): W^(2/5) = (C rho_b sqrt(g))^(2/5) (D0 - k d), a straight line in D0
-  (weighted the same way; standard errors of C and k from the line's covariance, scaled likewise).
+  (weighted the same way; standard errors of C and k from the line's covariance, scaled likewise);
+- the exponent is checked (2.5 +- 0.2) by the free fit over the orifices in Beverloo's range,
+  D0 > 6 d (BEVERLOO_MIN: below it the flow is intermittent, and one (D0 - k d)^a with one k does
+  not hold down to a few bead diameters, Mankoc et al. 2007); the fits over all orifices and from
+  9 d on are printed beside it (a and k are strongly correlated: the range moves both).
 """
 import argparse
 import csv
@@ -43,6 +48,7 @@ RHO_P = 2500.0    # kg/m^3, bead density (silo.toml.in)
 T_TRANS = 0.15    # s after the lid opens: flow established at the orifice and beads fallen into the sink
 NSUB = 6          # sub-windows for the +- of W
 SINK = "out"
+BEVERLOO_MIN = 6.0  # D0 / d above which Beverloo's correlation is taken to hold
 FEED = "feed"
 
 
@@ -165,6 +171,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("runs")
     ap.add_argument("--width", type=float, required=True)
+    ap.add_argument("--hole", choices=("circle", "square"), default="circle")
     ap.add_argument("--head", type=float, default=None, help="m, top of the feeding inlet's box")
     ap.add_argument("--fill", required=True)
     ap.add_argument("--png", default=os.path.join(HERE, "silo_beverloo.png"))
@@ -183,7 +190,9 @@ def main():
     w = np.array([r["W"] for r in runs])
     err = np.array([r["err"] for r in runs])
 
-    print(f"silo: square, width L = {L} m, flat floor, square orifice of side D0 in its centre (D0 = side = hydraulic diameter)")
+    what = ("circular orifice of diameter D0" if a.hole == "circle"
+            else "square orifice of side D0 (D0 = side = hydraulic diameter)")
+    print(f"silo: square, width L = {L} m, flat floor, {what} in its centre")
     print(f"beads: radius {fill['rmin']*1e3:.3f}-{fill['rmax']*1e3:.3f} mm, mean diameter d = {d*1e3:.4f} mm, "
           f"density {RHO_P:g} kg/m^3, E = 2e6 Pa, e = 0.5, mu = 0.5")
     print(f"settled fill (t = {fill['t']:.3f} s, kinetic energy {fill['ke']:.3g} J): {fill['n']} beads, mass {fill['mass']:.4f} kg, "
@@ -213,7 +222,16 @@ def main():
           f"C = C' / (rho_b sqrt(g)) = {ff['cp']/(fill['rho_b']*math.sqrt(G)):.4g} m^(a-5/2); "
           f"chi^2 = {ff['chi2']:.2f} for {ff['dof']} dof; rms residual {100*ff['rms']:.2f} % in W"
           + ("  (k ON ITS BOUND)" if ff["at_bound"] else ""))
-    print(f"  expected a = 2.5 +- 0.2: {'yes' if abs(ff['a'] - 2.5) <= 0.2 else 'NO'}")
+    inside = d0 / d > BEVERLOO_MIN
+    fr = fit_free(d0[inside], w[inside], d, err[inside]) if inside.sum() >= 4 else None
+    if fr:
+        print(f"  over Beverloo's range D0 > {BEVERLOO_MIN:g} d ({int(inside.sum())} orifices): a = {fr['a']:.3f} +- "
+              f"{fr['se_a']:.3f}, k = {fr['k']:.3f} +- {fr['se_k']:.3f}; chi^2 = {fr['chi2']:.2f} for {fr['dof']} dof; "
+              f"expected a = 2.5 +- 0.2: {'yes' if abs(fr['a'] - 2.5) <= 0.2 else 'NO'}")
+    far = d0 / d > 8.5
+    if far.sum() >= 4:
+        f9 = fit_free(d0[far], w[far], d, err[far])
+        print(f"  from 9 d on ({int(far.sum())} orifices): a = {f9['a']:.3f} +- {f9['se_a']:.3f}, k = {f9['k']:.3f}")
     fu = fit_free(d0, w, d, np.full_like(w, 0.01) * w)
     print(f"  unweighted (all rates equally weighted): a = {fu['a']:.3f}, k = {fu['k']:.3f}")
     prof = []
@@ -235,26 +253,32 @@ def main():
     f_area = (2 / math.sqrt(math.pi))
     ca = bf["C"] / f_area ** 2.5
     print(f"Beverloo fit (a = 5/2, weighted): C = {bf['C']:.4f} +- {bf['se_C']:.4f}, k = {bf['k']:.3f} +- {bf['se_k']:.3f} "
-          f"(D0 = side); chi^2 = {bf['chi2']:.2f} for {bf['dof']} dof; largest residual of W^(2/5) {100*bf['rel']:.2f} %")
-    print(f"  as a circle of the same area (D_A = 2 D0 / sqrt(pi)): C = {ca:.4f} +- {bf['se_C']/f_area**2.5:.4f}, "
-          f"k = {bf['k']*f_area:.3f} +- {bf['se_k']*f_area:.3f}  (Beverloo et al. 1961: C = 0.58, k ~ 1.5 for circular orifices)")
+          f"(D0 = {'diameter' if a.hole == 'circle' else 'side'}); chi^2 = {bf['chi2']:.2f} for {bf['dof']} dof; largest residual of W^(2/5) {100*bf['rel']:.2f} %")
+    if a.hole == "square":
+        print(f"  as a circle of the same area (D_A = 2 D0 / sqrt(pi)): C = {ca:.4f} +- {bf['se_C']/f_area**2.5:.4f}, "
+              f"k = {bf['k']*f_area:.3f} +- {bf['se_k']*f_area:.3f}  (Beverloo et al. 1961: C = 0.58, k ~ 1.5 for circular orifices)")
+    else:
+        print("  (Beverloo et al. 1961: C = 0.58, k ~ 1.5 for circular orifices)")
 
     fig, ax = plt.subplots(1, 3, figsize=(15, 4.6))
     xs = np.linspace(0, d0.max() * 1.05, 100)
     ax[0].errorbar(d0 * 1e3, w ** 0.4, yerr=0.4 * w ** 0.4 * err / w, fmt="o", label="simulation")
     ax[0].plot(xs * 1e3, np.clip(bf["s"] * xs + bf["b"], 0, None), "-",
                label=f"Beverloo, a = 5/2: C = {bf['C']:.3f}, k = {bf['k']:.2f}")
-    ax[0].set_xlabel("orifice side D0 (mm)")
+    ax[0].set_xlabel(f"orifice {'diameter' if a.hole == 'circle' else 'side'} D0 (mm)")
     ax[0].set_ylabel("W^(2/5) (kg/s)^(2/5)")
     ax[0].set_xlim(0, None)
     ax[0].set_ylim(0, None)
     ax[0].legend(fontsize=8)
-    ax[0].set_title(f"W^(2/5) against D0 (L = {L*1e3:.0f} mm): straight for a = 5/2", fontsize=10)
+    ax[0].set_title(f"{a.hole} orifice, W^(2/5) against D0 (L = {L*1e3:.0f} mm): straight for a = 5/2", fontsize=10)
     u = d0 - ff["k"] * d
     us = np.linspace(u.min() * 0.9, u.max() * 1.1, 50)
     ax[1].errorbar(u * 1e3, w, yerr=err, fmt="o", label="simulation")
     ax[1].loglog(us * 1e3, ff["cp"] * us ** ff["a"], "-",
                  label=f"fit: a = {ff['a']:.2f} +- {ff['se_a']:.2f}, k = {ff['k']:.2f}")
+    if fr:
+        ax[1].loglog(us * 1e3, fr["cp"] * (us + (ff["k"] - fr["k"]) * d) ** fr["a"], "--",
+                     label=f"D0 > {BEVERLOO_MIN:g} d only: a = {fr['a']:.2f} +- {fr['se_a']:.2f}, k = {fr['k']:.2f}")
     ax[1].loglog(us * 1e3, ff["cp"] * u[-1] ** ff["a"] * (us / u[-1]) ** 2.5, ":", color="gray", label="slope 5/2")
     ax[1].set_xscale("log")
     ax[1].set_yscale("log")

@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
 # Silo discharge through a square orifice in a flat floor: Beverloo's law W = C rho_b sqrt(g) (D0 - k d)^(5/2).
 # Usage:  ./run.sh [path/to/mpdem]      (default: $MPDEM, else mpdem on PATH; THREADS overrides 1)
+# Environment: HOLE (circle | square, default circle), OUT (output folder, default output; the
+#   results go to results.txt and silo_beverloo.png, with HOLE=square to results_square.txt and
+#   silo_beverloo_square.png), REUSE_FILL=1 (keep OUT/fill and restart.csv of an earlier run of
+#   the same L), and the rates and times below.
 # 1. fill: an [[inlet]] rains beads into the closed silo (solid floor) until the bed reaches the top
 #    of its thin box at z = H_TOP (the inlet's shortfall stops it there), then the bed settles;
-# 2. one discharge run per orifice side D0, each seeded with the settled fill (last particle CSV
-#    snapshot): the floor is a plate with a D0 x D0 hole closed by a lid (active = [0, T_OPEN]),
+# 2. one discharge run per orifice size D0, each seeded with the settled fill (last particle CSV
+#    snapshot): the floor is a plate with a circular hole of diameter D0 (HOLE=square: a D0 x D0
+#    square) closed by a lid (active = [0, T_OPEN]),
 #    the beads leave through the hole into a [[sink]] 4 bead diameters below the floor, and the
 #    same inlet keeps feeding the top at more than the largest discharge rate, so the head stays
 #    at H_TOP (what does not fit is the inlet's shortfall);
@@ -16,17 +21,25 @@ THREADS=${THREADS:-1}   # one thread: on a busy 2-core machine OpenMP threads wa
 PY=/usr/bin/python3     # with numpy and matplotlib
 T0=$(date +%s)
 
-L=0.20                  # m, silo width (square, x and y in [-L/2, L/2]); walls 0.25 m high
+L=${L:-0.25}            # m, silo width (square, x and y in [-L/2, L/2]); walls 0.25 m high.
+                        # L >= 2.5 D0 and L >= D0 + 30 d for every D0 (Nedderman: no wall effect)
 DT=1.7e-5               # s
 H_BOT=0.085            # m, the inlet's box: z in [H_BOT, H_TOP] over the whole cross-section
 H_TOP=0.100             # m, (3 mm from the walls); the head of the bed = H_TOP = 20 d
-FILL_RATE=${FILL_RATE:-60000}  # 1/s, fill: beads (radius uniform in [2.25, 2.75] mm, d = 5 mm) at
+FILL_RATE=${FILL_RATE:-95000}  # 1/s, fill: beads (radius uniform in [2.25, 2.75] mm, d = 5 mm) at
 T_FEED=${T_FEED:-0.75}         # s, ... this rate until T_FEED (the bed reaches H_TOP before:
 T_FILL=${T_FILL:-0.95}         # s, ... the rest is shortfall), then it settles until T_FILL
-FEED_RATE=${FEED_RATE:-40000}  # 1/s, discharges: the inlet keeps feeding (largest discharge ~21 000/s)
+FEED_RATE=${FEED_RATE:-65000}  # 1/s, discharges: the inlet keeps feeding (largest discharge ~31 000/s)
 T_OPEN=0.03             # s, discharge runs: the lid (re)settles the seeded bed, then opens at T_OPEN
 T_DIS=${T_DIS:-0.8}               # s of discharge after T_OPEN
-DS=${DS:-"0.025 0.03 0.0375 0.045 0.0525 0.06 0.07"}   # m, orifice sides D0 = 5, 6, 7.5, 9, 10.5, 12, 14 d
+DS=${DS:-"0.025 0.03 0.0375 0.045 0.0525 0.06 0.07 0.08"}   # m, orifice sizes D0 = 5, 6, 7.5, 9, 10.5, 12, 14, 16 d
+HOLE=${HOLE:-circle}    # circle: D0 = diameter (Beverloo's orifices); square: D0 = side
+OUT=${OUT:-output}
+case "$HOLE" in
+  circle) SUFFIX="" ;;
+  square) SUFFIX="_square" ;;
+  *) echo "HOLE must be circle or square, not '$HOLE'" >&2; exit 2 ;;
+esac
 
 calc() { "$PY" -c "from math import *; print(repr($1))"; }
 scene() {  # scene FILE WHAT DURATION FLOOR PARTICLES INLET OUTDIR CSVEVERY
@@ -48,9 +61,9 @@ awk -F, 'NR <= 2 || ($1 != 0 && $1 != 1)' walls_tmp.csv > walls.csv
 rm walls_tmp.csv
 "$MPDEM" mesh rect --size $L $L -o floor_solid.csv --group floor --first-id 100
 
-mkdir -p output
-: > output/runs.txt
-: > output/times.txt
+mkdir -p "$OUT"
+: > "$OUT/runs$SUFFIX.txt"
+[ "${REUSE_FILL:-0}" = 1 ] || : > "$OUT/times.txt"
 
 # 1. Fill and settle.
 H=$(calc "$L/2-0.003")
@@ -71,20 +84,29 @@ FLOOR="[[barriers]]
 file = \"floor_solid.csv\"   # closed floor while filling
 material = \"beads\"
 "
-scene scene_fill.toml "Fill: the inlet rains beads in up to z = $H_TOP m; they settle on the closed floor." \
-      "$T_FILL" "$FLOOR" "" "$INLET" output/fill "$T_FILL"
-SECONDS=0
-nice -n 5 "$MPDEM" run scene_fill.toml --overwrite --threads "$THREADS"
-echo "fill: inlet until $T_FEED s, settled until $T_FILL s, wall time ${SECONDS} s" | tee -a output/times.txt
-"$PY" restart.py output/fill restart.csv
+if [ "${REUSE_FILL:-0}" = 1 ] && [ -s restart.csv ] && [ -d "$OUT/fill" ]; then
+  echo "fill: reusing $OUT/fill and restart.csv (REUSE_FILL=1)"
+else
+  scene scene_fill.toml "Fill: the inlet rains beads in up to z = $H_TOP m; they settle on the closed floor." \
+        "$T_FILL" "$FLOOR" "" "$INLET" "$OUT/fill" "$T_FILL"
+  SECONDS=0
+  nice -n 5 "$MPDEM" run scene_fill.toml --overwrite --threads "$THREADS"
+  echo "fill: inlet until $T_FEED s, settled until $T_FILL s, wall time ${SECONDS} s" | tee -a "$OUT/times.txt"
+  "$PY" restart.py "$OUT/fill" restart.csv
+fi
 
 # 2. Discharge through each orifice.
 for D in $DS; do
-  NAME=d$(calc "round($D*1e4)")
-  "$MPDEM" mesh plate --size $L $L --hole-size $D $D -o "floor_$NAME.csv" --group floor --first-id 100
-  "$MPDEM" mesh rect --size $D $D -o "lid_$NAME.csv" --group lid --first-id 200
+  if [ "$HOLE" = circle ]; then
+    NAME=c$(calc "round($D*1e4)")
+    "$MPDEM" mesh plate --size $L $L --hole-radius "$(calc "$D/2")" --segments 64 -o "floor_$NAME.csv" --group floor --first-id 100
+  else
+    NAME=s$(calc "round($D*1e4)")
+    "$MPDEM" mesh plate --size $L $L --hole-size $D $D -o "floor_$NAME.csv" --group floor --first-id 100
+  fi
+  "$MPDEM" mesh rect --size $D $D -o "lid_$NAME.csv" --group lid --first-id 1000   # covers either hole
   FLOOR="[[barriers]]
-file = \"floor_$NAME.csv\"   # plate with a $D m square hole
+file = \"floor_$NAME.csv\"   # plate with a $D m $HOLE hole
 material = \"beads\"
 
 [[barriers]]
@@ -108,13 +130,14 @@ material = \"beads\"
 velocity = [0.0, 0.0, -0.5]
 seed = 2
 "
-  scene "scene_$NAME.toml" "Discharge through a $D m square orifice, from the settled fill, fed at the top." \
-        "$(calc "$T_OPEN+$T_DIS")" "$FLOOR" "$PARTS" "$FEED" "output/$NAME" 0
+  scene "scene_$NAME.toml" "Discharge through a $D m $HOLE orifice, from the settled fill, fed at the top." \
+        "$(calc "$T_OPEN+$T_DIS")" "$FLOOR" "$PARTS" "$FEED" "$OUT/$NAME" 0
   SECONDS=0
   nice -n 5 "$MPDEM" run "scene_$NAME.toml" --overwrite --threads "$THREADS"
-  echo "D0 = $D m: $(calc "$T_OPEN+$T_DIS") s, wall time ${SECONDS} s" | tee -a output/times.txt
-  echo "$NAME $D $T_OPEN output/$NAME" >> output/runs.txt
+  echo "$HOLE D0 = $D m: $(calc "$T_OPEN+$T_DIS") s, wall time ${SECONDS} s" | tee -a "$OUT/times.txt"
+  echo "$NAME $D $T_OPEN $OUT/$NAME" >> "$OUT/runs$SUFFIX.txt"
 done
 
-"$PY" plot_silo.py --width $L --head $H_TOP --fill output/fill output/runs.txt | tee results.txt
-echo "run.sh: total wall time $(( $(date +%s) - T0 )) s" | tee -a output/times.txt
+"$PY" plot_silo.py --width $L --hole "$HOLE" --head $H_TOP --fill "$OUT/fill" --png "silo_beverloo$SUFFIX.png" \
+  "$OUT/runs$SUFFIX.txt" | tee "results$SUFFIX.txt"
+echo "run.sh: total wall time $(( $(date +%s) - T0 )) s" | tee -a "$OUT/times.txt"

@@ -71,9 +71,9 @@ bed_file() {
              $2 == "atoms" && NF == 2 { print 2 * n " atoms"; next }
              $3 == "xlo" { print "0 0.18 xlo xhi"; next }
              $1 == "Atoms" { atoms2 = 1; print; next }
-             atoms2 && NF == 7 { print; $1 += 100000; $5 = sprintf("%.10g", 0.18 - $5); mirror = mirror $0 "\n"; next }
+             atoms2 && NF == 7 { print; $1 += 100000; $5 = sprintf("%.10g", 0.18 - $5); mirror[++m] = $0; next }
              { print }
-             END { printf "%s", mirror }' "$half" "$half" > "$data.tmp"
+             END { for (i = 1; i <= m; i++) print mirror[i] }' "$half" "$half" > "$data.tmp"
         mv "$data.tmp" "$data" ;;
       *) echo "unknown bed '$name'" >&2; exit 2 ;;
     esac

@@ -5,7 +5,9 @@
 #  1. weak scaling, 49470 spheres per rank: the 100k bed's half (x <= 90 mm) on 1 rank against
 #     that half and its mirror image (the two halves side by side in the 100k bed's box) on 2
 #     ranks, each rank then holding one half; efficiency = the wall time of a step on 1 rank / on
-#     2 ranks (>= 0.9 wanted);
+#     2 ranks (>= 0.9 wanted); beside it LIGGGHTS on the same two beds (1 and 2 ranks), and two
+#     independent one-rank runs of the half at once, one per core (no communication at all: what
+#     this machine allows two processes that share it);
 #  2. strong scaling of the 100k bed: 1 rank x 1 thread, 1 rank x 2 threads, 2 ranks x 1 thread,
 #     beside LIGGGHTS on 1 and 2 ranks (hybrid 1x2 and 2x1 within 15 % of each other and mpdem on
 #     2 ranks >= 2x LIGGGHTS on 2 ranks wanted);
@@ -57,16 +59,23 @@ n_full=$(awk '$2 == "atoms" {print $1; exit}' "$full")
 n_twin=$(awk '$2 == "atoms" {print $1; exit}' "$twin")
 
 declare -A S=() C=()
-echo "== $RUNS interleaved runs of: 50k x 1 rank, 2 x 50k x 2 ranks; 100k x (1x1, 1x2, 2x1); LIGGGHTS 100k x 1, 2 ranks; $RELAX + $STEPS steps =="
+echo "== $RUNS interleaved runs of: 50k x 1 rank, 2 x 50k x 2 ranks; 100k x (1x1, 1x2, 2x1); LIGGGHTS 50k x 1, 2 x 50k x 2, 100k x 1, 2 ranks; $RELAX + $STEPS steps =="
 for r in $(seq 1 "$RUNS"); do
-  for cfg in half_1x1 twin_2x1 full_1x1 full_1x2 full_2x1 lig_1 lig_2; do
+  for cfg in half_1x1 twin_2x1 half_pair lig_half_1 lig_twin_2 full_1x1 full_1x2 full_2x1 lig_1 lig_2; do
     log="$WORK/scaling_${cfg}_r$r"
     case "$cfg" in
       half_1x1) line=$(mpdem_bench 1 1 "$half" "$STEPS" "$RELAX" "$log.out") ;;
       twin_2x1) line=$(mpdem_bench 2 1 "$twin" "$STEPS" "$RELAX" "$log.out") ;;
+      half_pair)  # the slower of two concurrent one-rank runs, each on its own core
+        taskset -c 0 env "${MPDEM_OMP_ENV[@]}" "$MPDEM" bench "$half" --threads 1 --steps "$STEPS" --relax "$RELAX" > "$log.a.out" 2>&1 &
+        taskset -c 1 env "${MPDEM_OMP_ENV[@]}" "$MPDEM" bench "$half" --threads 1 --steps "$STEPS" --relax "$RELAX" > "$log.b.out" 2>&1
+        wait
+        line="ns_per_pstep=$(grep -ho 'ns_per_pstep=[^ ]*' "$log.a.out" "$log.b.out" | cut -d= -f2 | sort -g | tail -1)" ;;
       full_1x1) line=$(mpdem_bench 1 1 "$full" "$STEPS" "$RELAX" "$log.out") ;;
       full_1x2) line=$(mpdem_bench 1 2 "$full" "$STEPS" "$RELAX" "$log.out") ;;
       full_2x1) line=$(mpdem_bench 2 1 "$full" "$STEPS" "$RELAX" "$log.out") ;;
+      lig_half_1) line="ns_per_pstep=$(liggghts_ns "$half" "$STEPS" "$RELAX" 1 "$log")" ;;
+      lig_twin_2) line="ns_per_pstep=$(liggghts_ns "$twin" "$STEPS" "$RELAX" 2 "$log")" ;;
       lig_1) line="ns_per_pstep=$(liggghts_ns "$full" "$STEPS" "$RELAX" 1 "$log")" ;;
       lig_2) line="ns_per_pstep=$(liggghts_ns "$full" "$STEPS" "$RELAX" 2 "$log")" ;;
     esac
@@ -81,11 +90,17 @@ for cfg in "${!S[@]}"; do M[$cfg]=$(echo "${S[$cfg]}" | median); done
 
 echo
 echo "Weak scaling (settled bed, $n_half spheres per rank; medians of $RUNS runs)"
-echo "| ranks x threads | spheres | ns/particle-step | wall ms per step | efficiency |"
-echo "|---|---|---|---|---|"
-awk -v a="${M[half_1x1]}" -v b="${M[twin_2x1]}" -v n1="$n_half" -v n2="$n_twin" 'BEGIN {
-  printf "| 1 x 1 | %d | %.1f | %.3f | 1 |\n", n1, a, a * n1 * 1e-6
-  printf "| 2 x 1 | %d | %.1f | %.3f | %.3f |\n", n2, b, b * n2 * 1e-6, (a * n1) / (b * n2) }'
+echo "| code | ranks x threads | spheres | ns/particle-step | wall ms per step | efficiency |"
+echo "|---|---|---|---|---|---|"
+weak_rows() {  # weak_rows CODE ONE_RANK_NS TWO_RANKS_NS
+  awk -v c="$1" -v a="$2" -v b="$3" -v n1="$n_half" -v n2="$n_twin" 'BEGIN {
+    printf "| %s | 1 x 1 | %d | %.1f | %.3f | 1 |\n", c, n1, a, a * n1 * 1e-6
+    printf "| %s | 2 x 1 | %d | %.1f | %.3f | %.3f |\n", c, n2, b, b * n2 * 1e-6, (a * n1) / (b * n2) }'
+}
+weak_rows mpdem "${M[half_1x1]}" "${M[twin_2x1]}"
+awk -v a="${M[half_1x1]}" -v b="${M[half_pair]}" -v n1="$n_half" 'BEGIN {
+  printf "| mpdem, two independent runs at once | 2 x (1 x 1) | 2 x %d | %.1f (the slower) | %.3f | %.3f |\n", n1, b, b * n1 * 1e-6, a / b }'
+weak_rows "LIGGGHTS 3.8" "${M[lig_half_1]}" "${M[lig_twin_2]}"
 echo
 echo "Strong scaling, 100k bed ($n_full spheres; medians of $RUNS runs)"
 echo "| code | ranks x threads | ns/particle-step | particle-steps/s | speed-up | vs LIGGGHTS at the same cores |"
@@ -103,9 +118,10 @@ for cfg in full_1x1 full_1x2 full_2x1 lig_1 lig_2; do
 done
 echo
 awk -v a="${M[half_1x1]}" -v t="${M[twin_2x1]}" -v n1="$n_half" -v n2="$n_twin" -v b="${M[full_2x1]}" \
-  -v h="${M[full_1x2]}" -v l="${M[lig_2]}" 'BEGIN {
+  -v h="${M[full_1x2]}" -v l="${M[lig_2]}" -v la="${M[lig_half_1]}" -v lt="${M[lig_twin_2]}" 'BEGIN {
   e = (a * n1) / (t * n2); d = h / b - 1; s = l / b
-  printf "weak-scaling efficiency 1 -> 2 ranks: %.3f (>= 0.9 wanted: %s)\n", e, (e >= 0.9 ? "met" : "NOT met")
+  printf "weak-scaling efficiency 1 -> 2 ranks: %.3f (>= 0.9 wanted: %s); LIGGGHTS on the same beds: %.3f\n", e,
+         (e >= 0.9 ? "met" : "NOT met"), (la * n1) / (lt * n2)
   printf "hybrid 1x2 vs 2x1: %.1f vs %.1f ns/particle-step, %+.1f%% (within 15%% wanted: %s)\n", h, b, 100 * d,
          (d <= 0.15 && d >= -0.15 ? "met" : "NOT met")
   printf "2 ranks: mpdem %.2fx LIGGGHTS (>= 2 wanted: %s)\n", s, (s >= 2 ? "met" : "NOT met") }'

@@ -50,6 +50,9 @@ mpdem_bench() {
   grep '^BENCH_RESULT' "$log"
 }
 
+# on_core CORE COMMAND...: COMMAND (a shell function too) in a subshell bound to one core.
+on_core() { (taskset -pc "$1" "$BASHPID" > /dev/null && shift && "$@"); }
+
 half=$(bed_file 50k "$WORK" "$SHARED")
 twin=$(bed_file 2x50k "$WORK" "$SHARED")
 full=$(bed_file 100k "$WORK" "$SHARED")
@@ -67,8 +70,8 @@ for r in $(seq 1 "$RUNS"); do
       half_1x1) line=$(mpdem_bench 1 1 "$half" "$STEPS" "$RELAX" "$log.out") ;;
       twin_2x1) line=$(mpdem_bench 2 1 "$twin" "$STEPS" "$RELAX" "$log.out") ;;
       half_pair)  # the slower of two concurrent one-rank runs, each on its own core
-        taskset -c 0 env "${MPDEM_OMP_ENV[@]}" "$MPDEM" bench "$half" --threads 1 --steps "$STEPS" --relax "$RELAX" > "$log.a.out" 2>&1 &
-        taskset -c 1 env "${MPDEM_OMP_ENV[@]}" "$MPDEM" bench "$half" --threads 1 --steps "$STEPS" --relax "$RELAX" > "$log.b.out" 2>&1
+        on_core 0 mpdem_bench 1 1 "$half" "$STEPS" "$RELAX" "$log.a.out" > /dev/null &
+        on_core 1 mpdem_bench 1 1 "$half" "$STEPS" "$RELAX" "$log.b.out" > /dev/null
         wait
         line="ns_per_pstep=$(grep -ho 'ns_per_pstep=[^ ]*' "$log.a.out" "$log.b.out" | cut -d= -f2 | sort -g | tail -1)" ;;
       full_1x1) line=$(mpdem_bench 1 1 "$full" "$STEPS" "$RELAX" "$log.out") ;;

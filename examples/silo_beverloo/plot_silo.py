@@ -49,6 +49,7 @@ T_TRANS = 0.15    # s after the lid opens: flow established at the orifice and b
 NSUB = 6          # sub-windows for the +- of W
 SINK = "out"
 BEVERLOO_MIN = 6.0  # D0 / d above which Beverloo's correlation is taken to hold
+FAR_MIN = 8.5       # D0 / d: the fit "from 9 d on", printed beside it
 FEED = "feed"
 
 
@@ -190,6 +191,7 @@ def main():
     w = np.array([r["W"] for r in runs])
     err = np.array([r["err"] for r in runs])
 
+    size_word = "diameter" if a.hole == "circle" else "side"  # what D0 measures
     what = ("circular orifice of diameter D0" if a.hole == "circle"
             else "square orifice of side D0 (D0 = side = hydraulic diameter)")
     print(f"silo: square, width L = {L} m, flat floor, {what} in its centre")
@@ -228,7 +230,7 @@ def main():
         print(f"  over Beverloo's range D0 > {BEVERLOO_MIN:g} d ({int(inside.sum())} orifices): a = {fr['a']:.3f} +- "
               f"{fr['se_a']:.3f}, k = {fr['k']:.3f} +- {fr['se_k']:.3f}; chi^2 = {fr['chi2']:.2f} for {fr['dof']} dof; "
               f"expected a = 2.5 +- 0.2: {'yes' if abs(fr['a'] - 2.5) <= 0.2 else 'NO'}")
-    far = d0 / d > 8.5
+    far = d0 / d > FAR_MIN
     if far.sum() >= 4:
         f9 = fit_free(d0[far], w[far], d, err[far])
         print(f"  from 9 d on ({int(far.sum())} orifices): a = {f9['a']:.3f} +- {f9['se_a']:.3f}, k = {f9['k']:.3f}")
@@ -253,7 +255,7 @@ def main():
     f_area = (2 / math.sqrt(math.pi))
     ca = bf["C"] / f_area ** 2.5
     print(f"Beverloo fit (a = 5/2, weighted): C = {bf['C']:.4f} +- {bf['se_C']:.4f}, k = {bf['k']:.3f} +- {bf['se_k']:.3f} "
-          f"(D0 = {'diameter' if a.hole == 'circle' else 'side'}); chi^2 = {bf['chi2']:.2f} for {bf['dof']} dof; largest residual of W^(2/5) {100*bf['rel']:.2f} %")
+          f"(D0 = {size_word}); chi^2 = {bf['chi2']:.2f} for {bf['dof']} dof; largest residual of W^(2/5) {100*bf['rel']:.2f} %")
     if a.hole == "square":
         print(f"  as a circle of the same area (D_A = 2 D0 / sqrt(pi)): C = {ca:.4f} +- {bf['se_C']/f_area**2.5:.4f}, "
               f"k = {bf['k']*f_area:.3f} +- {bf['se_k']*f_area:.3f}  (Beverloo et al. 1961: C = 0.58, k ~ 1.5 for circular orifices)")
@@ -265,7 +267,7 @@ def main():
     ax[0].errorbar(d0 * 1e3, w ** 0.4, yerr=0.4 * w ** 0.4 * err / w, fmt="o", label="simulation")
     ax[0].plot(xs * 1e3, np.clip(bf["s"] * xs + bf["b"], 0, None), "-",
                label=f"Beverloo, a = 5/2: C = {bf['C']:.3f}, k = {bf['k']:.2f}")
-    ax[0].set_xlabel(f"orifice {'diameter' if a.hole == 'circle' else 'side'} D0 (mm)")
+    ax[0].set_xlabel(f"orifice {size_word} D0 (mm)")
     ax[0].set_ylabel("W^(2/5) (kg/s)^(2/5)")
     ax[0].set_xlim(0, None)
     ax[0].set_ylim(0, None)

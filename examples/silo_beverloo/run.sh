@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Silo discharge through a square orifice in a flat floor: Beverloo's law W = C rho_b sqrt(g) (D0 - k d)^(5/2).
+# Silo discharge through a circular (or square) orifice in a flat floor: Beverloo's law W = C rho_b sqrt(g) (D0 - k d)^(5/2).
 # Usage:  ./run.sh [path/to/mpdem]      (default: $MPDEM, else mpdem on PATH; THREADS overrides 1)
 # Environment: HOLE (circle | square, default circle), OUT (output folder, default output; the
 #   results go to results.txt and silo_beverloo.png, with HOLE=square to results_square.txt and

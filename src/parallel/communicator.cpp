@@ -14,15 +14,17 @@ namespace mpdem {
 
 namespace {
 // Combines every rank's copy of v element-wise in rank order: the same bits on every rank.
+// Every rank passes as many values (the callers reduce values of a fixed layout).
 template <class Op>
 void reduce_in_rank_order(const Communicator& c, std::span<double> v, Op op) {
   if (c.serial() || v.empty()) return;
-  const auto all = c.all_gather(std::as_bytes(v));
+  const auto all = c.all_gather_fixed(std::as_bytes(v));
+  const std::size_t ranks = static_cast<std::size_t>(c.size()), each = v.size() * sizeof(double);
   for (std::size_t k = 0; k < v.size(); ++k) {
     double acc = 0.0;
-    for (std::size_t r = 0; r < all.size(); ++r) {
+    for (std::size_t r = 0; r < ranks; ++r) {
       double x = 0.0;
-      std::memcpy(&x, all[r].data() + k * sizeof(double), sizeof(double));
+      std::memcpy(&x, all.data() + r * each + k * sizeof(double), sizeof(double));
       acc = r == 0 ? x : op(acc, x);
     }
     v[k] = acc;
@@ -115,11 +117,11 @@ double Communicator::min(double v) const {
 }
 std::uint64_t Communicator::sum(std::uint64_t v) const {
   if (serial()) return v;
-  const auto all = all_gather(std::as_bytes(std::span<const std::uint64_t>(&v, 1)));
+  const auto all = all_gather_fixed(std::as_bytes(std::span<const std::uint64_t>(&v, 1)));
   std::uint64_t s = 0;
-  for (const auto& b : all) {
+  for (std::size_t at = 0; at < all.size(); at += sizeof s) {
     std::uint64_t x = 0;
-    std::memcpy(&x, b.data(), sizeof x);
+    std::memcpy(&x, all.data() + at, sizeof x);
     s += x;
   }
   return s;
@@ -149,6 +151,47 @@ std::vector<std::byte> Communicator::exchange(int to, std::span<const std::byte>
 #else
   (void)tag;
   throw std::logic_error("Communicator::exchange: built without MPI");
+#endif
+}
+
+std::vector<std::byte> Communicator::exchange_known(int to, std::span<const std::byte> out, int from, std::size_t n_in,
+                                                    int tag) const {
+  const bool to_self = to == rank_ || to < 0, from_self = from == rank_ || from < 0;
+  if (serial() || (to_self && from_self)) {
+    std::vector<std::byte> in = exchange(to, out, from, tag);
+    if (in.size() != n_in) throw std::runtime_error("Communicator::exchange_known: a message of another length");
+    return in;
+  }
+#ifdef MPDEM_HAVE_MPI
+  const int dest = to < 0 ? MPI_PROC_NULL : to, source = from < 0 ? MPI_PROC_NULL : from;
+  if (source == MPI_PROC_NULL && n_in != 0)
+    throw std::logic_error("Communicator::exchange_known: bytes expected from no rank");
+  std::vector<std::byte> in(n_in);
+  MPI_Status status;
+  MPI_Sendrecv(out.data(), checked_count(out.size()), MPI_BYTE, dest, tag + 1, in.data(), checked_count(in.size()),
+               MPI_BYTE, source, tag + 1, mpi_comm(handle_), &status);
+  if (source != MPI_PROC_NULL) {
+    int got = 0;
+    MPI_Get_count(&status, MPI_BYTE, &got);
+    if (static_cast<std::size_t>(got) != n_in)
+      throw std::runtime_error("Communicator::exchange_known: a message of another length");
+  }
+  return in;
+#else
+  (void)n_in;
+  throw std::logic_error("Communicator::exchange_known: built without MPI");
+#endif
+}
+
+std::vector<std::byte> Communicator::all_gather_fixed(std::span<const std::byte> mine) const {
+  if (serial()) return {mine.begin(), mine.end()};
+#ifdef MPDEM_HAVE_MPI
+  const int n = checked_count(mine.size());
+  std::vector<std::byte> all(mine.size() * static_cast<std::size_t>(size_));
+  MPI_Allgather(mine.data(), n, MPI_BYTE, all.data(), n, MPI_BYTE, mpi_comm(handle_));
+  return all;
+#else
+  throw std::logic_error("Communicator::all_gather_fixed: built without MPI");
 #endif
 }
 

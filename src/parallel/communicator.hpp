@@ -30,7 +30,8 @@ class Communicator {
   int size() const { return size_; }
   bool serial() const { return size_ == 1; }
 
-  // Element-wise reductions over the ranks, the result on every rank.
+  // Element-wise reductions over the ranks (every rank passes as many values), the result on
+  // every rank.
   void sum(std::span<double> v) const;
   void max(std::span<double> v) const;
   void min(std::span<double> v) const;
@@ -43,8 +44,17 @@ class Communicator {
   // Sends `out` to rank `to` and receives one message from rank `from` (either may be this rank;
   // -1: none, nothing sent or an empty message received). Uses tags `tag` and `tag + 1`.
   std::vector<std::byte> exchange(int to, std::span<const std::byte> out, int from, int tag) const;
+  // As exchange, when this rank knows the length of the message it receives (`n_in` bytes; 0
+  // when `from` is -1): the bytes alone, without their length sent ahead. A message of another
+  // length is an error (std::runtime_error when shorter, MPI's truncation error when longer).
+  // Uses tag `tag + 1`, as exchange's bytes.
+  std::vector<std::byte> exchange_known(int to, std::span<const std::byte> out, int from, std::size_t n_in,
+                                        int tag) const;
   // Every rank's bytes, in rank order, on every rank.
   std::vector<std::vector<std::byte>> all_gather(std::span<const std::byte> mine) const;
+  // The same, when every rank gives the same number of bytes (fixed-size values): rank r's at
+  // r * mine.size(), with one collective instead of all_gather's two (their lengths first).
+  std::vector<std::byte> all_gather_fixed(std::span<const std::byte> mine) const;
   // Every rank's bytes, in rank order, on `root` (empty elsewhere).
   std::vector<std::vector<std::byte>> gather(std::span<const std::byte> mine, int root) const;
   // Root's bytes on every rank.

@@ -43,12 +43,11 @@ template <class T, class Better>
 std::pair<T, int> best_across(const Communicator& comm, const T& mine, Better better) {
   static_assert(std::is_trivially_copyable_v<T>);
   std::pair<T, int> best{mine, comm.rank()};
-  int r = 0;
-  for (const auto& bytes : comm.all_gather(std::as_bytes(std::span(&mine, 1)))) {
+  const std::vector<std::byte> all = comm.all_gather_fixed(std::as_bytes(std::span(&mine, 1)));
+  for (int r = 0; r < comm.size(); ++r) {
     T v;
-    std::memcpy(&v, bytes.data(), sizeof v);
+    std::memcpy(&v, all.data() + static_cast<std::size_t>(r) * sizeof v, sizeof v);
     if (r == 0 || better(v, best.first)) best = {v, r};
-    ++r;
   }
   return best;
 }

@@ -215,7 +215,9 @@ void HaloExchange::refresh(Particles& p) const {
   for (const Swap& w : swaps_) {
     std::vector<std::byte> out;
     pack_particles(p, w.send, w.shift, out, ParticleArrays::kMotion);
-    const auto in = comm_->exchange(w.send_to, out, w.recv_from, w.tag);
+    // The neighbour sends the ghosts it sent at the build, so the length is known: one message.
+    const std::size_t n_in = w.recv_from < 0 ? 0 : packed_bytes(p, w.recv_count, ParticleArrays::kMotion);
+    const auto in = comm_->exchange_known(w.send_to, out, w.recv_from, n_in, w.tag);
     if (w.recv_count == 0) continue;
     std::size_t pos = 0;
     if (unpack_particles(p, in, pos, w.recv_first, ParticleArrays::kMotion) != w.recv_count)
@@ -236,7 +238,9 @@ void HaloExchange::fold(Particles& p) const {
       const std::size_t g = w.recv_first + k;
       back[k] = {p.force[g], p.torque[g], p.heat[g]};
     }
-    const auto in = comm_->exchange(w.recv_from, std::as_bytes(std::span<const Received>(back)), w.send_to, w.tag + 4);
+    // One value per particle sent at the build comes back (none when nothing was sent).
+    const auto in = comm_->exchange_known(w.recv_from, std::as_bytes(std::span<const Received>(back)), w.send_to,
+                                          w.send.size() * sizeof(Received), w.tag + 4);
     if (in.size() != w.send.size() * sizeof(Received))
       throw std::runtime_error("HaloExchange::fold: a neighbour sent back another number of ghosts");
     for (std::size_t k = 0; k < w.send.size(); ++k) {

@@ -47,6 +47,15 @@ inline void pack_particles(Particles& p, std::span<const std::uint32_t> idx, con
   });
 }
 
+// The bytes pack_particles appends for n particles (with the same `which`).
+inline std::size_t packed_bytes(Particles& p, std::size_t n, ParticleArrays which = ParticleArrays::kAll) {
+  std::size_t bytes = sizeof(std::uint64_t);
+  p.for_each_array([&](const char* name, auto& a) {
+    if (carried(which, name)) bytes += n * sizeof(typename std::decay_t<decltype(a)>::value_type);
+  });
+  return bytes;
+}
+
 // Reads one block written by pack_particles (with the same `which`) from bytes at `pos` (advanced
 // past it) into those arrays of p: appended (kAll only), or overwriting [at, at + n) when `at` is
 // given (a ghost refresh); returns how many. Throws on a truncated message or a range past the

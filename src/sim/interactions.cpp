@@ -287,10 +287,17 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     // are checked at the evaluation's time.
     const double known = predicted_displacement_;
     predicted_displacement_ = -1.0;
-    const bool due = known >= 0.0 && !stale(p, b)
-                         ? b.size() > 0 && search_->barrier_candidates().needs_rebuild(b, known)
-                         : search_->needs_rebuild(p, b);
-    if (any_rank(due)) {
+    const bool checked = known >= 0.0 && !stale(p, b);
+    // On several ranks that check needs no collective: prepare_step set `known` alike on every
+    // rank, whose lists it found fresh (or rebuilt), and the barriers' check reads only what
+    // every rank holds alike (the barriers, their state at the last collective build, the skin).
+    // Nothing between prepare_step and the step's evaluation changes the particles; should
+    // anything do so on one rank, the ranks would disagree on the collective, hence the throw.
+    if (comm_ && known >= 0.0 && !checked)
+      throw std::logic_error("Interactions::evaluate: the particles changed since prepare_step");
+    const bool due = checked ? b.size() > 0 && search_->barrier_candidates().needs_rebuild(b, known)
+                             : any_rank(search_->needs_rebuild(p, b));
+    if (due) {
       rebuild(p, b, false);
       ++mid_step_rebuilds_;
     }

@@ -6,7 +6,8 @@
 //  - a falling column cut across its height, whose spheres fall through the cuts (migration
 //    with their contact and barrier history), 10^4 steps, both integrators;
 //  - the cluster with charges: the near field (Coulomb's law) across the ranks;
-//  - a sliding (then sticking) pair that crosses a cut: its spring, bit for bit, at every step.
+//  - a sliding (then sticking) pair that crosses a cut: its spring, bit for bit, at every step;
+//  - a floor switched on within a step: the lists rebuilt in that evaluation on every rank.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include "parallel/communicator.hpp"
 #include "sim/simulation.hpp"
 #include "support/decomposed_scenes.hpp"
+#include "support/timed_barrier_scenes.hpp"
 
 using namespace mpdem;
 using namespace mpdem::test;
@@ -215,6 +217,43 @@ TEST(DecomposedRun, AdaptiveStepsFollowTheOneRankRun) {
 
 INSTANTIATE_TEST_SUITE_P(Integrators, DecomposedRun, ::testing::Values(Integrator::Verlet, Integrator::Trapezoidal),
                          integrator_name);
+
+// A floor switched on within a Verlet step (gate_scene): every rank, those without a particle
+// too, rebuilds its lists in that step's evaluation, each deciding so from the barriers alone
+// (the same on every rank, with no collective), and the sphere bounces off the floor as on one rank.
+TEST(DecomposedRun, FloorSwitchedOnWithinAStepRebuildsOnEveryRank) {
+  const Communicator& world = Communicator::world();
+  const auto make = [] {
+    Scene s = gate_scene(Integrator::Verlet);
+    DomainParams& d = s.model.params.domain;  // bounded, so that it can be cut into bricks
+    d.bounded = true;
+    d.min = {-0.05, -0.05, -0.02};
+    d.max = {0.05, 0.05, 0.1};
+    return s;
+  };
+  Simulation one(make(), RunOptions{{}, false, false, &Communicator::single()});
+  Simulation many(make(), RunOptions{{}, false, false, &world});
+  while (one.time() < 0.4) {
+    one.advance(kTimedDt);
+    many.advance(kTimedDt);
+  }
+  EXPECT_EQ(one.interactions().mid_step_rebuilds(), 1u);
+  const auto rebuilds = static_cast<double>(many.interactions().mid_step_rebuilds());
+  EXPECT_EQ(world.min(rebuilds), 1.0);
+  EXPECT_EQ(world.max(rebuilds), 1.0);
+  const Particles& p = one.particles();
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_GT(p.v[0].z, 0.0);  // bounced
+  const Particles& q = many.particles();
+  EXPECT_EQ(world.sum(static_cast<std::uint64_t>(q.size())), 1u);
+  double dx = 0.0, dv = 0.0;
+  if (q.size() == 1) {
+    dx = norm(q.x[0] - p.x[0]) / kR;
+    dv = norm(q.v[0] - p.v[0]) / norm(p.v[0]);
+  }
+  EXPECT_LT(world.max(dx), 1e-10);
+  EXPECT_LT(world.max(dv), 1e-10);
+}
 
 // A sphere sliding, then sticking, on a fixed sphere that moves at a constant velocity (with and
 // without rolling resistance): the pair crosses the cut between two bricks, both particles change

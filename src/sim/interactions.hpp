@@ -135,8 +135,6 @@ class Interactions {
   // Statistics summed over the ranks (the barriers' drive power and work are already global:
   // their loads are summed over the ranks at every evaluation). Collective.
   InteractionStats global_stats() const;
-  // The deepest contact over all ranks (collective).
-  OverlapReport global_max_overlap(const Particles& p, const Barriers& b) const;
 
   const InteractionStats& stats() const { return stats_; }
   // Forces and torques added to particles by a caller, between steps (sim/external_loads.hpp).

@@ -1,6 +1,6 @@
 // Interactions over several ranks (docs/parallel.md): the decomposition's set-up, the collective
 // decisions, the rebuild that migrates particles with their contact history keyed by ids, and
-// the reductions of the barrier loads, statistics and deepest overlap.
+// the reductions of the barrier loads and statistics.
 #include <cstring>
 #include <iterator>
 #include <vector>
@@ -10,7 +10,6 @@
 #include "neighbor/neighbor_search.hpp"
 #include "parallel/brick_grid.hpp"
 #include "parallel/communicator.hpp"
-#include "parallel/gather.hpp"
 #include "parallel/load_balance.hpp"
 #include "sim/interactions.hpp"
 
@@ -102,16 +101,6 @@ InteractionStats Interactions::global_stats() const {
   s.contacts_pb = static_cast<std::size_t>(v[1]);
   for (std::size_t k = 0; k < std::size(kRankSummedStats); ++k) s.*kRankSummedStats[k] = v[2 + k];
   return s;
-}
-
-OverlapReport Interactions::global_max_overlap(const Particles& p, const Barriers& b) const {
-  OverlapReport r = max_overlap(p, b);
-  if (!comm_) return r;
-  const auto [best, rank] = best_across(
-      *comm_, r, [](const OverlapReport& x, const OverlapReport& y) { return x.ratio > y.ratio; });
-  r = best;
-  r.rank = rank;
-  return r;
 }
 
 }  // namespace mpdem

@@ -62,11 +62,10 @@ void Simulation::initialize() {
   ++evaluations_;
   initialized_ = true;
   const Params& prm = scene_.model.params;
-  refresh_stats();
-  const StateScan scan = global_scan(scan_state(scene_.particles, prm.fields, prm.domain));
-  check_energy(scan);  // the reference for the first step
-  record_state(scan);  // the start of the run's drift
-  record_overlap(interactions_->global_max_overlap(scene_.particles, scene_.barriers));
+  const StepTotals& t = reduce_step(scan_state(scene_.particles, prm.fields, prm.domain), -1.0);
+  check_energy(t.scan);  // the reference for the first step
+  record_state(t.scan);  // the start of the run's drift
+  record_overlap(t.deepest);
 }
 
 StepReport Simulation::advance(double dt) {
@@ -89,9 +88,10 @@ StepReport Simulation::advance(double dt) {
     }
   }
   evaluations_ += static_cast<std::uint64_t>(rep.evaluations);
+  const double t0 = time_;
   time_ += dt;
   ++steps_;
-  check_state(rep);
+  check_state(rep, time_ - t0);
   return rep;
 }
 
@@ -100,6 +100,7 @@ StepReport Simulation::advance_adaptive(double limit) {
   // Once for all tries: a redone step is shorter and starts from the same state.
   interactions_->prepare_step(scene_.particles, scene_.barriers, std::min(dt_, limit));
   const Params& prm = scene_.model.params;
+  const double t0 = time_;
   for (;;) {
     const double h = std::min(dt_, limit);
     StepReport rep = trapezoidal_.step(scene_.particles, scene_.barriers, *interactions_, time_, h,
@@ -111,7 +112,7 @@ StepReport Simulation::advance_adaptive(double limit) {
       ++steps_;
       // A step shortened to land on `limit` says nothing about the step to take next.
       if (h == dt_) dt_ = std::clamp(factor * h, prm.time.dt_min, prm.time.dt_max);
-      check_state(rep);
+      check_state(rep, time_ - t0);
       return rep;
     }
     if (h <= prm.time.dt_min * (1.0 + 1e-12))
@@ -155,12 +156,13 @@ void Simulation::record_overlap(const OverlapReport& r) {
   }
 }
 
-void Simulation::check_state(const StepReport& rep) {
+void Simulation::check_state(const StepReport& rep, double h) {
   Particles& p = scene_.particles;
   const Params& prm = scene_.model.params;
   // One pass (or none, when the integrator fused it into its own); culprits searched only if needed.
-  refresh_stats();
-  const StateScan scan = global_scan(rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain));
+  const StepTotals& totals = reduce_step(rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain), h);
+  const StateScan scan = totals.scan;
+  const OverlapReport deepest = totals.deepest;
   if (scan.nonfinite > 0 && comm_) {
     const auto [id, rank] = first_nonfinite();
     throw RunError(fmt::format("non-finite state of particle id {}{} at step {} (t = {:.9g} s). The run is unstable; "
@@ -174,7 +176,7 @@ void Simulation::check_state(const StepReport& rep) {
                                    "v = ({}, {}, {}). The run is unstable; reduce time.dt.",
                                    p.id[i], steps_, time_, p.x[i].x, p.x[i].y, p.x[i].z, p.v[i].x, p.v[i].y, p.v[i].z));
     }
-  check_overlap();
+  check_overlap(deepest);
   check_energy(scan);
   record_state(scan);
   if (scan.outside > 0) remove_outside();
@@ -404,7 +406,7 @@ void Simulation::step(double end) {
     flush_outputs();
   }
   if (!options_.stop_on_signal) return;
-  if (const int sig = comm_ ? stop_across_ranks() : stop_signal()) {
+  if (const int sig = comm_ ? step_totals_.stop : stop_signal()) {
     std::filesystem::path ck;
     if (out) {
       ck = dir / "checkpoint.bin";

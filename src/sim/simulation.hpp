@@ -17,6 +17,7 @@
 #include "sim/energy.hpp"
 #include "sim/run_record.hpp"
 #include "sim/state_scan.hpp"
+#include "sim/step_totals.hpp"
 #include "parallel/communicator.hpp"
 #include "sim/interactions.hpp"
 
@@ -107,9 +108,10 @@ class Simulation {
   Model& model() { return scene_.model; }  // a material edited between steps acts at the next step
 
  private:
-  void check_state(const StepReport& rep);  // NaN / infinity, energy jumps, domain exits
+  // NaN / infinity, energy jumps, domain exits after a step of h (s).
+  void check_state(const StepReport& rep, double h);
   void check_energy(const StateScan& s);
-  void check_overlap();
+  void check_overlap(const OverlapReport& r);  // r: the deepest contact over all ranks
   struct Fastest {
     double v2 = 0.0;  // m^2/s^2, squared speed
     std::int64_t id = -1;
@@ -135,24 +137,26 @@ class Simulation {
 
   // --- several ranks (simulation_decomposed.cpp) ---
   void decompose(const Communicator& comm);  // keeps this rank's particles, splits the work
-  StateScan global_scan(const StateScan& s) const;
-  // The statistics of the last evaluation over all ranks (refresh_stats: collective).
+  // The totals after a step over all ranks (sim/step_totals.hpp; one collective on several
+  // ranks, this rank's own on one), kept for stats() and particle_count(): the interaction
+  // statistics, the particle count, the scan (this rank's: s) and the deepest contact; on several
+  // ranks also the stop signal and the particle snapshots due after a step of h (s; h < 0: none).
+  const StepTotals& reduce_step(const StateScan& s, double h);
+  // The statistics of the last evaluation over all ranks (as of the last reduce_step).
   const InteractionStats& stats() const;
-  void refresh_stats();
   // Every rank's particles in id order on rank 0 (collective; empty on the other ranks).
   Particles gathered();
-  // The particle snapshots due after a step of h (s) now, on every rank, and the signal that stops
-  // the run (0: none) if any rank received one (both collective).
-  ParticleSnapshotsDue particles_due(double h, bool force) const;
+  // The particle snapshots due after a step of h (s) now, on every rank: as decided with the
+  // step's totals when they were for this step, else decided now by rank 0 (collective).
+  ParticleSnapshotsDue particles_due(double h, bool force);
   // This rank's piece of particle VTU snapshot `index` (io/pvtu_writer.hpp); returns when every
   // rank's is complete (collective).
   void write_piece(std::uint64_t index);
-  int stop_across_ranks() const;
   // Every rank's particles that reach into an inlet's volume (Inlets::reach), in id order, on
   // every rank (collective), and the particles of `fresh` this rank's brick holds.
   Particles near_inlets();
   void keep_own(Particles& fresh) const;
-  std::size_t particle_count() const { return comm_ ? global_count_ : scene_.particles.size(); }
+  std::size_t particle_count() const { return comm_ ? step_totals_.particles : scene_.particles.size(); }
   void snapshots(double h, bool force);  // the snapshot outputs due after a step of h (s)
   // The lowest id of a particle with a non-finite state and the rank holding it, on every rank
   // (collective); id -1 if none.
@@ -165,8 +169,9 @@ class Simulation {
   Scene scene_;
   RunOptions options_;
   const Communicator* comm_ = nullptr;  // several ranks; null in a one-rank run
-  InteractionStats stats_now_;          // several ranks: stats() of the last refresh_stats()
-  std::size_t global_count_ = 0;        // several ranks: particles on all ranks at refresh_stats()
+  StepTotals step_totals_;              // the last reduce_step()'s
+  // s, the time and step length of the particle snapshot decision in step_totals_ (h < 0: none).
+  double snapshots_time_ = 0.0, snapshots_h_ = -1.0;
   std::unique_ptr<Interactions> interactions_;
   TrapezoidalIntegrator trapezoidal_;
   VerletIntegrator verlet_;

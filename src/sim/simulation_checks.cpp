@@ -70,8 +70,7 @@ std::vector<Simulation::Fastest> Simulation::fastest(std::size_t k) const {
   return all;
 }
 
-void Simulation::check_overlap() {
-  const OverlapReport r = interactions_->global_max_overlap(scene_.particles, scene_.barriers);
+void Simulation::check_overlap(const OverlapReport& r) {
   record_overlap(r);
   const double limit = scene_.model.params.checks.max_overlap;
   if (!(limit > 0.0)) return;

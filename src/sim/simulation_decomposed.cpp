@@ -17,6 +17,7 @@
 #include "sim/simulation.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "sim/inlets.hpp"
+#include "sim/step_totals.hpp"
 #include "sim/stop_signal.hpp"
 
 namespace mpdem {
@@ -44,25 +45,32 @@ void Simulation::decompose(const Communicator& comm) {
   trapezoidal_.set_communicator(&comm);
 }
 
-StateScan Simulation::global_scan(const StateScan& s) const {
-  if (!comm_) return s;
-  double v[] = {s.energy.kinetic,
-                s.energy.rotational,
-                s.energy.potential,
-                s.electric,
-                static_cast<double>(s.nonfinite),
-                static_cast<double>(s.outside)};
-  comm_->sum(v);
-  return {{v[0], v[1], v[2]}, v[3], static_cast<std::size_t>(v[4]), static_cast<std::size_t>(v[5])};
+const StepTotals& Simulation::reduce_step(const StateScan& s, double h) {
+  StepTotals& t = step_totals_;
+  t = StepTotals{};
+  t.stats = interactions_->stats();
+  t.particles = scene_.particles.size();
+  t.scan = s;
+  t.deepest = interactions_->max_overlap(scene_.particles, scene_.barriers);
+  snapshots_h_ = -1.0;
+  if (!comm_) return t;
+  t.stop = stop_signal();
+  if (output_ && h >= 0.0) {
+    // What snapshots(h, false) will ask after this step: the output series change only there.
+    const ParticleSnapshotsDue due = output_->particles_due(time_, h, false);
+    t.vtu = due.vtu;
+    t.csv = due.csv;
+    t.vtu_index = due.vtu_index;
+  }
+  t = combine_over_ranks(*comm_, t);
+  if (h >= 0.0) {
+    snapshots_time_ = time_;
+    snapshots_h_ = h;
+  }
+  return t;
 }
 
-const InteractionStats& Simulation::stats() const { return comm_ ? stats_now_ : interactions_->stats(); }
-
-void Simulation::refresh_stats() {
-  if (!comm_) return;
-  stats_now_ = interactions_->global_stats();
-  global_count_ = static_cast<std::size_t>(comm_->sum(static_cast<std::uint64_t>(scene_.particles.size())));
-}
+const InteractionStats& Simulation::stats() const { return comm_ ? step_totals_.stats : interactions_->stats(); }
 
 namespace {
 // The particles of the ranks' messages (pack_particles), in id order: what is written or decided
@@ -108,7 +116,11 @@ void Simulation::keep_own(Particles& fresh) const {
   fresh.compact(grid.owned(std::span<const Vec3>(fresh.x.data(), fresh.size()), comm_->rank()));
 }
 
-ParticleSnapshotsDue Simulation::particles_due(double h, bool force) const {
+ParticleSnapshotsDue Simulation::particles_due(double h, bool force) {
+  // Decided with the step's checks (reduce_step) when they were for this very step.
+  const bool decided = !force && snapshots_h_ >= 0.0 && snapshots_h_ == h && snapshots_time_ == time_;
+  snapshots_h_ = -1.0;
+  if (decided) return {step_totals_.vtu, step_totals_.csv, step_totals_.vtu_index};
   ParticleSnapshotsDue due;
   if (output_) due = output_->particles_due(time_, h, force);
   const std::uint64_t fields[] = {due.vtu ? 1u : 0u, due.csv ? 1u : 0u, due.vtu_index};
@@ -129,8 +141,6 @@ void Simulation::write_piece(std::uint64_t index) {
                         vtu_options(scene_.model));
   comm_->barrier();  // every piece complete before rank 0 lists them in the .pvtu
 }
-
-int Simulation::stop_across_ranks() const { return static_cast<int>(comm_->max(static_cast<double>(stop_signal()))); }
 
 std::pair<std::int64_t, int> Simulation::first_nonfinite() const {
   const Particles& p = scene_.particles;

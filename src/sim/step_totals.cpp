@@ -1,0 +1,82 @@
+#include "sim/step_totals.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <iterator>
+#include <span>
+#include <vector>
+
+#include "parallel/communicator.hpp"
+
+namespace mpdem {
+
+namespace {
+constexpr std::size_t kStatSums = 2 + std::size(kRankSummedStats);  // the contact counts first
+constexpr std::size_t kSums = kStatSums + kScanSums;
+
+// One rank's totals as a message of fixed size (every rank's the same: one all-gather).
+struct Message {
+  double sum[kSums];
+  std::uint64_t particles;
+  OverlapReport deepest;
+  std::int64_t stop;
+  std::uint64_t due[3];  // vtu, csv, vtu_index
+};
+}  // namespace
+
+StepTotals combine_over_ranks(const Communicator& comm, const StepTotals& mine) {
+  Message m{};  // value-initialised: the padding too, so the message's bytes are all defined
+  const StateScan& s = mine.scan;
+  const double scan[kScanSums] = {s.energy.kinetic,
+                                  s.energy.rotational,
+                                  s.energy.potential,
+                                  s.electric,
+                                  static_cast<double>(s.nonfinite),
+                                  static_cast<double>(s.outside)};
+  m.sum[0] = static_cast<double>(mine.stats.contacts_pp);
+  m.sum[1] = static_cast<double>(mine.stats.contacts_pb);
+  for (std::size_t k = 0; k < std::size(kRankSummedStats); ++k) m.sum[2 + k] = mine.stats.*kRankSummedStats[k];
+  std::copy(std::begin(scan), std::end(scan), m.sum + kStatSums);
+  m.particles = mine.particles;
+  m.deepest = mine.deepest;
+  m.stop = mine.stop;
+  m.due[0] = mine.vtu ? 1 : 0;
+  m.due[1] = mine.csv ? 1 : 0;
+  m.due[2] = mine.vtu_index;
+
+  const std::vector<std::byte> all = comm.all_gather_fixed(std::as_bytes(std::span(&m, 1)));
+  Message t{};
+  int deepest_rank = 0;
+  for (int r = 0; r < comm.size(); ++r) {
+    Message x;
+    std::memcpy(&x, all.data() + static_cast<std::size_t>(r) * sizeof x, sizeof x);
+    if (r == 0) {
+      t = x;  // rank 0's decision on the snapshots stands
+      continue;
+    }
+    for (std::size_t k = 0; k < kSums; ++k) t.sum[k] = t.sum[k] + x.sum[k];
+    t.particles += x.particles;
+    if (x.deepest.ratio > t.deepest.ratio) {
+      t.deepest = x.deepest;
+      deepest_rank = r;
+    }
+    t.stop = std::max(t.stop, x.stop);
+  }
+
+  StepTotals out = mine;
+  out.stats.contacts_pp = static_cast<std::size_t>(t.sum[0]);
+  out.stats.contacts_pb = static_cast<std::size_t>(t.sum[1]);
+  for (std::size_t k = 0; k < std::size(kRankSummedStats); ++k) out.stats.*kRankSummedStats[k] = t.sum[2 + k];
+  const double* sc = t.sum + kStatSums;
+  out.scan = {{sc[0], sc[1], sc[2]}, sc[3], static_cast<std::size_t>(sc[4]), static_cast<std::size_t>(sc[5])};
+  out.particles = t.particles;
+  out.deepest = t.deepest;
+  out.deepest.rank = deepest_rank;
+  out.stop = static_cast<int>(t.stop);
+  out.vtu = t.due[0] != 0;
+  out.csv = t.due[1] != 0;
+  out.vtu_index = t.due[2];
+  return out;
+}
+
+}  // namespace mpdem

@@ -1,0 +1,32 @@
+#pragma once
+// StepTotals: what the checks after a step read over all ranks (docs/parallel.md) - the
+// interaction statistics, the particle count, the state scan, the deepest overlap - with the
+// stop signal and rank 0's particle snapshot decision, combined in one collective: each
+// collective makes every rank wait for the slowest, so a step pays for one rather than six.
+// Sums are taken element by element in rank order, as Communicator::sum takes them: the bits of
+// separate reductions, on every rank.
+#include <cstdint>
+
+#include "contact/particle_contacts.hpp"
+#include "sim/interactions.hpp"
+#include "sim/state_scan.hpp"
+
+namespace mpdem {
+
+class Communicator;
+
+struct StepTotals {
+  InteractionStats stats;       // the contact counts and kRankSummedStats summed; the rest as given
+  std::uint64_t particles = 0;  // owned particles, summed
+  StateScan scan;               // summed
+  OverlapReport deepest;        // the deepest overlap; rank: the rank that holds it (the lowest on a tie)
+  int stop = 0;                 // the stop signal received (0: none), the largest of the ranks'
+  // The particle snapshots due after the step (OutputManager::particles_due): rank 0's decision.
+  bool vtu = false, csv = false;
+  std::uint64_t vtu_index = 0;
+};
+
+// Every rank's totals combined, the same on every rank. Collective.
+StepTotals combine_over_ranks(const Communicator& comm, const StepTotals& mine);
+
+}  // namespace mpdem

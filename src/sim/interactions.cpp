@@ -128,6 +128,7 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
 void Interactions::prepare_step(Particles& p, const Barriers& b, double dt) {
   ScopedTimer timer(times_.search);
   if (comm_) balance_if_due(p, b);
+  defer_loads_ = comm_ != nullptr;  // until the step's totals (end_step_loads)
   predicted_displacement_ = -1.0;
   // On several ranks every decision is taken over all of them (the rebuild is collective).
   if (policy_.drift_known && dt > 0.0 && !any_rank(stale(p, b))) {

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "contact/contact_table.hpp"
@@ -133,8 +134,16 @@ class Interactions {
   void decompose(const Communicator& comm, const BrickGrid& grid);
   bool decomposed() const { return comm_ != nullptr; }
   // Statistics summed over the ranks (the barriers' drive power and work are already global:
-  // their loads are summed over the ranks at every evaluation). Collective.
+  // their loads are summed over the ranks at every evaluation that reads them). Collective.
   InteractionStats global_stats() const;
+  // Several ranks: from prepare_step to the step's totals (Simulation::reduce_step), an
+  // evaluation whose barriers are all at rest leaves the barrier loads this rank's own (such
+  // barriers do no work, so nothing in the step reads the sum): one collective less a step.
+  // Then barrier_loads() are this rank's (7 per element: force, moment, pressure), to be summed
+  // with the step's totals; end_step_loads puts the sum back (if pending) and ends the deferral.
+  bool barrier_loads_pending() const { return loads_pending_; }
+  std::vector<double> barrier_loads(const Barriers& b) const;
+  void end_step_loads(Barriers& b, std::span<const double> summed);
 
   const InteractionStats& stats() const { return stats_; }
   // Forces and torques added to particles by a caller, between steps (sim/external_loads.hpp).
@@ -186,7 +195,8 @@ class Interactions {
   bool all_ranks(bool v) const { return !any_rank(!v); }
   // The decomposed rebuild: history keyed by ids, migration at reordering rebuilds.
   void rebuild_decomposed(Particles& p, const Barriers& b, bool reorder);
-  void reduce_barrier_loads(Barriers& b) const;  // element loads summed over the ranks
+  // Element loads summed over the ranks, unless they may wait (barrier_loads_pending).
+  void reduce_barrier_loads(Barriers& b);
   // Every [parallel] balance_every steps: the ranks' cost measured, and when its imbalance
   // exceeds balance_threshold the cut planes moved and the particles migrated (a rebuild).
   void balance_if_due(Particles& p, const Barriers& b);
@@ -211,6 +221,8 @@ class Interactions {
     std::size_t n = 0;    // particles
   } next_drift_;
   const Communicator* comm_ = nullptr;  // several ranks (decompose()); null in a one-rank run
+  bool defer_loads_ = false;            // within a step: loads of barriers at rest may wait
+  bool loads_pending_ = false;          // the barrier loads are this rank's alone, to be summed
   std::uint64_t steps_since_balance_ = 0;
   double busy_at_balance_ = 0.0;  // s, evaluation time (times_ without search, exchange) at the last measurement
   double imbalance_ = 0.0;        // -, see imbalance()

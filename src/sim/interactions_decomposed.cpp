@@ -1,8 +1,9 @@
 // Interactions over several ranks (docs/parallel.md): the decomposition's set-up, the collective
 // decisions, the rebuild that migrates particles with their contact history keyed by ids, and
-// the reductions of the barrier loads and statistics.
-#include <cstring>
+// the reductions of the barrier loads (or their deferral to the step's totals) and statistics.
+#include <algorithm>
 #include <iterator>
+#include <span>
 #include <vector>
 
 #include "contact/barrier_contacts.hpp"
@@ -68,7 +69,25 @@ void Interactions::balance_if_due(Particles& p, const Barriers& b) {
   }
 }
 
-void Interactions::reduce_barrier_loads(Barriers& b) const {
+namespace {
+// True when no element moves: every drive power is then 0 whatever the loads.
+bool at_rest(const Barriers& b) {
+  const auto still = [](const Vec3& v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; };
+  return std::all_of(b.velocity.begin(), b.velocity.end(), still) && std::all_of(b.spin.begin(), b.spin.end(), still);
+}
+
+void set_loads(Barriers& b, std::span<const double> v) {
+  for (std::size_t e = 0; e < b.size(); ++e) {
+    for (int c = 0; c < 3; ++c) {
+      b.force[e][c] = v[7 * e + static_cast<std::size_t>(c)];
+      b.moment[e][c] = v[7 * e + 3 + static_cast<std::size_t>(c)];
+    }
+    b.pressure[e] = v[7 * e + 6];
+  }
+}
+}  // namespace
+
+std::vector<double> Interactions::barrier_loads(const Barriers& b) const {
   // One message: forces, moments, pressures.
   const std::size_t m = b.size();
   std::vector<double> v(7 * m);
@@ -79,14 +98,22 @@ void Interactions::reduce_barrier_loads(Barriers& b) const {
     }
     v[7 * e + 6] = b.pressure[e];
   }
+  return v;
+}
+
+void Interactions::reduce_barrier_loads(Barriers& b) {
+  // The barriers are the same on every rank, so is this decision.
+  loads_pending_ = defer_loads_ && at_rest(b);
+  if (loads_pending_) return;
+  std::vector<double> v = barrier_loads(b);
   comm_->sum(v);
-  for (std::size_t e = 0; e < m; ++e) {
-    for (int c = 0; c < 3; ++c) {
-      b.force[e][c] = v[7 * e + static_cast<std::size_t>(c)];
-      b.moment[e][c] = v[7 * e + 3 + static_cast<std::size_t>(c)];
-    }
-    b.pressure[e] = v[7 * e + 6];
-  }
+  set_loads(b, v);
+}
+
+void Interactions::end_step_loads(Barriers& b, std::span<const double> summed) {
+  if (loads_pending_) set_loads(b, summed);
+  loads_pending_ = false;
+  defer_loads_ = false;
 }
 
 InteractionStats Interactions::global_stats() const {

@@ -62,7 +62,10 @@ const StepTotals& Simulation::reduce_step(const StateScan& s, double h) {
     t.csv = due.csv;
     t.vtu_index = due.vtu_index;
   }
+  const bool loads = interactions_->barrier_loads_pending();
+  if (loads) t.loads = interactions_->barrier_loads(scene_.barriers);
   t = combine_over_ranks(*comm_, t);
+  interactions_->end_step_loads(scene_.barriers, t.loads);
   if (h >= 0.0) {
     snapshots_time_ = time_;
     snapshots_h_ = h;

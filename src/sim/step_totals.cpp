@@ -4,6 +4,7 @@
 #include <cstring>
 #include <iterator>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "parallel/communicator.hpp"
@@ -44,16 +45,26 @@ StepTotals combine_over_ranks(const Communicator& comm, const StepTotals& mine) 
   m.due[1] = mine.csv ? 1 : 0;
   m.due[2] = mine.vtu_index;
 
-  const std::vector<std::byte> all = comm.all_gather_fixed(std::as_bytes(std::span(&m, 1)));
+  // The message, then the loads.
+  const std::size_t n_loads = mine.loads.size(), each = sizeof m + n_loads * sizeof(double);
+  std::vector<std::byte> bytes(each);
+  std::memcpy(bytes.data(), &m, sizeof m);
+  if (n_loads > 0) std::memcpy(bytes.data() + sizeof m, mine.loads.data(), n_loads * sizeof(double));
+  const std::vector<std::byte> all = comm.all_gather_fixed(bytes);
   Message t{};
+  std::vector<double> loads(n_loads), x_loads(n_loads);
   int deepest_rank = 0;
   for (int r = 0; r < comm.size(); ++r) {
     Message x;
-    std::memcpy(&x, all.data() + static_cast<std::size_t>(r) * sizeof x, sizeof x);
+    const std::byte* at = all.data() + static_cast<std::size_t>(r) * each;
+    std::memcpy(&x, at, sizeof x);
+    if (n_loads > 0) std::memcpy(x_loads.data(), at + sizeof x, n_loads * sizeof(double));
     if (r == 0) {
       t = x;  // rank 0's decision on the snapshots stands
+      loads = x_loads;
       continue;
     }
+    for (std::size_t k = 0; k < n_loads; ++k) loads[k] = loads[k] + x_loads[k];
     for (std::size_t k = 0; k < kSums; ++k) t.sum[k] = t.sum[k] + x.sum[k];
     t.particles += x.particles;
     if (x.deepest.ratio > t.deepest.ratio) {
@@ -76,6 +87,7 @@ StepTotals combine_over_ranks(const Communicator& comm, const StepTotals& mine) 
   out.vtu = t.due[0] != 0;
   out.csv = t.due[1] != 0;
   out.vtu_index = t.due[2];
+  out.loads = std::move(loads);
   return out;
 }
 

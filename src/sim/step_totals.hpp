@@ -1,11 +1,13 @@
 #pragma once
 // StepTotals: what the checks after a step read over all ranks (docs/parallel.md) - the
 // interaction statistics, the particle count, the state scan, the deepest overlap - with the
-// stop signal and rank 0's particle snapshot decision, combined in one collective: each
+// stop signal, rank 0's particle snapshot decision and the barrier loads when they wait for it
+// (Interactions::barrier_loads_pending), combined in one collective: each
 // collective makes every rank wait for the slowest, so a step pays for one rather than six.
 // Sums are taken element by element in rank order, as Communicator::sum takes them: the bits of
 // separate reductions, on every rank.
 #include <cstdint>
+#include <vector>
 
 #include "contact/particle_contacts.hpp"
 #include "sim/interactions.hpp"
@@ -24,6 +26,9 @@ struct StepTotals {
   // The particle snapshots due after the step (OutputManager::particles_due): rank 0's decision.
   bool vtu = false, csv = false;
   std::uint64_t vtu_index = 0;
+  // Barrier loads still to be summed (Interactions::barrier_loads_pending), 7 per element: summed
+  // (the same count on every rank); empty when none.
+  std::vector<double> loads;
 };
 
 // Every rank's totals combined, the same on every rank. Collective.

@@ -1,7 +1,7 @@
 #pragma once
 // Scenes run over several ranks (tests/parallel): a frictional, rolling, thermal cluster in a box
-// of barriers that the bricks cut (also with charges and the near field), and a column that falls
-// through the cuts.
+// of barriers that the bricks cut (also with charges and the near field, or without rolling
+// resistance), and a column that falls through the cuts.
 #include "support/dense_granular_scene.hpp"
 
 namespace mpdem::test {
@@ -31,6 +31,19 @@ inline Scene column(Integrator integ, double dt) {
   s.model.params.analysis.thermal = true;
   for (std::size_t i = 0; i < s.particles.size(); ++i)
     s.particles.T[i] = 290.0 + static_cast<double>(s.particles.id[i] % 21);
+  return s;
+}
+
+// The cluster without rolling resistance and with mu_s = 0.5 > mu_d = 0.4: the trapezoidal rule's
+// last iteration stands for its commit evaluation (docs/integrators.md, "Commit"), and stick/slip
+// decisions jump the force.
+inline Scene sliding_cluster(Integrator integ, double dt) {
+  Scene s = cluster(integ, dt);
+  for (ContactLawParams* c : {&s.model.params.contact.particle_particle, &s.model.params.contact.particle_barrier}) {
+    c->mu_rolling = 0.0;
+    c->mu_static = 0.5;
+    c->mu_dynamic = 0.4;
+  }
   return s;
 }
 

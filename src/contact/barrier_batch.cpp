@@ -56,7 +56,6 @@ void contact_law_lanes(const EvalRequest& req, BarrierBatch& b) {
     b.ea[t] = r.spring_energy;
     b.tl[t] = r.tangential_loss;
     b.slip[t] = r.slipped ? 1 : 0;
-    b.flip[t] = r.reversed ? 1 : 0;
   }
 }
 

@@ -57,7 +57,6 @@ struct BarrierBatch {
   double ea[kContacts];                                   // J, the new spring's energy
   double tl[kContacts];                                   // J, tangential loss (ContactResult)
   std::int64_t slip[kContacts];                           // 1 when sliding (8 bytes, like SlipDecision)
-  std::int64_t flip[kContacts];                           // 1 when a free test reverses the imposed decision
 
   // Room for one more particle with all its contacts.
   bool room() const { return count + kSlots <= kContacts && particles < kContacts; }

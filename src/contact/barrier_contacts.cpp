@@ -157,8 +157,7 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
   if (direct)
     for (std::size_t e = 0; e < m; ++e) b.pressure[e] = element_pressure(b, e);
   if (req.commit) store_.commit();
-  return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3], sums[5], sums[6], sums[7], sums[8],
-          static_cast<std::size_t>(sums[9])};
+  return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3], sums[5], sums[6], sums[7], sums[8]};
 }
 
 template <bool kRotating>
@@ -170,7 +169,7 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
   if (cand.empty()) {  // kept only for its records: no contact now (and no force to add)
     store_.tentative_used(k) = 0;
     store_.load_used(k) = 0;
-    if (records_decision(req.iteration)) store_.first_used(k) = 0;
+    if (req.iteration == 1) store_.first_used(k) = 0;
     return;
   }
   detect_barrier_contacts(b, topo_, tris_, p.x[i], p.radius[i], cand, found);
@@ -183,7 +182,7 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
   if (found.size() > count) acc[4] += static_cast<double>(found.size() - count);
   store_.tentative_used(k) = static_cast<std::uint8_t>(count);
   store_.load_used(k) = static_cast<std::uint8_t>(count);
-  if (records_decision(req.iteration)) store_.first_used(k) = static_cast<std::uint8_t>(count);
+  if (req.iteration == 1) store_.first_used(k) = static_cast<std::uint8_t>(count);
 
   const Vec3 v = p.v[i], w = p.w[i];
   const double r = p.radius[i], m = p.mass[i];
@@ -216,7 +215,7 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
     }
     // Later iterations keep the first iteration's stick/slip decision (physics/tangential.hpp).
     SlipDecision decide = SlipDecision::Free;
-    if (!decides_freely(req.iteration))
+    if (req.iteration >= 2)
       for (std::size_t s = 0; s < first_used; ++s)
         if (first[s].element == static_cast<std::int32_t>(e))
           decide = first[s].slipped ? SlipDecision::Slip : SlipDecision::Stick;
@@ -265,7 +264,7 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
   // The sums in registers: acc could alias the records written below, as far as the compiler
   // knows, and every += would wait on the previous store.
   double sum0 = acc[0], sum1 = acc[1], sum2 = acc[2], sum3 = acc[3], sum5 = acc[5], sum6 = acc[6], sum7 = acc[7],
-         sum8 = acc[8], sum9 = acc[9];
+         sum8 = acc[8];
   std::size_t t = 0;
   for (std::size_t q = 0; q < batch.particles; ++q) {
     const std::size_t k = batch.k[q];
@@ -306,7 +305,7 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
         loads_to->force[e] += ls.force;
         loads_to->moment[e] += cross(ls.point - centres_[e], ls.force);
       }
-      if (records_decision(req.iteration)) first[c] = BarrierFirst{el, slipped};
+      if (req.iteration == 1) first[c] = BarrierFirst{el, slipped};
       sum0 += 1.0;
       sum1 += batch.energy[t];
       sum2 += batch.damping[t];
@@ -315,13 +314,12 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
       sum6 += slipped ? batch.tl[t] : 0.0;
       sum7 += batch.eb[t];
       sum8 += batch.ea[t];
-      sum9 += static_cast<double>(batch.flip[t]);
     }
     p.force[i] += force;
     p.torque[i] += torque;
   }
   acc[0] = sum0, acc[1] = sum1, acc[2] = sum2, acc[3] = sum3, acc[5] = sum5, acc[6] = sum6, acc[7] = sum7,
-  acc[8] = sum8, acc[9] = sum9;
+  acc[8] = sum8;
   batch.particles = 0;
   batch.count = 0;
 }

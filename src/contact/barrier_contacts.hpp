@@ -50,9 +50,6 @@ class BarrierContacts {
 
   // Adds contact forces/torques to the particles and loads to the barriers.
   PairStats evaluate(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req);
-  // The last evaluation's history becomes the committed one, as if it had been a commit (every
-  // evaluation writes the tentative history; Interactions::promote).
-  void promote() { store_.commit(); }
   // Keeps the history with its particles when they are reordered or removed.
   void permute(const std::vector<std::uint32_t>& order) { store_.permute(order); }
   void compact(const std::vector<char>& keep) { store_.compact(keep); }
@@ -78,9 +75,8 @@ class BarrierContacts {
  private:
   // {contacts, elastic energy J, normal damping power W, rolling friction power W, dropped
   // contacts, tangential loss J of the sticking and of the sliding contacts, stored springs'
-  // energy J at this step's stiffness and of the new springs (ContactResult), contacts whose
-  // imposed stick/slip decision a free test reverses}
-  using BarrierSums = std::array<double, 10>;
+  // energy J at this step's stiffness and of the new springs (ContactResult)}
+  using BarrierSums = std::array<double, 9>;
   // Contacts of active particle k, stage 1: detects them, finds their history, sets its record
   // counts and appends the contacts with the particle's values to the batch (acc[4]: dropped).
   // kRotating: some element rotates (surface velocity at the contact point, springs turned).

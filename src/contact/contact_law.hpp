@@ -85,9 +85,8 @@ struct ContactResult {
   Vec3 ft;                // N, tangential force
   Vec3 spring;            // m (N: incremental form, k_t s), spring for the next step
   bool slipped = false;
-  bool reversed = false;  // the imposed stick/slip decision is not the one a free test makes (TangentialResult)
-  double energy = 0.0;    // J, elastic energy stored (normal + tangential spring)
-  double damping = 0.0;   // W, dissipated by the normal dashpot
+  double energy = 0.0;   // J, elastic energy stored (normal + tangential spring)
+  double damping = 0.0;  // W, dissipated by the normal dashpot
   // J, removed by the tangential spring-dashpot in the step at this step's stiffness: the work
   // the contact's tangential force took from the bodies, -f_t . ds, less what the spring gained,
   // 1/2 k_t (|s_new|^2 - |s|^2) (s: the stored spring). Sliding, that is the friction work plus
@@ -156,7 +155,6 @@ inline ContactResult tangential_contact(double mu_s, double mu_d, TangentialSpri
   out.ft.x = t.force.x, out.ft.y = t.force.y, out.ft.z = t.force.z;
   out.spring.x = kept * t.spring.x, out.spring.y = kept * t.spring.y, out.spring.z = kept * t.spring.z;
   out.slipped = t.slipped;
-  out.reversed = t.reversed;
   out.spring_energy = 0.5 * n.k_t * (t.spring.x * t.spring.x + t.spring.y * t.spring.y + t.spring.z * t.spring.z);
   out.spring_energy_before = 0.5 * n.k_t * (s.x * s.x + s.y * s.y + s.z * s.z);
   out.energy = n.energy + out.spring_energy;

@@ -65,9 +65,7 @@ MPDEM_SCALAR_LOOPS void gather_history(const PairPass& q, Batch& b) {
     if constexpr (kStepStart) {
       const Vec3 v0 = q.vt0[k];
       b.v0x[t] = v0.x, b.v0y[t] = v0.y, b.v0z[t] = v0.z;
-      b.decide[t] = decides_freely(q.iteration) ? SlipDecision::Free
-                    : q.slipped[k]              ? SlipDecision::Slip
-                                                : SlipDecision::Stick;
+      b.decide[t] = q.iteration < 2 ? SlipDecision::Free : q.slipped[k] ? SlipDecision::Slip : SlipDecision::Stick;
     }
   }
 }
@@ -132,7 +130,6 @@ void tangential_stage(const PairPass& q, Batch& b) {
                                                increment, vt, decide);
     b.sx[t] = r.spring.x, b.sy[t] = r.spring.y, b.sz[t] = r.spring.z;
     b.slip[t] = r.slipped ? 1 : 0;
-    b.flip[t] = r.reversed ? 1 : 0;
     const Vec3 f = r.fn * nrm + r.ft;
     const Vec3 arm = cross(nrm, r.ft);  // torque r_P x f_t = -R n x f_t on both members (62)
     b.fx[t] = f.x, b.fy[t] = f.y, b.fz[t] = f.z;
@@ -151,7 +148,7 @@ void tangential_stage(const PairPass& q, Batch& b) {
 // contact's store (a store-to-load chain through memory).
 template <bool kUniform>
 void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
-  const bool rolling = q.rolling, commit = q.commit, keep = q.keep, records = records_decision(q.iteration);
+  const bool rolling = q.rolling, commit = q.commit, first_iteration = q.iteration == 1;
   const double uniform_mu_r = q.uniform_law.mu_r;
   const Vec3* const w = q.w;
   const ContactTerms* const terms = q.terms;
@@ -166,10 +163,10 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
   for (std::size_t t = 0; t < b.count; ++t) {
     const std::size_t i = b.i[t], j = b.j[t], k = b.slot[t];
     if (!(b.overlap[t] > 0.0)) {  // a candidate within the margin but apart: forget its history
-      if (commit | keep) forget_history(q, k);
+      if (commit) forget_history(q, k);
       continue;
     }
-    if (records) q.slipped[k] = static_cast<std::uint8_t>(b.slip[t]);
+    if (first_iteration) q.slipped[k] = static_cast<std::uint8_t>(b.slip[t]);
     // Rolling resistance against the relative rotation of the step start (the state itself
     // outside the iteration): constant during the iteration (docs/integrators.md).
     Vec3 roll{}, wrel{};
@@ -181,9 +178,6 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
       spring[k] = {b.sx[t], b.sy[t], b.sz[t]};
       if (vt0) vt0[k] = b.vt(t);
       if (wr0) wr0[k] = wrel;
-    } else if (keep) {  // what a commit would store, aside (no rolling resistance then)
-      q.spring_next[k] = {b.sx[t], b.sy[t], b.sz[t]};
-      q.vt_next[k] = b.vt(t);
     }
     const Vec3 f{b.fx[t], b.fy[t], b.fz[t]};
     const Vec3 arm{b.ax[t], b.ay[t], b.az[t]};
@@ -207,7 +201,6 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
     s.sticking_loss += slid ? 0.0 : b.tl[t];
     s.spring_before += b.eb[t];
     s.spring_after += b.ea[t];
-    s.reversed += static_cast<double>(b.flip[t]);
     // Divide only for a contact deeper than the deepest so far.
     const double rmin = std::min(ri, rj);
     if (b.overlap[t] > s.deepest.ratio * rmin) s.deepest = {b.overlap[t] / rmin, q.id[i], q.id[j]};

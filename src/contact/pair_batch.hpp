@@ -41,7 +41,6 @@ struct PairBlockSums {
   double sliding_loss = 0.0;    // J, tangential loss of the sliding contacts
   double spring_before = 0.0;   // J, the stored springs' energy at this step's stiffness
   double spring_after = 0.0;    // J, the new springs' energy
-  double reversed = 0.0;        // contacts whose imposed stick/slip decision a free test reverses
   DeepestPair deepest;
 };
 
@@ -75,11 +74,6 @@ struct PairPass {
   double phi = 1.0;            // -
   int iteration = 0;
   bool commit = false;
-  // An iteration that may become the step's commit (EvalRequest::keep): every slot's history as a
-  // commit would store it (apart slots: zeros) into these, the committed arrays left as they are.
-  bool keep = false;
-  Vec3* __restrict spring_next = nullptr;   // [pairs] m
-  Vec3* __restrict vt_next = nullptr;       // [pairs] m/s
   std::size_t n = 0;                        // particles
   std::size_t pairs = 0;                    // list slots
   bool vector_select = true;                // AVX-512 candidate selection, when built in (kVectorSelect)

@@ -69,7 +69,6 @@ struct Batch {
   double eb[kBatch];                          // J, stored spring at this step's stiffness
   double ea[kBatch];                          // J, the new spring's energy
   double tl[kBatch];                          // J, tangential loss of the step (ContactResult)
-  std::int64_t flip[kBatch];                  // 1 when a free test would reverse the imposed decision
   // The vector stages run over whole vectors: the lanes past count repeat the last candidate
   // (gather_members, gather_history), so they compute finite values nobody reads.
   std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }
@@ -77,14 +76,8 @@ struct Batch {
   Vec3 vt(std::size_t t) const { return {vtx[t], vty[t], vtz[t]}; }
 };
 
-// A commit forgets the history of slot k, whose pair is apart; an iteration that may become the
-// commit (keep) stores that into the tentative arrays.
+// A commit forgets the history of slot k, whose pair is apart.
 inline void forget_history(const PairPass& q, std::size_t k) {
-  if (q.keep) {
-    q.spring_next[k] = Vec3{};
-    q.vt_next[k] = Vec3{};
-    return;
-  }
   q.spring[k] = Vec3{};
   if (q.vt0) q.vt0[k] = Vec3{};
   if (q.wr0) q.wr0[k] = Vec3{};
@@ -113,9 +106,8 @@ inline void select_scalar(const PairPass& q, Batch& b, std::size_t k, std::size_
     b.dx[t] = d.x, b.dy[t] = d.y, b.dz[t] = d.z;  // kept for stage 1
     b.reach[t] = reach;
     b.count += cand;
-    if (q.commit | q.keep) {
-      // Only a contact that just opened has history to forget (rare): store only then. (The
-      // trapezoidal rule's vt0 is not checked: every slot apart is written.)
+    if (q.commit) {
+      // Only a contact that just opened has history to forget (rare): store only then.
       const Vec3& s0 = q.spring[k];
       const bool held = (s0.x != 0.0) | (s0.y != 0.0) | (s0.z != 0.0) | (q.vt0 != nullptr) | (q.wr0 != nullptr);
       if (!cand & held) forget_history(q, k);
@@ -167,7 +159,7 @@ inline void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_
   _mm512_storeu_pd(b.dz + t, _mm512_maskz_compress_pd(cand, dz));
   _mm512_storeu_pd(b.reach + t, _mm512_maskz_compress_pd(cand, reach));
   b.count += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(cand)));
-  if (!(q.commit | q.keep)) return;
+  if (!q.commit) return;
   // Slots apart that hold history: any non-zero spring component (vt0 / wr0: every slot apart).
   unsigned held = lanes;
   if (!q.vt0 && !q.wr0) {

@@ -57,15 +57,6 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   const std::size_t n = p.size_with_ghosts();  // the blocks span the ghosts, which get the second members' shares
   ensure_history(list.num_pairs());
   slipped_.resize(step_start_ ? list.num_pairs() : 0);
-  // An iteration that may become the commit stores its history aside; with rolling resistance
-  // the commit's torque differs from an iteration's (the relative rotation of the evaluated state
-  // against that of the step start), so no iteration can stand in for it.
-  const bool keep = req.keep && !req.commit && step_start_ && wr0_.empty();
-  kept_ = false;
-  if (keep) {
-    spring_next_.resize(list.num_pairs());
-    vt_next_.resize(list.num_pairs());
-  }
   cross_force_.resize(blocks.num_cross());
   cross_torque_.resize(blocks.num_cross());
   if (recording_) records_.assign(list.num_pairs(), PairRecord{});  // slots apart stay at overlap 0
@@ -103,9 +94,6 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
                    req.phi,
                    req.iteration,
                    req.commit,
-                   keep,
-                   keep ? spring_next_.data() : nullptr,
-                   keep ? vt_next_.data() : nullptr,
                    n,
                    list.num_pairs(),
                    vector_select_,
@@ -170,24 +158,13 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
     st.sliding_loss += s.sliding_loss;
     st.spring_before += s.spring_before;
     st.spring_after += s.spring_after;
-    st.reversed += static_cast<std::size_t>(s.reversed);
     if (s.deepest.ratio > deepest_.ratio) deepest_ = {s.deepest.ratio, s.deepest.first, s.deepest.second, -1};
   }
-  kept_ = keep;
   return st;
 }
 
-bool ParticleContacts::promote() {
-  if (!kept_ || spring_next_.size() != spring_.size() || vt_next_.size() != vt0_.size()) return false;
-  spring_.swap(spring_next_);
-  vt0_.swap(vt_next_);
-  kept_ = false;
-  return true;
-}
-
 std::size_t ParticleContacts::memory_bytes() const {
-  return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() + cross_torque_.capacity() +
-          spring_next_.capacity() + vt_next_.capacity()) *
+  return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() + cross_torque_.capacity()) *
              sizeof(Vec3) +
          slipped_.capacity() + terms_.capacity() * sizeof(Terms) + block_sums_.capacity() * sizeof(PairBlockSums) +
          (block_seconds_.capacity() + block_cost_.capacity()) * sizeof(double);
@@ -200,9 +177,6 @@ ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborS
   release(cross_force_);
   release(cross_torque_);
   release(terms_);
-  release(spring_next_);  // only the last evaluation's, on the old list
-  release(vt_next_);
-  kept_ = false;
   const VerletList& list = search.pairs();
   if (spring_.size() != list.num_pairs()) return h;
   const auto& off = list.offsets();
@@ -252,7 +226,6 @@ ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborS
 void ParticleContacts::restore_history(const NeighborSearch& search, CarriedHistory h,
                                        const std::vector<std::uint32_t>& old_index) {
   const VerletList& list = search.pairs();
-  kept_ = false;
   spring_.clear();
   ensure_history(list.num_pairs());
   if (h.second.empty()) return;
@@ -304,7 +277,6 @@ std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, co
 
 void ParticleContacts::import_history(const Particles& p, const NeighborSearch& search, std::vector<PairHistory> h) {
   const VerletList& list = search.pairs();
-  kept_ = false;
   spring_.clear();
   ensure_history(list.num_pairs());
   if (h.empty()) return;

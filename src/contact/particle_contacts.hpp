@@ -38,9 +38,6 @@ struct PairStats {
   double sliding_loss = 0.0;    // J, tangential loss of the step of the sliding contacts
   double spring_before = 0.0;   // J, the stored springs' energy at this step's stiffness (ContactResult)
   double spring_after = 0.0;    // J, the new springs' energy
-  // Contacts whose imposed stick/slip decision (a later fixed-point iteration's) the Coulomb test
-  // would reverse: a commit evaluation at this state would decide otherwise.
-  std::size_t reversed = 0;
 };
 
 // The deepest contact of the last evaluation, relative to the smaller radius.
@@ -63,13 +60,7 @@ class ParticleContacts {
   ParticleContacts(const ContactTable& table, bool step_start) : table_(table), step_start_(step_start) {}
 
   // Adds contact forces and torques to p.force / p.torque; list must be current for p.x.
-  // With req.keep (the trapezoidal rule, no rolling resistance) the history a commit would store
-  // is kept aside ...
   PairStats evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req);
-  // ... and becomes the committed history here, as if the last evaluation had been a commit
-  // (true), provided the last evaluation kept it and the list has not been rebuilt since.
-  bool promote();
-  bool kept() const { return kept_; }  // the last evaluation kept its history aside
 
   // The contact history across a neighbour rebuild, keyed by the particles' indices before it:
   // taken out before the particles are permuted or removed and the list is rebuilt ...
@@ -120,10 +111,6 @@ class ParticleContacts {
   std::vector<Vec3> vt0_;              // m/s, tangential velocity at the step start (step_start)
   std::vector<Vec3> wr0_;              // rad/s, w_first - w_second at the step start (step_start, mu_r > 0)
   std::vector<std::uint8_t> slipped_;  // stick (0) / slip (1) of the first iteration (step_start)
-  // Per pair slot [pairs], what the last evaluation would have committed (EvalRequest::keep):
-  std::vector<Vec3> spring_next_;  // m
-  std::vector<Vec3> vt_next_;      // m/s
-  bool kept_ = false;              // the last evaluation filled them, on the current list
   // Per cross pair [PairBlocks::num_cross()], the second member's share, added after the block pass:
   std::vector<Vec3> cross_force_;          // N
   std::vector<Vec3> cross_torque_;         // N m

@@ -91,8 +91,6 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
     rep.converged = false;
     for (int k = 1; k <= max_iter && !rep.converged; ++k) {
       req.iteration = k;
-      // Every iteration keeps its contact history aside: the last one's stands for the commit.
-      req.keep = stand_in_commits_;
       const Sums s = iterate(p, b, f, req);
       ++rep.evaluations;
       test_convergence(p, s, k, rep);
@@ -102,7 +100,8 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
       return rep;
     }
   }
-  if (!commit(p, b, f, req, rep)) ++rep.evaluations;
+  commit(p, b, f, req, rep);
+  ++rep.evaluations;
   return rep;
 }
 
@@ -273,7 +272,7 @@ void TrapezoidalIntegrator::reject(Particles& p, StepReport& rep) const {
   restore_start(p);
 }
 
-bool TrapezoidalIntegrator::commit(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req,
+void TrapezoidalIntegrator::commit(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req,
                                    const StepReport& rep) {
   const std::size_t n = p.size();
   // Orientation of the accepted end state (accept_midpoint has set it for a two-cycle).
@@ -281,17 +280,10 @@ bool TrapezoidalIntegrator::commit(Particles& p, Barriers& b, Interactions& f, c
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
     for (std::size_t i = 0; i < n; ++i) p.q[i] = rotate_by_increment(q0_[i], alpha_[i]);
   }
-  // The end state y_K came from the rates of the last evaluation, at y_(K-1), within tolerance
-  // of it: those rates and that evaluation's contact history are the step's end rates and
-  // history (docs/integrators.md, "Commit"), unless the iteration ended on a two-cycle's midpoint
-  // or the commit's own rules differ there (Interactions::promote).
-  if (req.phi > 0.0 && !rep.two_cycle && f.promote(p, b)) return true;
   EvalRequest end = req;
   end.commit = true;
-  end.keep = false;
   end.iteration = 0;
   f.evaluate(p, b, end);
-  return false;
 }
 
 }  // namespace mpdem

@@ -26,18 +26,13 @@ class TrapezoidalIntegrator {
   static StepPolicy policy(const Params& params) { return {params.time.phi, true, params.time.phi, false, 0.0}; }
 
   // Advances the particles from t to t + dt. On entry force/torque/heat hold the rates at the
-  // current state. On success the arrays hold the accepted end state y_K and the end rates with
-  // the committed contact history: those of the last iteration's evaluation, at y_(K-1), whose
-  // rates gave y_K (Interactions::promote), or, where that cannot stand for a commit (a two-cycle,
-  // rolling resistance, a reversed stick/slip decision), a commit evaluation at y_K. When the
-  // iteration does not converge within max_iter, the start state and its rates are restored and
-  // the report says converged = false.
+  // current state. On success the arrays hold the accepted end state and its rates (the commit
+  // evaluation stores contact history). When the iteration does not converge within max_iter,
+  // the start state and its rates are restored and the report says converged = false.
   StepReport step(Particles& p, Barriers& b, Interactions& f, double t, double dt, int max_iter);
   // A run over several ranks: the convergence norms are summed over all of them, so that every
   // rank iterates as often and accepts (or rejects) the same steps.
   void set_communicator(const Communicator* comm) { comm_ = comm; }
-  // For tests: off, every step ends with a commit evaluation at y_K.
-  void stand_in_commits(bool on) { stand_in_commits_ = on; }
 
  private:
   // Per field: sums of |y_K - y_(K-1)|^2, |y_K - y(t)|^2, |y_K - y_(K-2)|^2 and |y_K|^2.
@@ -47,8 +42,7 @@ class TrapezoidalIntegrator {
   void predict(Particles& p, double dt);                                             // end state from the start rates
   Sums iterate(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req);  // evaluate, update
   void test_convergence(Particles& p, const Sums& s, int k, StepReport& rep);        // sets rep.converged
-  // True when the last iteration's evaluation stood for the commit (no evaluation made).
-  bool commit(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req, const StepReport& rep);
+  void commit(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req, const StepReport& rep);
   // After the last iteration failed: names the culprit and restores the start state.
   void reject(Particles& p, StepReport& rep) const;
 
@@ -68,7 +62,6 @@ class TrapezoidalIntegrator {
   // are free (the mechanical fields' norms are over those).
   bool any_fixed_ = false;
   std::size_t free_ = 0;
-  bool stand_in_commits_ = true;  // the last iteration's evaluation may stand for the commit
   // Start-of-step state and rates [N]
   std::vector<Vec3> x0_, v0_, w0_, a0_, b0_;  // m, m/s, rad/s, m/s^2, rad/s^2
   std::vector<Quat> q0_;

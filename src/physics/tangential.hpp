@@ -42,7 +42,6 @@ struct TangentialResult {
   Vec3 force;                     // N, tangential force on i (on j: -force)
   Vec3 spring;                    // m, spring to store for the next step
   bool slipped = false;           // true when the Coulomb limit was hit
-  bool reversed = false;          // an imposed decision that the Coulomb test (68) would not make
   double dissipated_power = 0.0;  // W, estimate: dashpot d_t |v_t|^2 when sticking,
                                   //    friction work rate -f_t.v_t when slipping
 };
@@ -65,17 +64,6 @@ struct TangentialResult {
 // vectorise with one lane width (a narrower type makes the compiler pick 32-lane iterations and
 // a long scalar remainder).
 enum class SlipDecision : std::int64_t { Free, Stick, Slip };
-
-// The fixed-point iterations that decide freely (the commit, iteration 0, always does); the
-// later ones keep the decision of the last of them. One: the first iteration evaluates the
-// predictor, which depends only on the step's start state and rates, so its decisions do not
-// depend on the order in which a particle's forces were summed (the rank count). Deciding in the
-// second iteration too made a decision at the Coulomb threshold differ between one rank and
-// several, and the decomposed runs drift apart (tests/parallel/mpi_decomposed_run.cpp).
-constexpr int kFreeDecisionIterations = 1;
-inline bool decides_freely(int iteration) { return iteration <= kFreeDecisionIterations; }
-// Iterations whose decisions the later ones keep.
-inline bool records_decision(int iteration) { return iteration >= 1 && iteration <= kFreeDecisionIterations; }
 
 // c ? a : b per component: a select the compiler vectorises (a ternary on whole structs becomes a
 // branch).
@@ -102,7 +90,6 @@ inline TangentialResult tangential_force(const Vec3& s, const Vec3& ds, const Ve
   out.force = pick(stick, f_trial, f_slip);  // stick (68) or slide
   out.spring = pick(stick, s_tent, s_slip * t);
   out.slipped = !stick;
-  out.reversed = !free & (coulomb != stick);
   out.dissipated_power = stick ? d_t * norm2(v_t) : -dot(f_slip, v_t);
   return out;
 }

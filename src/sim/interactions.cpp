@@ -37,6 +37,16 @@ ContactTable table_for(const Model& model) {
   return t;
 }
 
+// W, -sum (F.v + T.w) over the fixed particles: the power of what holds them to their motion
+// (T.w only with rotation: without it every particle's w is held, unbooked). Summed in fixed
+// blocks, so independent of the thread count.
+double fixed_particle_power(const Particles& p, bool rotation) {
+  return deterministic_block_sums<1>(p.size(), [&](std::size_t lo, std::size_t hi, std::array<double, 1>& acc) {
+    for (std::size_t i = lo; i < hi; ++i)
+      if (p.fixed[i]) acc[0] -= dot(p.force[i], p.v[i]) + (rotation ? dot(p.torque[i], p.w[i]) : 0.0);
+  })[0];
+}
+
 // True when some particle i in [lo, hi) has |x_i - x_build_i| + t |v_i| > limit (> 0). Only a
 // particle with one of the two terms above limit/2 can, and only those pay for the square roots
 // (measured: a vectorised loop over all of them was slower).
@@ -319,10 +329,10 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     ScopedTimer timer(times_.exchange);
     reduce_barrier_loads(b);
   }
-  HeatFlows heat_flows;
   if (heat_) {
     ScopedTimer timer(times_.other);
-    heat_flows = heat_->evaluate(p, b, *search_);
+    const HeatFlows h = heat_->evaluate(p, b, *search_);
+    if (req.commit) commit_heat(h, req);
   }
   {
     ScopedTimer timer(times_.exchange);
@@ -332,19 +342,52 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   stats_.contacts_pp = pp.contacts;
   stats_.contacts_pb = pb.contacts;
   stats_.elastic_energy = pp.elastic_energy + pb.elastic_energy;
-  last_ = {pp.damping_power + pb.damping_power,
-           pp.rolling_power + pb.rolling_power,
-           pp.sticking_loss + pb.sticking_loss,
-           pp.sliding_loss + pb.sliding_loss,
-           pp.spring_before + pb.spring_before,
-           pp.spring_after + pb.spring_after,
-           -heat_flows.barriers,
-           -heat_flows.convection,
-           -heat_flows.radiation,
-           pp.reversed + pb.reversed,
-           req.dt,
-           true};
-  if (req.commit) book_commit(p, b, req.dt);
+  if (req.commit) {
+    // The normal dashpots' and rolling resistance's powers by the trapezoid over the step (the
+    // start power is the last commit's), the order of accuracy of both integrators; the
+    // tangential spring-dashpot by what each contact took in the step (ContactResult), under
+    // friction when it slid, under damping when it stuck; and under friction, what the springs'
+    // stored energy lost between the last commit and this step's stiffness k_t(delta), with the
+    // springs of contacts that ended (the total spring keeps s as k_t changes, the incremental
+    // one k_t s: neither keeps 1/2 k_t |s|^2).
+    const double damping = pp.damping_power + pb.damping_power, rolling = pp.rolling_power + pb.rolling_power;
+    const double restiffened = stats_.spring_energy - (pp.spring_before + pb.spring_before);
+    stats_.damping_dissipated += 0.5 * req.dt * (stats_.damping_power + damping) + pp.sticking_loss + pb.sticking_loss;
+    stats_.friction_dissipated += 0.5 * req.dt * (stats_.rolling_power + rolling) + pp.sliding_loss + pb.sliding_loss +
+                                  restiffened;
+    stats_.damping_power = damping;
+    stats_.rolling_power = rolling;
+    // The barriers' loads are this evaluation's: the power their motion puts into the particles.
+    double drive = 0.0;  // W (0 for a resting element)
+    for (std::size_t e = 0; e < b.size(); ++e) drive += b.drive_power(e);
+    stats_.barrier_work += 0.5 * req.dt * (stats_.drive_power + drive);
+    stats_.drive_power = drive;
+    // A fixed particle's velocity is held against the force and torque acting on it (contacts
+    // and fields): the holding force -F does the work -F.v (and -T.w) on the system.
+    const double held = p.any_fixed() ? fixed_particle_power(p, model_.params.analysis.rotation) : 0.0;  // W
+    stats_.fixed_work += 0.5 * req.dt * (stats_.fixed_power + held);
+    stats_.fixed_power = held;
+    const double pushed = external_.empty() ? 0.0
+                                            : external_.power(p, policy_.velocity_lag * req.dt,
+                                                              model_.params.analysis.rotation);  // W
+    stats_.external_work += 0.5 * req.dt * (stats_.external_power + pushed);
+    stats_.external_power = pushed;
+    stats_.spring_energy = pp.spring_after + pb.spring_after;
+  }
+}
+
+void Interactions::commit_heat(const HeatFlows& h, const EvalRequest& req) {
+  // The temperature update weights the start and end flows like the integrator does
+  // (its policy: trapezoidal 1 - phi and phi, Verlet's explicit Euler the start flow only), so
+  // the cumulative sums balance the stored thermal energy exactly.
+  const double phi = policy_.heat_weight;
+  const double ob = -h.barriers, oc = -h.convection, orad = -h.radiation;  // outward, W
+  stats_.heat_to_barriers += req.dt * ((1.0 - phi) * out_barriers_ + phi * ob);
+  stats_.heat_convected += req.dt * ((1.0 - phi) * out_convected_ + phi * oc);
+  stats_.heat_radiated += req.dt * ((1.0 - phi) * out_radiated_ + phi * orad);
+  out_barriers_ = ob;
+  out_convected_ = oc;
+  out_radiated_ = orad;
 }
 
 std::uint64_t Interactions::convection_clamps() const { return heat_ ? heat_->clamped_evaluations() : 0; }

@@ -26,9 +26,6 @@ struct EvalRequest {
   double phi = 1.0;     // -, weight of the evaluated state's tangential velocity in the increment
   bool commit = false;  // store contact history: the evaluated state is the accepted end of step
   int iteration = 0;    // fixed-point iteration (1, 2, ...) of the step, 0 outside the iteration
-  // An iteration whose evaluation may become the step's commit (Interactions::promote): the
-  // contact history a commit would store is kept aside. Changes no force.
-  bool keep = false;
 };
 
 // Energy and contact bookkeeping (physics.md section 12).
@@ -122,13 +119,6 @@ class Interactions {
   // Never reorders. Should the particles have moved beyond what prepare_step foresaw, it rebuilds
   // the lists in place first (counted by mid_step_rebuilds()).
   void evaluate(Particles& p, Barriers& b, const EvalRequest& req);
-  // The last evaluation (an iteration with EvalRequest::keep) becomes the step's commit, as if it
-  // had been one: its kept contact history is committed and the step's energy and heat booked.
-  // Only when a commit evaluation of the same state would compute the same: no rolling
-  // resistance (an iteration holds the step start's relative rotation) and no contact whose
-  // imposed stick/slip decision the commit's free test would reverse. False (nothing changed)
-  // otherwise, or when the lists changed since; on several ranks every rank answers alike.
-  bool promote(const Particles& p, const Barriers& b);
   // Removes the particles whose keep[i] is 0, keeping everyone else's contact history.
   void remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep);
   // Appends the particles `fresh` (an inlet's, sim/inlets.hpp) after the others, keeping every
@@ -190,10 +180,7 @@ class Interactions {
 
  private:
   void start_accumulators(Particles& p) const;  // force = field forces, torque = heat = 0
-  // The bookkeeping of a commit (energy and heat balances, sim/interactions_commit.cpp) from the
-  // last evaluation's terms, for a step of dt (s).
-  void book_commit(const Particles& p, const Barriers& b, double dt);
-  void commit_heat(double dt);
+  void commit_heat(const HeatFlows& h, const EvalRequest& req);
   void rebuild(Particles& p, const Barriers& b, bool reorder);
   bool rebuild_due(const Particles& p, const Barriers& b, double dt) const;
   // Lists never built, or particles or barrier elements added or removed since.
@@ -247,19 +234,6 @@ class Interactions {
   std::unique_ptr<BarrierContacts> pb_;
   std::unique_ptr<NearFieldForces> near_;  // null when the near field is off
   std::unique_ptr<HeatTransfer> heat_;     // null when [analysis] thermal is off
-  // What book_commit needs of the last evaluation (its contacts' and heat flows' sums).
-  struct CommitTerms {
-    double damping_power = 0.0;                                          // W, normal dashpots
-    double rolling_power = 0.0;                                          // W, rolling resistance
-    double sticking_loss = 0.0;                                          // J
-    double sliding_loss = 0.0;                                           // J
-    double spring_before = 0.0;                                          // J
-    double spring_after = 0.0;                                           // J
-    double out_barriers = 0.0, out_convected = 0.0, out_radiated = 0.0;  // W, outward heat flows
-    std::size_t reversed = 0;  // contacts whose imposed stick/slip decision a free test reverses
-    double dt = 0.0;           // s, the step the evaluation was for
-    bool valid = false;
-  } last_;
   // Outward heat flows (W) of the last committed evaluation, the start values of the next step.
   double out_barriers_ = 0.0, out_convected_ = 0.0, out_radiated_ = 0.0;
 };

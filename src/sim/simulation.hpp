@@ -102,7 +102,6 @@ class Simulation {
   Particles& particles() { return scene_.particles; }
   Barriers& barriers() { return scene_.barriers; }
   Interactions& interactions() { return *interactions_; }
-  TrapezoidalIntegrator& trapezoidal() { return trapezoidal_; }
   const Inlets* inlets() const { return inlets_.get(); }  // null without [[inlet]]
   const Sinks* sinks() const { return sinks_.get(); }     // null without [[sink]]
   const Model& model() const { return scene_.model; }

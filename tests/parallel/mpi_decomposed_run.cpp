@@ -6,7 +6,7 @@
 //  - a falling column cut across its height, whose spheres fall through the cuts (migration
 //    with their contact and barrier history), 10^4 steps, both integrators;
 //  - the cluster with charges: the near field (Coulomb's law) across the ranks;
-//  - the cluster without rolling resistance: the trapezoidal rule's commit by its last iteration;
+//  - the cluster without rolling resistance, mu_s > mu_d: stick/slip decisions that jump the force;
 //  - a sliding (then sticking) pair that crosses a cut: its spring, bit for bit, at every step;
 //  - a floor switched on within a step: the lists rebuilt in that evaluation on every rank.
 #include <gtest/gtest.h>
@@ -129,9 +129,9 @@ TEST_P(DecomposedRun, RollingThermalClusterFollowsTheOneRankRun) {
   }
 }
 
-// Without rolling resistance the trapezoidal rule's last iteration stands for the commit
-// evaluation where it can (a choice every rank takes alike): the decomposed run still follows the
-// one-rank run.
+// Without rolling resistance and with mu_s > mu_d the tangential force jumps at every stick/slip
+// decision: the trapezoidal rule keeps the first iteration's, made at the predictor (the step
+// start's state and rates only, the same on any rank count), so the runs still agree.
 TEST_P(DecomposedRun, ClusterWithoutRollingResistanceFollowsTheOneRankRun) {
   const Outcome o = compare(sliding_cluster, GetParam(), 2e-6, 10000, "cluster without rolling resistance");
   for (double d : {o.x, o.v, o.w, o.T}) EXPECT_LT(d, 1e-10);

@@ -34,9 +34,8 @@ inline Scene column(Integrator integ, double dt) {
   return s;
 }
 
-// The cluster without rolling resistance and with mu_s = 0.5 > mu_d = 0.4: the trapezoidal rule's
-// last iteration stands for its commit evaluation (docs/integrators.md, "Commit"), and stick/slip
-// decisions jump the force.
+// The cluster without rolling resistance and with mu_s = 0.5 > mu_d = 0.4: the tangential force
+// jumps at the stick/slip decisions.
 inline Scene sliding_cluster(Integrator integ, double dt) {
   Scene s = cluster(integ, dt);
   for (ContactLawParams* c : {&s.model.params.contact.particle_particle, &s.model.params.contact.particle_barrier}) {

@@ -102,6 +102,7 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
     throw RunError(fmt::format("particle id {}{} has a non-finite position at t = {:.9g} s (the state diverged "
                                "within the step); reduce time.dt (see `mpdem check` for a recommended step)",
                                bad, rank_note(comm_, rank), b.time));
+  heap_policy_.before_rebuild();  // before its first allocation
   if (comm_) {
     rebuild_decomposed(p, b, reorder);
     return;
@@ -127,6 +128,7 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
 
 void Interactions::prepare_step(Particles& p, const Barriers& b, double dt) {
   ScopedTimer timer(times_.search);
+  heap_policy_.step();
   if (comm_) balance_if_due(p, b);
   defer_loads_ = comm_ != nullptr;  // until the step's totals (end_step_loads)
   predicted_displacement_ = -1.0;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contact/contact_table.hpp"
+#include "core/heap_policy.hpp"
 #include "integrate/step_policy.hpp"
 #include "io/binary_stream.hpp"
 #include "io/checkpoint_format.hpp"
@@ -208,6 +209,7 @@ class Interactions {
   ExternalLoads external_;
   PhaseTimes times_;
   std::uint64_t mid_step_rebuilds_ = 0;
+  RebuildHeapPolicy heap_policy_;  // a rare rebuild's large arrays in mappings of their own
   // m, bound on the particles' displacement since the build at the next evaluation, set by
   // prepare_step when the step's drift is known (StepPolicy::drift_known); -1: unknown.
   double predicted_displacement_ = -1.0;

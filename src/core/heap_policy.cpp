@@ -22,11 +22,19 @@ constexpr bool kOwnAllocator = false;
 #endif
 }  // namespace
 
-bool set_mmap_threshold(std::size_t bytes) {
+bool heap_policy_active() {
 #if defined(__GLIBC__)
   // Read once: the environment is the user's choice for the whole run.
   static const bool user_set = std::getenv("MALLOC_MMAP_THRESHOLD_") != nullptr;
-  if (kOwnAllocator || user_set) return false;
+  return !kOwnAllocator && !user_set;
+#else
+  return false;
+#endif
+}
+
+bool set_mmap_threshold(std::size_t bytes) {
+#if defined(__GLIBC__)
+  if (!heap_policy_active()) return false;
   // A threshold set here stops glibc's own adjustment, which also keeps the heap's top from being
   // trimmed below twice the threshold: without that, every frequent rebuild would hand its freed
   // top back to the system and fault it in again at the next one.

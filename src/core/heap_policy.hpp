@@ -38,8 +38,12 @@ class RebuildHeapPolicy {
   bool built_ = false;
 };
 
+// False where the policy leaves malloc alone: not glibc's malloc, a sanitizer's allocator, or
+// MALLOC_MMAP_THRESHOLD_ set in the environment (read once).
+bool heap_policy_active();
+
 // Sets glibc's mmap threshold (bytes), and its trim threshold to twice that (as glibc's own
-// adjustment does), unless it cannot or should not (RebuildHeapPolicy); true when it did.
+// adjustment does), when heap_policy_active(); true when it did.
 bool set_mmap_threshold(std::size_t bytes);
 
 }  // namespace mpdem

@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "core/release.hpp"
 #include "core/parallel.hpp"
 #include "physics/tangential.hpp"
+#include "contact/id_pair_index.hpp"
 #include "contact/pair_batch.hpp"
 
 namespace mpdem {
@@ -281,7 +283,7 @@ void ParticleContacts::import_history(const Particles& p, const NeighborSearch& 
   ensure_history(list.num_pairs());
   if (h.empty()) return;
   const bool vt = !vt0_.empty(), wr = !wr0_.empty();
-  // Orient every record as (smaller id, larger id); look slots up by binary search.
+  // Orient every record as (smaller id, larger id); look slots up by hash.
   for (PairHistory& r : h)
     if (r.id_first > r.id_second) {
       std::swap(r.id_first, r.id_second);
@@ -289,22 +291,23 @@ void ParticleContacts::import_history(const Particles& p, const NeighborSearch& 
       r.vt0 = -r.vt0;
       r.wr0 = -r.wr0;
     }
-  auto key_less = [](const PairHistory& a, const PairHistory& b) {
-    return a.id_first != b.id_first ? a.id_first < b.id_first : a.id_second < b.id_second;
-  };
-  std::sort(h.begin(), h.end(), key_less);
+  const auto key = [&h](std::size_t r) { return std::pair{h[r].id_first, h[r].id_second}; };
+  IdPairIndex index;
+  index.build(h.size(), key);
   const auto& off = list.offsets();
   const auto& idx = list.indices();
-  for (std::size_t i = 0; i < list.owned(); ++i)
+  const std::size_t n = list.owned();
+  // Each slot is written from the records alone: any thread count gives the same slots.
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::size_t i = 0; i < n; ++i)
     for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
       const std::int64_t a = p.id[i], b = p.id[idx[k]];  // a ghost carries its source's id
       const bool flip = a > b;
-      PairHistory key{flip ? b : a, flip ? a : b, {}, {}, {}};
-      auto it = std::lower_bound(h.begin(), h.end(), key, key_less);
-      if (it == h.end() || it->id_first != key.id_first || it->id_second != key.id_second) continue;
-      spring_[k] = flip ? -it->spring : it->spring;
-      if (vt) vt0_[k] = flip ? -it->vt0 : it->vt0;
-      if (wr) wr0_[k] = flip ? -it->wr0 : it->wr0;
+      const std::size_t r = index.find(flip ? b : a, flip ? a : b, key);
+      if (r == IdPairIndex::npos) continue;
+      spring_[k] = flip ? -h[r].spring : h[r].spring;
+      if (vt) vt0_[k] = flip ? -h[r].vt0 : h[r].vt0;
+      if (wr) wr0_[k] = flip ? -h[r].wr0 : h[r].wr0;
     }
 }
 

@@ -67,8 +67,9 @@ void NeighborSearch::restore(BinaryReader& r, Particles& p, const Barriers& b, c
   build(p, x, at_build);
 }
 
-void NeighborSearch::decompose(const Communicator& comm, BrickGrid grid) {
+void NeighborSearch::decompose(const Communicator& comm, BrickGrid grid, bool temperatures) {
   halo_ = std::make_unique<HaloExchange>(comm, std::move(grid));
+  halo_->temperatures(temperatures);
 }
 
 void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Barriers& b,

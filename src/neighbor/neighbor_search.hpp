@@ -29,8 +29,9 @@ class NeighborSearch {
 
   // A run over several ranks (docs/parallel.md): the ghosts are the halo of the neighbouring
   // bricks (and the periodic images, through the same exchange) instead of PeriodicImages.
-  // Every build is then collective: all ranks rebuild together.
-  void decompose(const Communicator& comm, BrickGrid grid);
+  // Every build is then collective: all ranks rebuild together. `temperatures`: the ghosts'
+  // temperatures and heat flows cross too (heat transfer on).
+  void decompose(const Communicator& comm, BrickGrid grid, bool temperatures);
   const HaloExchange* halo() const { return halo_.get(); }
   // Several ranks, between steps: moves the brick cuts to balance `cost` (this rank's, spread over
   // its owned particles; parallel/load_balance.hpp), keeping every brick wider than the halo of

@@ -183,6 +183,49 @@ std::vector<std::byte> Communicator::exchange_known(int to, std::span<const std:
 #endif
 }
 
+std::vector<std::vector<std::byte>> Communicator::exchange_known(std::span<const KnownTransfer> transfers) const {
+  std::vector<std::vector<std::byte>> in(transfers.size());
+  const auto local = [&](const KnownTransfer& t) {
+    return serial() || ((t.to == rank_ || t.to < 0) && (t.from == rank_ || t.from < 0));
+  };
+  for (std::size_t k = 0; k < transfers.size(); ++k)
+    if (const KnownTransfer& t = transfers[k]; local(t)) in[k] = exchange_known(t.to, t.out, t.from, t.n_in, t.tag);
+  if (serial()) return in;
+#ifdef MPDEM_HAVE_MPI
+  std::vector<MPI_Request> requests;
+  std::vector<std::size_t> received;  // transfer of each receive request
+  for (std::size_t k = 0; k < transfers.size(); ++k) {
+    const KnownTransfer& t = transfers[k];
+    if (local(t)) continue;
+    if (t.from < 0 && t.n_in != 0) throw std::logic_error("Communicator::exchange_known: bytes expected from no rank");
+    if (t.from < 0) continue;
+    in[k].resize(t.n_in);
+    requests.emplace_back();
+    received.push_back(k);
+    MPI_Irecv(in[k].data(), checked_count(t.n_in), MPI_BYTE, t.from, t.tag + 1, mpi_comm(handle_), &requests.back());
+  }
+  const std::size_t n_recv = requests.size();
+  for (const KnownTransfer& t : transfers) {
+    if (local(t) || t.to < 0) continue;
+    requests.emplace_back();
+    // MPI_Isend's buffer is const since MPI 3.
+    MPI_Isend(t.out.data(), checked_count(t.out.size()), MPI_BYTE, t.to, t.tag + 1, mpi_comm(handle_),
+              &requests.back());
+  }
+  std::vector<MPI_Status> status(requests.size());
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), status.data());
+  for (std::size_t r = 0; r < n_recv; ++r) {
+    int got = 0;
+    MPI_Get_count(&status[r], MPI_BYTE, &got);
+    if (static_cast<std::size_t>(got) != transfers[received[r]].n_in)
+      throw std::runtime_error("Communicator::exchange_known: a message of another length");
+  }
+  return in;
+#else
+  throw std::logic_error("Communicator::exchange_known: built without MPI");
+#endif
+}
+
 std::vector<std::byte> Communicator::all_gather_fixed(std::span<const std::byte> mine) const {
   if (serial()) return {mine.begin(), mine.end()};
 #ifdef MPDEM_HAVE_MPI

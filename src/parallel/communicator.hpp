@@ -50,6 +50,18 @@ class Communicator {
   // Uses tag `tag + 1`, as exchange's bytes.
   std::vector<std::byte> exchange_known(int to, std::span<const std::byte> out, int from, std::size_t n_in,
                                         int tag) const;
+  // Several exchange_known at once: every message posted, then all waited for together (the two
+  // directions of a halo stage travel at the same time instead of one after the other). The k-th
+  // result is transfers[k]'s message; a transfer with this rank at both ends is a copy, as in
+  // exchange_known. Tags must tell apart the transfers between the same two ranks.
+  struct KnownTransfer {
+    int to = -1;
+    std::span<const std::byte> out;
+    int from = -1;
+    std::size_t n_in = 0;  // bytes
+    int tag = 0;           // the message uses tag + 1, as exchange_known's
+  };
+  std::vector<std::vector<std::byte>> exchange_known(std::span<const KnownTransfer> transfers) const;
   // Every rank's bytes, in rank order, on every rank.
   std::vector<std::vector<std::byte>> all_gather(std::span<const std::byte> mine) const;
   // The same, when every rank gives the same number of bytes (fixed-size values): rank r's at

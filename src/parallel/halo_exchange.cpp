@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <span>
@@ -212,43 +213,65 @@ void HaloExchange::build(Particles& p, double width) {
 
 void HaloExchange::refresh(Particles& p) const {
   if (p.n_ghost != ghosts_) throw std::logic_error("HaloExchange::refresh: the ghosts changed since the build");
-  for (const Swap& w : swaps_) {
-    std::vector<std::byte> out;
-    pack_particles(p, w.send, w.shift, out, ParticleArrays::kMotion);
-    // The neighbour sends the ghosts it sent at the build, so the length is known: one message.
-    const std::size_t n_in = w.recv_from < 0 ? 0 : packed_bytes(p, w.recv_count, ParticleArrays::kMotion);
-    const auto in = comm_->exchange_known(w.send_to, out, w.recv_from, n_in, w.tag);
-    if (w.recv_count == 0) continue;
-    std::size_t pos = 0;
-    if (unpack_particles(p, in, pos, w.recv_first, ParticleArrays::kMotion) != w.recv_count)
-      throw std::runtime_error("HaloExchange::refresh: a neighbour sent another number of ghosts");
+  const ParticleArrays which = temperatures_ ? ParticleArrays::kMotionAndTemperature : ParticleArrays::kMotion;
+  for (std::size_t first = 0; first < swaps_.size(); first += 2) {
+    std::array<std::vector<std::byte>, 2> out;
+    std::array<Communicator::KnownTransfer, 2> t;
+    for (std::size_t s = 0; s < 2; ++s) {
+      const Swap& w = swaps_[first + s];
+      pack_particles(p, w.send, w.shift, out[s], which);
+      // The neighbour sends the ghosts it sent at the build, so the length is known: one message.
+      const std::size_t n_in = w.recv_from < 0 ? 0 : packed_bytes(p, w.recv_count, which);
+      t[s] = {w.send_to, out[s], w.recv_from, n_in, w.tag};
+    }
+    const auto in = comm_->exchange_known(t);
+    for (std::size_t s = 0; s < 2; ++s) {
+      const Swap& w = swaps_[first + s];
+      if (w.recv_count == 0) continue;
+      std::size_t pos = 0;
+      if (unpack_particles(p, in[s], pos, w.recv_first, which) != w.recv_count)
+        throw std::runtime_error("HaloExchange::refresh: a neighbour sent another number of ghosts");
+    }
   }
   clear_ghost_accumulators(p);
 }
 
 void HaloExchange::fold(Particles& p) const {
-  struct Received {
-    Vec3 force, torque;
-    double heat;
-  };
-  for (auto it = swaps_.rbegin(); it != swaps_.rend(); ++it) {
-    const Swap& w = *it;
-    std::vector<Received> back(w.recv_count);
-    for (std::size_t k = 0; k < w.recv_count; ++k) {
-      const std::size_t g = w.recv_first + k;
-      back[k] = {p.force[g], p.torque[g], p.heat[g]};
+  // Per ghost: force (N), torque (N m), and the heat flow (W) with temperatures.
+  const std::size_t each = temperatures_ ? 7 : 6;
+  for (std::size_t first = swaps_.size(); first > 0;) {
+    first -= 2;
+    std::array<std::vector<double>, 2> back;
+    std::array<Communicator::KnownTransfer, 2> t;
+    for (std::size_t s = 0; s < 2; ++s) {
+      const Swap& w = swaps_[first + s];
+      back[s].resize(w.recv_count * each);
+      for (std::size_t k = 0; k < w.recv_count; ++k) {
+        const std::size_t g = w.recv_first + k;
+        double* b = back[s].data() + k * each;
+        for (int c = 0; c < 3; ++c) {
+          b[c] = p.force[g][c];
+          b[3 + c] = p.torque[g][c];
+        }
+        if (temperatures_) b[6] = p.heat[g];
+      }
+      // One value per particle sent at the build comes back (none when nothing was sent);
+      // exchange_known refuses a message of another length.
+      t[s] = {w.recv_from, std::as_bytes(std::span<const double>(back[s])), w.send_to,
+              w.send.size() * each * sizeof(double), w.tag + 4};
     }
-    // One value per particle sent at the build comes back (none when nothing was sent);
-    // exchange_known refuses a message of another length.
-    const auto in = comm_->exchange_known(w.recv_from, std::as_bytes(std::span<const Received>(back)), w.send_to,
-                                          w.send.size() * sizeof(Received), w.tag + 4);
-    for (std::size_t k = 0; k < w.send.size(); ++k) {
-      Received r;
-      std::memcpy(&r, in.data() + k * sizeof(Received), sizeof r);
-      const std::uint32_t i = w.send[k];
-      p.force[i] += r.force;
-      p.torque[i] += r.torque;
-      p.heat[i] += r.heat;
+    const auto in = comm_->exchange_known(t);
+    // The upper swap's first: the order of the sums as when the swaps travelled one by one.
+    for (std::size_t s = 2; s-- > 0;) {
+      const Swap& w = swaps_[first + s];
+      for (std::size_t k = 0; k < w.send.size(); ++k) {
+        double r[7] = {};
+        std::memcpy(r, in[s].data() + k * each * sizeof(double), each * sizeof(double));
+        const std::uint32_t i = w.send[k];
+        p.force[i] += Vec3{r[0], r[1], r[2]};
+        p.torque[i] += Vec3{r[3], r[4], r[5]};
+        if (temperatures_) p.heat[i] += r[6];
+      }
     }
   }
 }

@@ -10,9 +10,11 @@
 // arrive in two or three hops. Crossing a periodic face shifts a ghost by the period; along a
 // periodic axis with one brick the neighbour is the rank itself (its own periodic images).
 //
-// Each evaluation refreshes the ghosts from their sources (the swaps in order) and afterwards
-// sends what the ghosts received back to their sources (the swaps in reverse), where it is added
-// in the order the ghosts were sent: the sums depend on the rank count, never on timing.
+// Each evaluation refreshes the ghosts from their sources (the stages in order) and afterwards
+// sends what the ghosts received back to their sources (the stages in reverse, and within a
+// stage the upper swap's first), where it is added in the order the ghosts were sent: the sums
+// depend on the rank count, never on timing. The two swaps of a stage travel at once (both
+// choose from what the rank held before the stage, so neither waits for the other's ghosts).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -47,11 +49,15 @@ class HaloExchange {
   // Throws std::invalid_argument when a brick is narrower than `width` along a decomposed axis
   // (ghosts would be needed from beyond the neighbours) or a periodic period shorter than 2 width.
   void build(Particles& p, double width);
-  // Copies the sources' motion state (x, v, w, q, T: what a step changes) onto the ghosts and
-  // clears the ghosts' accumulators; the other arrays were copied at the build.
+  // Copies the sources' motion state (x, v, w, and T with temperatures(true): what a step
+  // changes that an interaction reads) onto the ghosts and clears the ghosts' accumulators; the
+  // other arrays were copied at the build.
   void refresh(Particles& p) const;
-  // Adds the ghosts' force, torque and heat to their sources (on whichever rank they live).
+  // Adds the ghosts' force and torque, and heat with temperatures(true), to their sources (on
+  // whichever rank they live).
   void fold(Particles& p) const;
+  // Whether refresh and fold carry temperatures and heat flows (heat transfer on; default true).
+  void temperatures(bool on) { temperatures_ = on; }
 
   // Between steps (before a migration): moves the cut planes to balance the ranks' cost
   // (parallel/load_balance.hpp: shift_cuts, `x` the owned centres, `min_width` the halo's reach).
@@ -80,6 +86,7 @@ class HaloExchange {
   std::vector<Swap> swaps_;  // two per stage
   std::size_t ghosts_ = 0;
   std::uint64_t migrated_ = 0;
+  bool temperatures_ = true;
 };
 
 }  // namespace mpdem

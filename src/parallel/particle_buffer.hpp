@@ -1,8 +1,9 @@
 #pragma once
 // Particles as bytes, for messages between ranks (halo ghosts and migration): every array of
 // Particles::for_each_array, array by array, so that an array added there travels too; or, for
-// the refresh of ghosts at every evaluation, only the arrays a step changes (kMotion). Native
-// byte order: the ranks of one run share a machine kind.
+// the refresh of ghosts at every evaluation, only the arrays a step changes that an interaction
+// reads (kMotion, kMotionAndTemperature). Native byte order: the ranks of one run share a
+// machine kind.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -17,13 +18,15 @@
 
 namespace mpdem {
 
-// Which arrays a message holds: all (ghosts built, particles migrating), or the motion state a
-// step changes - centre, velocity, spin, orientation, temperature - which is all that a ghost's
-// copy can miss between two builds (the other arrays change only between steps, at a rebuild).
-enum class ParticleArrays { kAll, kMotion };
+// Which arrays a message holds: all (ghosts built, particles migrating), or what a ghost's copy
+// can miss between two builds and an interaction reads: centre, velocity, spin (kMotion), and the
+// temperature when heat transfer is on. The other arrays change only between steps, at a rebuild;
+// the orientation changes every step, but no interaction reads a ghost's (it stays the build's).
+enum class ParticleArrays { kAll, kMotion, kMotionAndTemperature };
 
 inline bool carried(ParticleArrays which, std::string_view name) {
-  return which == ParticleArrays::kAll || name == "x" || name == "v" || name == "w" || name == "q" || name == "T";
+  return which == ParticleArrays::kAll || name == "x" || name == "v" || name == "w" ||
+         (which == ParticleArrays::kMotionAndTemperature && name == "T");
 }
 
 // Appends particles idx of p to out: a count, then each array's values; x shifted by `shift` (m).

@@ -18,7 +18,7 @@ namespace mpdem {
 
 void Interactions::decompose(const Communicator& comm, const BrickGrid& grid) {
   comm_ = &comm;
-  search_->decompose(comm, grid);
+  search_->decompose(comm, grid, heat_ != nullptr);  // ghosts' temperatures only for heat transfer
 }
 
 bool Interactions::any_rank(bool v) const { return comm_ ? comm_->any(v) : v; }

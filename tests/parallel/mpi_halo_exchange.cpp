@@ -1,8 +1,8 @@
 // HaloExchange on 1 to N ranks (run by ctest under mpirun -np 1, 2, 3, 4; parallel/halo_exchange.hpp):
 // the ghosts cover every pair within reach, the pairs each rank keeps (owned first member, the
 // lower id first across ranks) partition the serial pair set exactly, refresh copies the
-// sources bit for bit, fold returns every ghost's share to its source, and migration hands every
-// particle to the owner of its brick with its whole state.
+// sources bit for bit (the temperatures only with heat transfer), fold returns every ghost's share
+// to its source, and migration hands every particle to the owner of its brick with its whole state.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -144,11 +144,16 @@ TEST(HaloExchange, GhostPairsPartitionTheSerialPairs) {
   }
 }
 
-TEST(HaloExchange, RefreshCopiesTheSourcesAndFoldReturnsEveryShare) {
+namespace {
+// With temperatures (heat transfer on) a refresh carries T and the fold heat flows; without, the
+// ghosts keep the build's T and no heat goes back, while x, v and the forces travel as before.
+void refresh_and_fold(bool temperatures) {
   const Communicator& comm = Communicator::world();
   for (const auto& periodic : kPeriodicCases) {
     Split sp(comm, periodic, true);
+    sp.halo.temperatures(temperatures);
     Particles& p = sp.p;
+    const std::vector<double> T_built(p.T.begin(), p.T.end());
     // New state on the owned particles (a step): the ghosts must follow exactly.
     std::vector<Vec3> shift(p.size_with_ghosts());
     for (std::size_t g = p.size(); g < p.size_with_ghosts(); ++g) shift[g] = p.x[g];
@@ -167,7 +172,8 @@ TEST(HaloExchange, RefreshCopiesTheSourcesAndFoldReturnsEveryShare) {
     sp.halo.refresh(p);
     for (std::size_t g = p.size(); g < p.size_with_ghosts(); ++g) {
       EXPECT_EQ(p.v[g], (Vec3{std::sqrt(static_cast<double>(p.id[g])), 1.0 / 3.0, -0.7}));
-      EXPECT_EQ(p.force[g], Vec3{});  // accumulators start empty
+      EXPECT_EQ(p.force[g], Vec3{});                                      // accumulators start empty
+      EXPECT_EQ(p.T[g], temperatures ? T_built[g] + 0.125 : T_built[g]);  // the sources gained 0.125 K
       EXPECT_LT(norm(p.x[g] - shift[g] - Vec3{1e-4, -2e-4, 3e-4}), 1e-14);
     }
     // Fold: one unit per ghost copy; each particle must receive as many as it has copies anywhere.
@@ -195,10 +201,15 @@ TEST(HaloExchange, RefreshCopiesTheSourcesAndFoldReturnsEveryShare) {
       const double n = it == copies.end() ? 0.0 : it->second;
       EXPECT_EQ(p.force[i], (Vec3{n, 0.0, 0.0})) << "id " << p.id[i];
       EXPECT_EQ(p.torque[i], (Vec3{0.0, 2.0 * n, 0.0}));
-      EXPECT_EQ(p.heat[i], 3.0 * n);
+      EXPECT_EQ(p.heat[i], temperatures ? 3.0 * n : 0.0);
     }
   }
 }
+}  // namespace
+
+TEST(HaloExchange, RefreshCopiesTheSourcesAndFoldReturnsEveryShare) { refresh_and_fold(true); }
+
+TEST(HaloExchange, WithoutHeatTransferNoTemperatureOrHeatCrosses) { refresh_and_fold(false); }
 
 TEST(HaloExchange, MigrationHandsEveryParticleToItsOwner) {
   const Communicator& comm = Communicator::world();

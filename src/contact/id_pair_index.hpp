@@ -1,8 +1,8 @@
 #pragma once
 // IdPairIndex: finds the record of an ordered pair of particle ids (lower id first) among n
 // records in expected O(1): an open-addressing hash table of record indices. Used where contact
-// history travels by ids (MPI rebuilds, checkpoints), in place of a sort and a binary search per
-// listed pair, whose cache misses made a decomposed rebuild several times a serial one's.
+// history travels by ids (MPI rebuilds, checkpoints): a lookup per listed pair costs one or two
+// cache misses, where a binary search over the sorted records costs about one per level.
 //
 // Each table entry is 8 bytes: the record index + 1 (0: empty) in the low half, the upper half of
 // the pair's hash in the high half, so that a probe reads a record only when the hashes agree.

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #ifdef MPDEM_HAVE_MPI
 #include <mpi.h>
@@ -156,31 +157,8 @@ std::vector<std::byte> Communicator::exchange(int to, std::span<const std::byte>
 
 std::vector<std::byte> Communicator::exchange_known(int to, std::span<const std::byte> out, int from, std::size_t n_in,
                                                     int tag) const {
-  const bool to_self = to == rank_ || to < 0, from_self = from == rank_ || from < 0;
-  if (serial() || (to_self && from_self)) {
-    std::vector<std::byte> in = exchange(to, out, from, tag);
-    if (in.size() != n_in) throw std::runtime_error("Communicator::exchange_known: a message of another length");
-    return in;
-  }
-#ifdef MPDEM_HAVE_MPI
-  const int dest = to < 0 ? MPI_PROC_NULL : to, source = from < 0 ? MPI_PROC_NULL : from;
-  if (source == MPI_PROC_NULL && n_in != 0)
-    throw std::logic_error("Communicator::exchange_known: bytes expected from no rank");
-  std::vector<std::byte> in(n_in);
-  MPI_Status status;
-  MPI_Sendrecv(out.data(), checked_count(out.size()), MPI_BYTE, dest, tag + 1, in.data(), checked_count(in.size()),
-               MPI_BYTE, source, tag + 1, mpi_comm(handle_), &status);
-  if (source != MPI_PROC_NULL) {
-    int got = 0;
-    MPI_Get_count(&status, MPI_BYTE, &got);
-    if (static_cast<std::size_t>(got) != n_in)
-      throw std::runtime_error("Communicator::exchange_known: a message of another length");
-  }
-  return in;
-#else
-  (void)n_in;
-  throw std::logic_error("Communicator::exchange_known: built without MPI");
-#endif
+  const KnownTransfer t{to, out, from, n_in, tag};
+  return std::move(exchange_known(std::span<const KnownTransfer>(&t, 1))[0]);
 }
 
 std::vector<std::vector<std::byte>> Communicator::exchange_known(std::span<const KnownTransfer> transfers) const {
@@ -189,7 +167,10 @@ std::vector<std::vector<std::byte>> Communicator::exchange_known(std::span<const
     return serial() || ((t.to == rank_ || t.to < 0) && (t.from == rank_ || t.from < 0));
   };
   for (std::size_t k = 0; k < transfers.size(); ++k)
-    if (const KnownTransfer& t = transfers[k]; local(t)) in[k] = exchange_known(t.to, t.out, t.from, t.n_in, t.tag);
+    if (const KnownTransfer& t = transfers[k]; local(t)) {
+      in[k] = exchange(t.to, t.out, t.from, t.tag);  // a copy
+      if (in[k].size() != t.n_in) throw std::runtime_error("Communicator::exchange_known: a message of another length");
+    }
   if (serial()) return in;
 #ifdef MPDEM_HAVE_MPI
   std::vector<MPI_Request> requests;

@@ -2,9 +2,12 @@
 #include "core/parallel.hpp"
 #include "parallel/gather.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "core/deterministic_sum.hpp"
+#include "integrate/trapezoidal_update.hpp"
 
 namespace mpdem {
 
@@ -12,6 +15,13 @@ namespace {
 // Largest alternation, relative to the field's RMS magnitude, accepted as a two-cycle across a
 // force discontinuity (docs/integrators.md); the midpoint is then within half of it.
 constexpr double kTwoCycleAmplitude = 1e-2;
+
+// f(std::true_type{}) or f(std::false_type{}): a run-time flag as a template argument.
+template <class F>
+void with_flag(bool flag, F&& f) {
+  if (flag) f(std::true_type{});
+  else f(std::false_type{});
+}
 }  // namespace
 
 void TrapezoidalIntegrator::save_start(const Particles& p) {
@@ -106,57 +116,64 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
 }
 
 TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double dt, bool predictor) {
-  const double phi = params_.time.phi;
   const bool rotation = params_.analysis.rotation;
   const bool thermal = params_.analysis.thermal;
-  auto add = [](Sums& s, int field, double d1, double change, double d2, double value) {
-    s[4 * field] += d1;
-    s[4 * field + 1] += change;
-    s[4 * field + 2] += d2;
-    s[4 * field + 3] += value;
-  };
-  // End state from the end-of-step rates (134)-(138), taken from the accumulators, or from the
-  // start rates for the predictor. The state it replaces becomes the previous iterate. A fixed
-  // particle keeps v and w and moves by exactly dt v (not dt ((1 - phi) v + phi v), which may
-  // round differently); it is left out of the mechanical fields' norms, which measure what the
-  // iteration changes (test_convergence divides by the free particles' count).
-  return deterministic_sums<4 * kFieldCount>(p.size(), [&](std::size_t i, Sums& s) {
-    const bool held = any_fixed_ && p.fixed[i];
-    const Vec3 a1 = predictor ? a0_[i] : p.force[i] / p.mass[i];
-    const Vec3 v = held ? v0_[i] : v0_[i] + dt * ((1.0 - phi) * a0_[i] + phi * a1);
-    const Vec3 x = held ? x0_[i] + dt * v0_[i] : x0_[i] + dt * ((1.0 - phi) * v0_[i] + phi * v);
-    if (!held) {
-      add(s, kPosition, norm2(x - p.x[i]), norm2(x - x0_[i]), norm2(x - xp_[i]), norm2(x));
-      add(s, kVelocity, norm2(v - p.v[i]), norm2(v - v0_[i]), norm2(v - vp_[i]), norm2(v));
-    }
-    xp_[i] = p.x[i];
-    vp_[i] = p.v[i];
-    p.x[i] = x;
-    p.v[i] = v;
-    if (rotation) {
-      const Vec3 b1 = predictor ? b0_[i] : p.torque[i] / p.inertia[i];
-      const Vec3 w = held ? w0_[i] : w0_[i] + dt * ((1.0 - phi) * b0_[i] + phi * b1);
-      const Vec3 alpha = held ? dt * w0_[i] : dt * ((1.0 - phi) * w0_[i] + phi * w);
-      // The two-cycle test's magnitudes of the rotational fields count the translational ones in
-      // the same units (displacement / R, velocity / R): a contact that starts at the step's end
-      // alternates on and off (the damped normal force jumps from 0 to d_n |rate| at any
-      // positive overlap), and a sphere without spin then alternates between 0 and a small w.
-      const double inv_r2 = 1.0 / (p.radius[i] * p.radius[i]);  // 1/m^2
-      if (!held) {
-        add(s, kRotation, norm2(alpha - alpha_[i]), norm2(alpha), norm2(alpha - alphap_[i]),
-            norm2(alpha) + norm2(x - x0_[i]) * inv_r2);
-        add(s, kAngularVelocity, norm2(w - p.w[i]), norm2(w - w0_[i]), norm2(w - wp_[i]), norm2(w) + norm2(v) * inv_r2);
-      }
-      wp_[i] = p.w[i];
-      alphap_[i] = alpha_[i];
-      p.w[i] = w;
-      alpha_[i] = alpha;  // q follows once, after convergence: no force law reads it
-    }
-    const double h1 = predictor || !thermal ? h0_[i] : heating_rate(p, i);
-    const double T = thermal ? T0_[i] + dt * ((1.0 - phi) * h0_[i] + phi * h1) : T0_[i];
-    add(s, kTemperature, (T - p.T[i]) * (T - p.T[i]), (T - T0_[i]) * (T - T0_[i]), (T - Tp_[i]) * (T - Tp_[i]), T * T);
-    Tp_[i] = p.T[i];
-    p.T[i] = T;
+  heat_capacity_.resize(model_.materials.size());
+  for (std::size_t m = 0; m < heat_capacity_.size(); ++m) heat_capacity_[m] = model_.materials[m].heat_capacity;
+  // The end state from the end-of-step rates in the accumulators, or from the start rates for the
+  // predictor (trapezoidal_update.hpp). The state it replaces becomes the previous iterate.
+  const UpdateArrays a{p.x.data(),
+                       p.v.data(),
+                       p.w.data(),
+                       alpha_.data(),
+                       p.T.data(),
+                       xp_.data(),
+                       vp_.data(),
+                       wp_.data(),
+                       alphap_.data(),
+                       Tp_.data(),
+                       x0_.data(),
+                       v0_.data(),
+                       w0_.data(),
+                       T0_.data(),
+                       a0_.data(),
+                       b0_.data(),
+                       h0_.data(),
+                       p.force.data(),
+                       p.torque.data(),
+                       p.mass.data(),
+                       p.inertia.data(),
+                       p.radius.data(),
+                       p.heat.data(),
+                       p.material.data(),
+                       heat_capacity_.data(),
+                       p.fixed.data(),
+                       dt,
+                       params_.time.phi};
+  if (predictor) {
+    const std::size_t n = p.size();
+    constexpr std::size_t kChunk = 1024;  // particles per call
+    const std::size_t chunks = (n + kChunk - 1) / kChunk;
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+    for (std::size_t c = 0; c < chunks; ++c)
+      with_flag(rotation, [&](auto kRotates) {
+        with_flag(thermal, [&](auto kThermal) {
+          with_flag(any_fixed_, [&](auto kFixed) {
+            predict_range<kRotates(), kThermal(), kFixed()>(a, c * kChunk, std::min(n, (c + 1) * kChunk));
+          });
+        });
+      });
+    return {};
+  }
+  return deterministic_block_sums<kUpdateSums>(p.size(), [&](std::size_t lo, std::size_t hi, Sums& acc) {
+    UpdateLanes lane = {};
+    with_flag(rotation, [&](auto kRotates) {
+      with_flag(thermal, [&](auto kThermal) {
+        with_flag(any_fixed_, [&](auto kFixed) { update_range<kRotates(), kThermal(), kFixed()>(a, lo, hi, lane); });
+      });
+    });
+    for (int k = 0; k < kUpdateSums; ++k)
+      for (std::size_t l = 0; l < kUpdateLanes; ++l) acc[static_cast<std::size_t>(k)] += lane[k][l];
   });
 }
 
@@ -168,17 +185,7 @@ void TrapezoidalIntegrator::predict(Particles& p, double dt) {
   wp_.resize(n);
   alphap_.resize(n);
   Tp_.resize(n);
-  // The end-of-step rates are guessed equal to the start rates.
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-  for (std::size_t i = 0; i < n; ++i) {
-    alpha_[i] = Vec3{};
-    xp_[i] = x0_[i];
-    vp_[i] = v0_[i];
-    wp_[i] = w0_[i];
-    alphap_[i] = Vec3{};
-    Tp_[i] = T0_[i];
-  }
-  update(p, dt, true);
+  update(p, dt, true);  // the end-of-step rates guessed equal to the start rates
 }
 
 TrapezoidalIntegrator::Sums TrapezoidalIntegrator::iterate(Particles& p, Barriers& b, Interactions& f,

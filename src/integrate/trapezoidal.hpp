@@ -72,6 +72,7 @@ class TrapezoidalIntegrator {
   // Previous iterate y_(K-1), to recognise a two-cycle (see docs/integrators.md) [N]
   std::vector<Vec3> xp_, vp_, wp_, alphap_;  // m, m/s, rad/s, rad
   std::vector<double> Tp_;                   // K
+  std::vector<double> heat_capacity_;        // [materials] J/(kg K), the materials' (update())
 };
 
 }  // namespace mpdem

@@ -1,0 +1,160 @@
+#pragma once
+// The trapezoidal rule's end-state update (physics.md section 9, thesis (134)-(138)) over a range
+// of particles, with the convergence norms' terms, written so that it vectorises: plain restrict
+// pointers, no call, selects instead of branches, and one partial sum per vector lane (added in
+// lane order by the caller, so the sums do not depend on the thread count).
+//
+// Per particle, from the start state (x0, v0, w0, T0) and rates (a0, b0, h0) and the end rates
+// a1 = F/m, b1 = M/I, h1 (the start rates for the predictor):
+//   v = v0 + dt ((1 - phi) a0 + phi a1),   x = x0 + dt ((1 - phi) v0 + phi v)
+//   w = w0 + dt ((1 - phi) b0 + phi b1),   alpha = dt ((1 - phi) w0 + phi w)
+//   T = T0 + dt ((1 - phi) h0 + phi h1)
+// A fixed particle keeps v and w and moves by exactly dt v0 (dt ((1 - phi) v + phi v) may round
+// differently); it is left out of the mechanical fields' norms.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+
+#include "core/vec3.hpp"
+#include "integrate/step_report.hpp"
+
+namespace mpdem {
+
+inline constexpr std::size_t kUpdateLanes = 8;  // partial sums per norm term
+inline constexpr int kUpdateSums = 4 * kFieldCount;
+
+// Per field f, terms 4f..4f+3: |y_K - y_(K-1)|^2, |y_K - y(t)|^2, |y_K - y_(K-2)|^2 and the
+// field's magnitude |y_K|^2 (TrapezoidalIntegrator::test_convergence).
+using UpdateLanes = double[kUpdateSums][kUpdateLanes];
+
+struct UpdateArrays {
+  // The iterate, replaced by the end state [N]: m, m/s, rad/s, rad, K.
+  Vec3* __restrict x;
+  Vec3* __restrict v;
+  Vec3* __restrict w;
+  Vec3* __restrict alpha;
+  double* __restrict T;
+  // The previous iterate, replaced by the iterate [N] (same units).
+  Vec3* __restrict xp;
+  Vec3* __restrict vp;
+  Vec3* __restrict wp;
+  Vec3* __restrict alphap;
+  double* __restrict Tp;
+  // The start state and rates [N]: m, m/s, rad/s, K, m/s^2, rad/s^2, K/s.
+  const Vec3* __restrict x0;
+  const Vec3* __restrict v0;
+  const Vec3* __restrict w0;
+  const double* __restrict T0;
+  const Vec3* __restrict a0;
+  const Vec3* __restrict b0;
+  const double* __restrict h0;
+  // The end rates' sources [N]: N, N m, kg, kg m^2, m, W, material index.
+  const Vec3* __restrict force;
+  const Vec3* __restrict torque;
+  const double* __restrict mass;
+  const double* __restrict inertia;
+  const double* __restrict radius;
+  const double* __restrict heat;
+  const int* __restrict material;
+  const double* __restrict heat_capacity;  // [materials] J/(kg K) (kThermal only)
+  const std::uint8_t* __restrict fixed;    // [N] (kFixed only)
+  double dt = 0.0;                         // s
+  double phi = 1.0;                        // -
+};
+
+// The predictor over particles [lo, hi): the end state from the start rates, the start state as
+// the previous iterate (the iterate is the start state, so neither is read), alpha_(K-1) = 0.
+template <bool kRotates, bool kThermal, bool kFixed>
+void predict_range(const UpdateArrays& a, std::size_t lo, std::size_t hi) {
+  const double dt = a.dt, phi = a.phi, keep = 1.0 - phi;
+  for (std::size_t i = lo; i < hi; ++i) {
+    const bool held = kFixed && a.fixed[i] != 0;
+    const Vec3 x0 = a.x0[i], v0 = a.v0[i], a0 = a.a0[i];
+    const Vec3 v = held ? v0 : v0 + dt * (keep * a0 + phi * a0);
+    a.xp[i] = x0;
+    a.vp[i] = v0;
+    a.x[i] = held ? x0 + dt * v0 : x0 + dt * (keep * v0 + phi * v);
+    a.v[i] = v;
+    if constexpr (kRotates) {
+      const Vec3 w0 = a.w0[i], b0 = a.b0[i];
+      const Vec3 w = held ? w0 : w0 + dt * (keep * b0 + phi * b0);
+      a.wp[i] = w0;
+      a.alphap[i] = Vec3{};
+      a.w[i] = w;
+      a.alpha[i] = held ? dt * w0 : dt * (keep * w0 + phi * w);
+    }
+    a.Tp[i] = a.T0[i];
+    if constexpr (kThermal) a.T[i] = a.T0[i] + dt * (keep * a.h0[i] + phi * a.h0[i]);
+  }
+}
+
+// One iteration's update of particles [lo, hi) from the end rates, adding each particle's norm
+// terms to the lane of its position within a group of kUpdateLanes. Without kThermal, T stays T0
+// and the temperature terms are not summed (the field is not iterated).
+template <bool kRotates, bool kThermal, bool kFixed>
+void update_range(const UpdateArrays& a, std::size_t lo, std::size_t hi, UpdateLanes& lane) {
+  const double dt = a.dt, phi = a.phi, keep = 1.0 - phi;
+  for (std::size_t i0 = lo; i0 < hi; i0 += kUpdateLanes) {
+    const std::size_t lanes = std::min(kUpdateLanes, hi - i0);
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const std::size_t i = i0 + l;
+      const bool held = kFixed && a.fixed[i] != 0;
+      // The mechanical norms count the free particles.
+      const auto add = [&](int term, double value) { lane[term][l] += held ? 0.0 : value; };
+      const Vec3 x0 = a.x0[i], v0 = a.v0[i];
+      const Vec3 a1 = a.force[i] / a.mass[i];
+      const Vec3 vf = v0 + dt * (keep * a.a0[i] + phi * a1);
+      const Vec3 v = held ? v0 : vf;
+      const Vec3 x = held ? x0 + dt * v0 : x0 + dt * (keep * v0 + phi * v);
+      const Vec3 xi = a.x[i], vi = a.v[i];
+      add(4 * Field::kPosition, norm2(x - xi));
+      add(4 * Field::kPosition + 1, norm2(x - x0));
+      add(4 * Field::kPosition + 2, norm2(x - a.xp[i]));
+      add(4 * Field::kPosition + 3, norm2(x));
+      add(4 * Field::kVelocity, norm2(v - vi));
+      add(4 * Field::kVelocity + 1, norm2(v - v0));
+      add(4 * Field::kVelocity + 2, norm2(v - a.vp[i]));
+      add(4 * Field::kVelocity + 3, norm2(v));
+      a.xp[i] = xi;
+      a.vp[i] = vi;
+      a.x[i] = x;
+      a.v[i] = v;
+      if constexpr (kRotates) {
+        const Vec3 w0 = a.w0[i];
+        const Vec3 b1 = a.torque[i] / a.inertia[i];
+        const Vec3 wf = w0 + dt * (keep * a.b0[i] + phi * b1);
+        const Vec3 w = held ? w0 : wf;
+        const Vec3 alpha = held ? dt * w0 : dt * (keep * w0 + phi * w);
+        // The rotational fields' magnitudes count the translational ones in the same units
+        // (displacement / R, velocity / R): docs/integrators.md, "two-cycles".
+        const double inv_r2 = 1.0 / (a.radius[i] * a.radius[i]);  // 1/m^2
+        const Vec3 wi = a.w[i], alphai = a.alpha[i];
+        add(4 * Field::kRotation, norm2(alpha - alphai));
+        add(4 * Field::kRotation + 1, norm2(alpha));
+        add(4 * Field::kRotation + 2, norm2(alpha - a.alphap[i]));
+        add(4 * Field::kRotation + 3, (norm2(alpha) + norm2(x - x0) * inv_r2));
+        add(4 * Field::kAngularVelocity, norm2(w - wi));
+        add(4 * Field::kAngularVelocity + 1, norm2(w - w0));
+        add(4 * Field::kAngularVelocity + 2, norm2(w - a.wp[i]));
+        add(4 * Field::kAngularVelocity + 3, (norm2(w) + norm2(v) * inv_r2));
+        a.wp[i] = wi;
+        a.alphap[i] = alphai;
+        a.w[i] = w;
+        a.alpha[i] = alpha;
+      }
+      if constexpr (kThermal) {
+        const double h1 = a.heat[i] / (a.mass[i] * a.heat_capacity[a.material[i]]);
+        const double T = a.T0[i] + dt * (keep * a.h0[i] + phi * h1);
+        const double Ti = a.T[i], dTp = T - a.Tp[i], d0 = T - a.T0[i];
+        lane[4 * Field::kTemperature][l] += (T - Ti) * (T - Ti);
+        lane[4 * Field::kTemperature + 1][l] += d0 * d0;
+        lane[4 * Field::kTemperature + 2][l] += dTp * dTp;
+        lane[4 * Field::kTemperature + 3][l] += T * T;
+        a.Tp[i] = Ti;
+        a.T[i] = T;
+      }
+    }
+  }
+}
+
+}  // namespace mpdem

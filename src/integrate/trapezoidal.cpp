@@ -112,6 +112,7 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
   }
   commit(p, b, f, req, rep);
   ++rep.evaluations;
+  history_.remember(std::span<const std::int64_t>(p.id.data(), p.size()), a0_, b0_, dt);
   return rep;
 }
 
@@ -122,34 +123,39 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
   for (std::size_t m = 0; m < heat_capacity_.size(); ++m) heat_capacity_[m] = model_.materials[m].heat_capacity;
   // The end state from the end-of-step rates in the accumulators, or from the start rates for the
   // predictor (trapezoidal_update.hpp). The state it replaces becomes the previous iterate.
-  const UpdateArrays a{p.x.data(),
-                       p.v.data(),
-                       p.w.data(),
-                       alpha_.data(),
-                       p.T.data(),
-                       xp_.data(),
-                       vp_.data(),
-                       wp_.data(),
-                       alphap_.data(),
-                       Tp_.data(),
-                       x0_.data(),
-                       v0_.data(),
-                       w0_.data(),
-                       T0_.data(),
-                       a0_.data(),
-                       b0_.data(),
-                       h0_.data(),
-                       p.force.data(),
-                       p.torque.data(),
-                       p.mass.data(),
-                       p.inertia.data(),
-                       p.radius.data(),
-                       p.heat.data(),
-                       p.material.data(),
-                       heat_capacity_.data(),
-                       p.fixed.data(),
-                       dt,
-                       params_.time.phi};
+  UpdateArrays a{p.x.data(),
+                 p.v.data(),
+                 p.w.data(),
+                 alpha_.data(),
+                 p.T.data(),
+                 xp_.data(),
+                 vp_.data(),
+                 wp_.data(),
+                 alphap_.data(),
+                 Tp_.data(),
+                 x0_.data(),
+                 v0_.data(),
+                 w0_.data(),
+                 T0_.data(),
+                 a0_.data(),
+                 b0_.data(),
+                 h0_.data(),
+                 p.force.data(),
+                 p.torque.data(),
+                 p.mass.data(),
+                 p.inertia.data(),
+                 p.radius.data(),
+                 p.heat.data(),
+                 p.material.data(),
+                 heat_capacity_.data(),
+                 p.fixed.data(),
+                 dt,
+                 params_.time.phi};
+  if (predictor && history_.align(std::span<const std::int64_t>(p.id.data(), p.size()), a0_, b0_)) {
+    a.a_prev = history_.a_prev();
+    a.b_prev = history_.b_prev();
+    a.stretch = dt / history_.dt();
+  }
   if (predictor) {
     const std::size_t n = p.size();
     constexpr std::size_t kChunk = 1024;  // particles per call
@@ -185,7 +191,7 @@ void TrapezoidalIntegrator::predict(Particles& p, double dt) {
   wp_.resize(n);
   alphap_.resize(n);
   Tp_.resize(n);
-  update(p, dt, true);  // the end-of-step rates guessed equal to the start rates
+  update(p, dt, true);
 }
 
 TrapezoidalIntegrator::Sums TrapezoidalIntegrator::iterate(Particles& p, Barriers& b, Interactions& f,

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "integrate/rate_history.hpp"
 #include "integrate/step_policy.hpp"
 #include "integrate/step_report.hpp"
 #include "model/params.hpp"
@@ -33,6 +34,9 @@ class TrapezoidalIntegrator {
   // A run over several ranks: the convergence norms are summed over all of them, so that every
   // rank iterates as often and accepts (or rejects) the same steps.
   void set_communicator(const Communicator* comm) { comm_ = comm; }
+  // The predictor's history: the last accepted step's start rates, by particle id.
+  RateHistory& rate_history() { return history_; }
+  const RateHistory& rate_history() const { return history_; }
 
  private:
   // Per field: sums of |y_K - y_(K-1)|^2, |y_K - y(t)|^2, |y_K - y_(K-2)|^2 and |y_K|^2.
@@ -72,7 +76,8 @@ class TrapezoidalIntegrator {
   // Previous iterate y_(K-1), to recognise a two-cycle (see docs/integrators.md) [N]
   std::vector<Vec3> xp_, vp_, wp_, alphap_;  // m, m/s, rad/s, rad
   std::vector<double> Tp_;                   // K
-  std::vector<double> heat_capacity_;        // [materials] J/(kg K), the materials' (update())
+  RateHistory history_;
+  std::vector<double> heat_capacity_;  // [materials] J/(kg K), the materials' (update())
 };
 
 }  // namespace mpdem

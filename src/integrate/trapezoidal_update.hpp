@@ -60,24 +60,33 @@ struct UpdateArrays {
   const std::uint8_t* __restrict fixed;    // [N] (kFixed only)
   double dt = 0.0;                         // s
   double phi = 1.0;                        // -
+  // The predictor's history (rate_history.hpp): the previous step's start rates [N] m/s^2,
+  // rad/s^2, or null (end rates = start rates), and dt / the previous step's length.
+  const Vec3* a_prev = nullptr;
+  const Vec3* b_prev = nullptr;
+  double stretch = 1.0;
 };
 
-// The predictor over particles [lo, hi): the end state from the start rates, the start state as
-// the previous iterate (the iterate is the start state, so neither is read), alpha_(K-1) = 0.
+// The predictor over particles [lo, hi): the end state from the end rates extrapolated linearly
+// from the previous step's start rates, r(t) + stretch (r(t) - r(t - dt_prev)) (without a
+// history: the start rates), the start state as the previous iterate (the iterate is the start
+// state, so neither is read), alpha_(K-1) = 0.
 template <bool kRotates, bool kThermal, bool kFixed>
 void predict_range(const UpdateArrays& a, std::size_t lo, std::size_t hi) {
   const double dt = a.dt, phi = a.phi, keep = 1.0 - phi;
   for (std::size_t i = lo; i < hi; ++i) {
     const bool held = kFixed && a.fixed[i] != 0;
     const Vec3 x0 = a.x0[i], v0 = a.v0[i], a0 = a.a0[i];
-    const Vec3 v = held ? v0 : v0 + dt * (keep * a0 + phi * a0);
+    const Vec3 a1 = a.a_prev ? a0 + a.stretch * (a0 - a.a_prev[i]) : a0;
+    const Vec3 v = held ? v0 : v0 + dt * (keep * a0 + phi * a1);
     a.xp[i] = x0;
     a.vp[i] = v0;
     a.x[i] = held ? x0 + dt * v0 : x0 + dt * (keep * v0 + phi * v);
     a.v[i] = v;
     if constexpr (kRotates) {
       const Vec3 w0 = a.w0[i], b0 = a.b0[i];
-      const Vec3 w = held ? w0 : w0 + dt * (keep * b0 + phi * b0);
+      const Vec3 b1 = a.b_prev ? b0 + a.stretch * (b0 - a.b_prev[i]) : b0;
+      const Vec3 w = held ? w0 : w0 + dt * (keep * b0 + phi * b1);
       a.wp[i] = w0;
       a.alphap[i] = Vec3{};
       a.w[i] = w;

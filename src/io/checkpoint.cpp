@@ -23,6 +23,7 @@
 #include "io/input_error.hpp"
 #include "io/output_manager.hpp"
 #include "io/scene_fingerprint.hpp"
+#include "parallel/gather.hpp"
 #include "sim/analysis_outputs.hpp"
 #include "sim/inlets.hpp"
 #include "sim/simulation.hpp"
@@ -103,7 +104,17 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
   });
   if (comm_) interactions_->save_gathered(w, scene_.particles, all);
   else interactions_->save(w, p);
+  // The trapezoidal predictor's previous rates, by id (any rank count resumes them).
+  const RateHistory& rates = trapezoidal_.rate_history();
+  const std::vector<RateRecord> rate_records = comm_ ? gather_values<RateRecord>(*comm_, rates.records(), 0)
+                                                     : rates.records();
   if (!root()) return;
+  w.section("rate_history", [&](BinaryWriter& o) {
+    std::vector<RateRecord> sorted = rate_records;
+    std::sort(sorted.begin(), sorted.end(), [](const RateRecord& a, const RateRecord& b) { return a.id < b.id; });
+    o.value(rates.dt());
+    o.vector(sorted);
+  });
   // What decides the next insertions and the sinks' totals ([[inlet]], [[sink]]).
   if (inlets_) w.section("inlets", [&](BinaryWriter& o) { inlets_->save(o); });
   if (sinks_) w.section("sinks", [&](BinaryWriter& o) { sinks_->save(o); });
@@ -167,6 +178,10 @@ void Simulation::resume_from(const std::filesystem::path& file) {
           fmt::format("the run section's time {} s or step {} s is not finite and >= 0", time_, dt_));
     scene_.barriers.move_to(time_);
     interactions_->restore(r, p, scene_.barriers);
+    read("rate_history", [&](BinaryReader& s) {
+      const auto dt = s.value<double>();
+      trapezoidal_.rate_history().set_records(s.vector<RateRecord>(), dt);
+    });
     if (inlets_) read("inlets", [&](BinaryReader& s) { inlets_->restore(s); });
     if (sinks_) read("sinks", [&](BinaryReader& s) { sinks_->restore(s); });
     // The output series are restored once run() has opened the outputs.

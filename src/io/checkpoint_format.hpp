@@ -19,7 +19,7 @@
 
 namespace mpdem {
 
-inline constexpr std::uint32_t kCheckpointFormat = 11;
+inline constexpr std::uint32_t kCheckpointFormat = 12;
 
 class CheckpointWriter {
  public:

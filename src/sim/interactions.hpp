@@ -7,6 +7,7 @@
 // it at coarse grain; the laws themselves are small functions in src/physics/.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "io/binary_stream.hpp"
 #include "io/checkpoint_format.hpp"
 #include "model/scene.hpp"
+#include "parallel/attached_records.hpp"
 #include "sim/external_loads.hpp"
 
 namespace mpdem {
@@ -134,6 +136,13 @@ class Interactions {
   // and every decision (rebuild, stale lists) is taken over all ranks.
   void decompose(const Communicator& comm, const BrickGrid& grid);
   bool decomposed() const { return comm_ != nullptr; }
+  // Records of another part of the run (the trapezoidal rule's rate history) that travel with
+  // their particles when these change rank: taken before a migration, given back after it.
+  struct TravellingRecords {
+    std::function<AttachedRecords()> take;
+    std::function<void(const AttachedRecords&)> give;
+  };
+  void set_travelling(TravellingRecords t) { travelling_ = std::move(t); }
   // Statistics summed over the ranks (the barriers' drive power and work are already global:
   // their loads are summed over the ranks at every evaluation that reads them). Collective.
   InteractionStats global_stats() const;
@@ -223,6 +232,7 @@ class Interactions {
     std::size_t n = 0;    // particles
   } next_drift_;
   const Communicator* comm_ = nullptr;  // several ranks (decompose()); null in a one-rank run
+  TravellingRecords travelling_;        // several ranks: carried along by migrations
   bool defer_loads_ = false;            // within a step: loads of barriers at rest may wait
   bool loads_pending_ = false;          // the barrier loads are this rank's alone, to be summed
   std::uint64_t steps_since_balance_ = 0;

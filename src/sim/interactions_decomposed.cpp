@@ -32,8 +32,11 @@ void Interactions::rebuild_decomposed(Particles& p, const Barriers& b, bool reor
     AttachedRecords pair_records = AttachedRecords::of<PairHistory>();
     for (const PairHistory& h : pairs) pair_records.push(std::min(h.id_first, h.id_second), h);
     AttachedRecords barrier_records = pb_->export_records(p);  // (migrate wraps the periodic axes)
-    AttachedRecords* const attached[] = {&pair_records, &barrier_records};
+    AttachedRecords other = travelling_.take ? travelling_.take() : AttachedRecords{};
+    std::vector<AttachedRecords*> attached{&pair_records, &barrier_records};
+    if (travelling_.take) attached.push_back(&other);
     search_->migrate(p, attached);
+    if (travelling_.give) travelling_.give(other);
     if (p.size() > 1) p.permute(search_->spatial_order(p));
     search_->rebuild(p, b);
     pairs.clear();

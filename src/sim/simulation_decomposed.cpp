@@ -43,6 +43,18 @@ void Simulation::decompose(const Communicator& comm) {
   comm_ = &comm;
   interactions_->decompose(comm, grid);
   trapezoidal_.set_communicator(&comm);
+  // The trapezoidal predictor's previous rates follow their particles to their new rank.
+  RateHistory& rates = trapezoidal_.rate_history();
+  interactions_->set_travelling({[&rates] {
+                                   AttachedRecords a = AttachedRecords::of<RateRecord>();
+                                   for (const RateRecord& r : rates.records()) a.push(r.id, r);
+                                   return a;
+                                 },
+                                 [&rates](const AttachedRecords& a) {
+                                   std::vector<RateRecord> r(a.size());
+                                   for (std::size_t k = 0; k < a.size(); ++k) r[k] = a.get<RateRecord>(k);
+                                   rates.set_records(std::move(r), rates.dt());
+                                 }});
 }
 
 const StepTotals& Simulation::reduce_step(const StateScan& s, double h) {

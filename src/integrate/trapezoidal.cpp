@@ -121,8 +121,9 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
   const bool thermal = params_.analysis.thermal;
   heat_capacity_.resize(model_.materials.size());
   for (std::size_t m = 0; m < heat_capacity_.size(); ++m) heat_capacity_[m] = model_.materials[m].heat_capacity;
-  // The end state from the end-of-step rates in the accumulators, or from the start rates for the
-  // predictor (trapezoidal_update.hpp). The state it replaces becomes the previous iterate.
+  // The end state from the end-of-step rates in the accumulators, or for the predictor from the
+  // start rates extrapolated with the previous step's (trapezoidal_update.hpp, rate_history.hpp).
+  // The state it replaces becomes the previous iterate.
   UpdateArrays a{p.x.data(),
                  p.v.data(),
                  p.w.data(),

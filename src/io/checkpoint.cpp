@@ -112,6 +112,10 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
   w.section("rate_history", [&](BinaryWriter& o) {
     std::vector<RateRecord> sorted = rate_records;
     std::sort(sorted.begin(), sorted.end(), [](const RateRecord& a, const RateRecord& b) { return a.id < b.id; });
+    // Right after a resume on several ranks every rank holds every record: keep one of each.
+    sorted.erase(std::unique(sorted.begin(), sorted.end(),
+                             [](const RateRecord& a, const RateRecord& b) { return a.id == b.id; }),
+                 sorted.end());
     o.value(rates.dt());
     o.vector(sorted);
   });

@@ -5,7 +5,8 @@
 // lane order by the caller, so the sums do not depend on the thread count).
 //
 // Per particle, from the start state (x0, v0, w0, T0) and rates (a0, b0, h0) and the end rates
-// a1 = F/m, b1 = M/I, h1 (the start rates for the predictor):
+// a1 = F/m, b1 = M/I, h1 (for the predictor: a0 and b0 extrapolated from the previous step's
+// start rates, h0):
 //   v = v0 + dt ((1 - phi) a0 + phi a1),   x = x0 + dt ((1 - phi) v0 + phi v)
 //   w = w0 + dt ((1 - phi) b0 + phi b1),   alpha = dt ((1 - phi) w0 + phi w)
 //   T = T0 + dt ((1 - phi) h0 + phi h1)

@@ -6,7 +6,6 @@
 
 #include "contact/contact_law.hpp"
 #include "contact/pair_candidates.hpp"
-#include "neighbor/pair_blocks.hpp"
 #include "physics/rolling.hpp"
 
 // GCC vectorises the indexed loads of the gather stages into element-by-element gathers,
@@ -231,7 +230,7 @@ PairBlockSums evaluate_block(const PairPass& q, std::size_t lo, std::size_t hi, 
                              std::size_t cross_last) {
   PairBlockSums out;
   Batch b;
-  const auto end = static_cast<std::uint32_t>(PairBlocks::block_end(lo, q.n));
+  const auto end = static_cast<std::uint32_t>(hi);  // [lo, hi) is one whole block: j >= hi is a cross pair
   // Cross shares default to zero (contacts add to them).
   std::fill(q.cross_force + cross_first, q.cross_force + cross_last, Vec3{});
   std::fill(q.cross_torque + cross_first, q.cross_torque + cross_last, Vec3{});

@@ -112,8 +112,8 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   if (block_seconds_.size() != nb) {
     block_seconds_.resize(nb);
     for (std::size_t b = 0; b < nb; ++b)
-      block_seconds_[b] = 1e-9 * static_cast<double>(off[PairBlocks::block_end(b * PairBlocks::kBlock, n)] -
-                                                     off[b * PairBlocks::kBlock]);
+      block_seconds_[b] = 1e-9 * static_cast<double>(off[blocks.block_end(blocks.block_begin(b))] -
+                                                     off[blocks.block_begin(b)]);
   }
   block_cost_.resize(nb + 1);
   block_cost_[0] = 0.0;
@@ -126,7 +126,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
     const std::size_t b1 = balanced_split(r + 1, threads, nb, cost_before);
     double t0 = omp_get_wtime();
     for (std::size_t b = balanced_split(r, threads, nb, cost_before); b < b1; ++b) {
-      block_sums_[b] = contact_block(q, b * PairBlocks::kBlock, PairBlocks::block_end(b * PairBlocks::kBlock, n),
+      block_sums_[b] = contact_block(q, blocks.block_begin(b), blocks.block_end(blocks.block_begin(b)),
                                      blocks.cross_base(b), blocks.cross_base(b + 1));
       const double t1 = omp_get_wtime();
       block_seconds_[b] = t1 - t0;

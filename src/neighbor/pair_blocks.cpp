@@ -1,14 +1,22 @@
 #include "neighbor/pair_blocks.hpp"
 
+#include <bit>
 #include <stdexcept>
 
 namespace mpdem {
+
+std::size_t PairBlocks::block_size(std::size_t n) {
+  const std::size_t b = std::bit_floor(n / kTargetBlocks);  // 0 for n < kTargetBlocks
+  return b < kMinBlock ? kMinBlock : b > kMaxBlock ? kMaxBlock : b;
+}
 
 void PairBlocks::build(const VerletList& list) {
   const std::size_t n = list.size();
   const auto& off = list.offsets();
   const auto& idx = list.indices();
-  const std::size_t blocks = (n + kBlock - 1) / kBlock;
+  block_ = block_size(n);
+  n_ = n;
+  const std::size_t blocks = (n + block_ - 1) / block_;
   if (idx.size() >= (std::size_t{1} << 32))
     throw std::invalid_argument("pair blocks: too many pairs for 32-bit slot and cross indices");
 
@@ -17,11 +25,11 @@ void PairBlocks::build(const VerletList& list) {
   first_.resize(idx.size());
   std::vector<std::uint32_t> count(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t end = block_end(i, n);
+    const std::size_t end = block_end(i);
     for (std::size_t k = off[i]; k < off[i + 1]; ++k) first_[k] = static_cast<std::uint32_t>(i);
     for (std::size_t k = off[i]; k < off[i + 1]; ++k)
       if (idx[k] >= end) {
-        ++cross_base_[i / kBlock + 1];
+        ++cross_base_[i / block_ + 1];
         ++count[idx[k]];
       }
   }
@@ -39,7 +47,7 @@ void PairBlocks::build(const VerletList& list) {
   entry_.resize(offset_.back());
   std::uint32_t c = 0;  // cross index, ascending: each member's entries come out ascending
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t end = block_end(i, n);
+    const std::size_t end = block_end(i);
     for (std::size_t k = off[i]; k < off[i + 1]; ++k)
       if (idx[k] >= end) entry_[fill[idx[k]]++] = c++;
   }

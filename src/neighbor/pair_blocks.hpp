@@ -3,7 +3,7 @@
 // add each pair's force straight into both particles without races and with sums that do not
 // depend on the number of threads.
 //
-// Block b holds particles [b kBlock, (b+1) kBlock). A pair (i, j), i < j, is *internal* when j is
+// Block b holds particles [b B, (b+1) B), B = block_size(n). A pair (i, j), i < j, is *internal* when j is
 // in i's block, else a *cross* pair. One thread processes a whole block in slot order and adds
 // each pair's result straight to its first member i (always in the block) and, for an internal
 // pair, to j; so every particle's sum has the same order for any thread count. A cross pair's
@@ -11,6 +11,12 @@
 // are the tail of i's ascending slot range), and a second pass adds the buffer to each second
 // member in ascending cross index. With the particles in space-filling-curve order (reordered
 // at rebuilds) most pairs are internal.
+//
+// Why B depends on n: the threads take whole blocks, so a system of few blocks cannot be split
+// evenly (20k particles in blocks of 4096: five blocks, 3 against 2 on two threads). B is the
+// largest power of two in [kMinBlock, kMaxBlock] that still gives kTargetBlocks blocks: a
+// function of the particle count alone, never of the thread count, so the sums keep their order
+// for any number of threads. Larger blocks keep more pairs internal (cheaper than cross pairs).
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -22,18 +28,25 @@ namespace mpdem {
 
 class PairBlocks {
  public:
-  static constexpr std::size_t kBlock = 4096;  // particles per block (a fixed constant: results
-                                               // must not depend on it changing with threads)
+  static constexpr std::size_t kMinBlock = 512;    // particles per block, at least
+  static constexpr std::size_t kMaxBlock = 4096;   // and at most
+  static constexpr std::size_t kTargetBlocks = 8;  // blocks wanted, for an even split over threads
+
+  // Particles per block for n particles (a power of two).
+  static std::size_t block_size(std::size_t n);
 
   void build(const VerletList& list);
   void clear() { *this = PairBlocks{}; }  // frees everything: no blocks until the next build
 
   std::size_t num_blocks() const { return cross_base_.size() - 1; }
   std::size_t num_cross() const { return cross_base_.back(); }
-  // End (exclusive) of the block that holds particle i: pair (i, j) is internal iff j < block_end(i).
-  static std::size_t block_end(std::size_t i, std::size_t n) {
-    const std::size_t e = (i / kBlock + 1) * kBlock;
-    return e < n ? e : n;
+  std::size_t block() const { return block_; }  // particles per block, of the last build
+  // First particle of block b, and the end (exclusive) of the block that holds particle i:
+  // pair (i, j) is internal iff j < block_end(i).
+  std::size_t block_begin(std::size_t b) const { return b * block_; }
+  std::size_t block_end(std::size_t i) const {
+    const std::size_t e = (i / block_ + 1) * block_;
+    return e < n_ ? e : n_;
   }
   // First cross index of block b.
   std::size_t cross_base(std::size_t b) const { return cross_base_[b]; }
@@ -50,6 +63,8 @@ class PairBlocks {
   std::size_t memory_bytes() const;
 
  private:
+  std::size_t block_ = kMaxBlock;           // particles per block
+  std::size_t n_ = 0;                       // particles (with ghosts) of the last build
   std::vector<std::size_t> cross_base_{0};  // [blocks + 1] cross indices before each block
   std::vector<std::uint32_t> particle_;     // [members] second members of cross pairs
   std::vector<std::uint32_t> offset_{0};    // [members + 1] CSR offsets into entry_

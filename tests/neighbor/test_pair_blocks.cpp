@@ -32,12 +32,33 @@ VerletList random_list(std::size_t n, unsigned seed) {
   return list;
 }
 
+TEST(PairBlocks, BlockSizeIsAPowerOfTwoSetByTheParticleCountAlone) {
+  EXPECT_EQ(PairBlocks::block_size(0), PairBlocks::kMinBlock);
+  EXPECT_EQ(PairBlocks::block_size(100), PairBlocks::kMinBlock);
+  EXPECT_EQ(PairBlocks::block_size(20000), 2048u);  // 20000 / 8 = 2500: 10 blocks, not 5 of 4096
+  EXPECT_EQ(PairBlocks::block_size(30000), 2048u);
+  EXPECT_EQ(PairBlocks::block_size(50000), PairBlocks::kMaxBlock);
+  EXPECT_EQ(PairBlocks::block_size(100000), PairBlocks::kMaxBlock);
+  EXPECT_EQ(PairBlocks::block_size(10000000), PairBlocks::kMaxBlock);
+  for (std::size_t n = 1; n < 200000; n = n * 3 / 2 + 1) {
+    const std::size_t b = PairBlocks::block_size(n);
+    EXPECT_TRUE(b >= PairBlocks::kMinBlock && b <= PairBlocks::kMaxBlock && (b & (b - 1)) == 0) << n;
+    // As many blocks as wanted, unless a bound stops it.
+    const std::size_t blocks = (n + b - 1) / b;
+    EXPECT_TRUE(blocks >= PairBlocks::kTargetBlocks || b == PairBlocks::kMinBlock) << n;
+    EXPECT_TRUE(blocks < 2 * PairBlocks::kTargetBlocks + 1 || b == PairBlocks::kMaxBlock) << n;
+  }
+}
+
 TEST(PairBlocks, CrossPairsAreNumberedInSlotOrderAndListedAtTheirSecondMember) {
-  const std::size_t n = 2 * PairBlocks::kBlock + PairBlocks::kBlock / 2;  // three blocks, the last partial
+  const std::size_t n = 40 * PairBlocks::kMinBlock + PairBlocks::kMinBlock / 2;  // the last block partial
+  const std::size_t block = PairBlocks::block_size(n);
+  ASSERT_EQ(block, 4 * PairBlocks::kMinBlock);
   const VerletList list = random_list(n, 3);
   PairBlocks blocks;
   blocks.build(list);
-  ASSERT_EQ(blocks.num_blocks(), (n + PairBlocks::kBlock - 1) / PairBlocks::kBlock);
+  ASSERT_EQ(blocks.block(), block);
+  ASSERT_EQ(blocks.num_blocks(), (n + block - 1) / block);
   const auto& off = list.offsets();
   const auto& idx = list.indices();
 
@@ -45,8 +66,8 @@ TEST(PairBlocks, CrossPairsAreNumberedInSlotOrderAndListedAtTheirSecondMember) {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> cross;  // (first, second) by cross index
   std::vector<std::size_t> per_block(blocks.num_blocks(), 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t end = (i / PairBlocks::kBlock + 1) * PairBlocks::kBlock;
-    ASSERT_EQ(PairBlocks::block_end(i, n), std::min(end, n));
+    const std::size_t end = (i / block + 1) * block;
+    ASSERT_EQ(blocks.block_end(i), std::min(end, n));
     bool seen_cross = false;
     for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
       const bool is_cross = idx[k] >= end;
@@ -54,7 +75,7 @@ TEST(PairBlocks, CrossPairsAreNumberedInSlotOrderAndListedAtTheirSecondMember) {
       seen_cross = seen_cross || is_cross;
       if (is_cross) {
         cross.emplace_back(static_cast<std::uint32_t>(i), idx[k]);
-        ++per_block[i / PairBlocks::kBlock];
+        ++per_block[i / block];
       }
     }
   }

@@ -255,6 +255,24 @@ void ParticleContacts::restore_history(const NeighborSearch& search, CarriedHist
     }
 }
 
+void ParticleContacts::compact_slots(const std::vector<std::uint32_t>& from, std::size_t old_pairs) {
+  if (spring_.size() != old_pairs) {  // no history for the old list: none for the new one either
+    spring_.clear();
+    return;
+  }
+  // A kept slot never moves up (from ascending, from[k] >= k): in place, front to back.
+  const auto move = [&](auto& v) {
+    if (v.size() != old_pairs) return;
+    for (std::size_t k = 0; k < from.size(); ++k) v[k] = v[from[k]];
+    v.resize(from.size());
+  };
+  move(spring_);
+  move(vt0_);
+  move(wr0_);
+  move(slipped_);
+  move(records_);
+}
+
 void ParticleContacts::save(BinaryWriter& w, const Particles& p, const NeighborSearch& search) const {
   w.vector(export_history(p, search));
 }

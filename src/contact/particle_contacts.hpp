@@ -73,6 +73,10 @@ class ParticleContacts {
   // ... and put back onto the rebuilt list; old_index[i] is the old index of particle i.
   void restore_history(const NeighborSearch& search, CarriedHistory h, const std::vector<std::uint32_t>& old_index);
 
+  // The list lost slots without a rebuild (NeighborSearch::compact): slot k's history is that of
+  // the old list's slot from[k] (of old_pairs).
+  void compact_slots(const std::vector<std::uint32_t>& from, std::size_t old_pairs);
+
   // History of the touching pairs (ids, springs), for checkpoints ...
   std::vector<PairHistory> export_history(const Particles& p, const NeighborSearch& search) const;
   // ... and back onto the slots of the rebuilt list (spring sign follows the pair's orientation).

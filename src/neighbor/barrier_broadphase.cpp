@@ -2,6 +2,7 @@
 
 #include "core/release.hpp"
 #include "neighbor/cell_grid.hpp"  // kNeighborParallelMin
+#include "neighbor/csr_compaction.hpp"
 #include "neighbor/csr_offsets.hpp"
 #include "physics/triangle_closest_point.hpp"
 
@@ -80,6 +81,18 @@ std::uint32_t BarrierBroadphase::build_node(std::uint32_t begin, std::uint32_t e
   nodes_[me].first = right;
   nodes_[me].count = 0;
   return me;
+}
+
+void BarrierBroadphase::compact(const std::vector<char>& keep) {
+  if (!built_ || keep.size() != size())
+    throw std::logic_error("BarrierBroadphase::compact: not built, or keep does not match");
+  compact_rows(offset_, index_, keep, [](std::uint32_t e) { return e; });
+  const std::vector<std::uint32_t> to = kept_row_numbers(keep);
+  std::size_t n = 0;
+  for (const std::uint32_t i : active_)
+    if (keep[i]) active_[n++] = to[i];
+  active_.resize(n);
+  ++generation_;
 }
 
 void BarrierBroadphase::release_candidates() {

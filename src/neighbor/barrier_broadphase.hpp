@@ -42,6 +42,9 @@ class BarrierBroadphase {
   // Throws std::invalid_argument for mismatched sizes, a negative skin or thickness, or
   // non-finite input.
   void build(std::span<const Vec3> x, std::span<const double> radius, const Barriers& barriers, double skin);
+  // Removes the particles whose keep[i] is 0: the others keep their candidates, which stay valid
+  // as long as the rebuild rule says (VerletList::compact).
+  void compact(const std::vector<char>& keep);
   // Frees the per-particle candidates before a rebuild (peak memory): none until the next build.
   void release_candidates();
 

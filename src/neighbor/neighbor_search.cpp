@@ -106,12 +106,30 @@ void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Ba
   rotating_build_ = b.rotating();
   barrier_time_build_ = b.time;
   blocks_.build(list_);
+  index_incoming();
+}
+
+bool NeighborSearch::compactable(const Particles& p) const {
+  return !halo_ && images_.size() == 0 && p.n_ghost == 0 && list_.size() == p.size() && list_.owned() == p.size() &&
+         broad_.size() == p.size() && !list_.needs_rebuild(p.x);
+}
+
+std::vector<std::uint32_t> NeighborSearch::compact(const std::vector<char>& keep) {
+  ++generation_;
+  std::vector<std::uint32_t> from = list_.compact(keep);
+  broad_.compact(keep);
+  blocks_.build(list_);
+  index_incoming();
+  return from;
+}
+
+void NeighborSearch::index_incoming() {
   if (!want_incoming_) {
     release(in_offset_);
     release(in_slot_);
     return;
   }
-  const std::size_t n = x.size();  // ghosts included: they are second members too
+  const std::size_t n = list_.size();  // ghosts included: they are second members too
   // Transposed index: counting sort of the slots by their second member keeps them ascending.
   const auto& idx = list_.indices();
   in_offset_.assign(n + 1, 0);

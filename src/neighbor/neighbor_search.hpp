@@ -55,6 +55,13 @@ class NeighborSearch {
   // before the barrier candidates and pair blocks are built: what it allocates (the new contact
   // history) does not meet them (peak memory).
   void rebuild(Particles& p, const Barriers& b, const std::function<void()>& after_list = {});
+  // Whether compact() may stand for a rebuild after particles are removed: no ghosts (their
+  // sources would move) and lists built for the present particles, still valid.
+  bool compactable(const Particles& p) const;
+  // Removes the particles whose keep[i] is 0 from the lists (before p is compacted): the others
+  // keep their build positions, pairs and candidates, in order; what a build at the build
+  // positions would list. Returns the old pair slot of every kept slot, ascending.
+  std::vector<std::uint32_t> compact(const std::vector<char>& keep);
   // Frees what a rebuild recomputes and reading the old pairs does not need - the build
   // positions, barrier candidates, pair blocks and transposed index - before the old contact
   // history is carried out (peak memory). Until the next rebuild only pairs() may be read.
@@ -123,6 +130,7 @@ class NeighborSearch {
   // Builds for the owned particles' positions x_owned [N] (m): ghosts, lists, candidates.
   void build(Particles& p, std::span<const Vec3> x_owned, const Barriers& b,
              const std::function<void()>& after_list = {});
+  void index_incoming();  // the transposed pair index, when wanted
 };
 
 }  // namespace mpdem

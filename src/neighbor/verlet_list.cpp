@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/release.hpp"
+#include "neighbor/csr_compaction.hpp"
 #include "neighbor/csr_offsets.hpp"
 
 namespace mpdem {
@@ -146,6 +147,21 @@ void VerletList::build(std::span<const Vec3> x, std::span<const double> radius, 
   if (after_pairs) after_pairs();
   x_build_.assign(x.begin(), x.end());
   built_ = true;
+}
+
+std::vector<std::uint32_t> VerletList::compact(const std::vector<char>& keep) {
+  if (!built_ || x_build_.size() != owned_ || keep.size() != owned_)
+    throw std::logic_error("VerletList::compact: not built, with ghosts, or keep does not match");
+  const std::vector<std::uint32_t> to = kept_row_numbers(keep);
+  std::vector<std::uint32_t> from;
+  compact_rows(
+      offset_, index_, keep, [&](std::uint32_t j) { return to[j]; }, &from);
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < keep.size(); ++i)
+    if (keep[i]) x_build_[n++] = x_build_[i];
+  x_build_.resize(n);
+  owned_ = n;
+  return from;
 }
 
 void VerletList::release_build_positions() {

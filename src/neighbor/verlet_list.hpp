@@ -10,8 +10,9 @@
 //
 // Verlet guarantee: while every particle has moved at most skin/2 since the build, every pair
 // with |x_i - x_j| < R_i + R_j + extra_range is in the list. needs_rebuild() reports when that
-// no longer holds. The list is tied to the index order: rebuild after permuting, adding or
-// removing particles (a changed count is detected and reported as needing a rebuild).
+// no longer holds. The list is tied to the index order: rebuild after permuting or adding
+// particles, rebuild or compact() after removing some (a changed count is detected and reported
+// as needing a rebuild).
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -40,6 +41,11 @@ class VerletList {
   void build(std::span<const Vec3> x, std::span<const double> radius, double skin, double extra_range,
              std::size_t owned, std::span<const std::int64_t> id, const std::function<void()>& after_pairs = {});
 
+  // Removes the particles whose keep[i] is 0 (a list without ghosts): the others keep their build
+  // positions and pairs, in order, so the list is what a build at those positions would give
+  // (a pair list only loses pairs when particles go) and stays valid as long as the rebuild rule
+  // says. Returns the old slot of every kept slot, ascending.
+  std::vector<std::uint32_t> compact(const std::vector<char>& keep);
   // Frees the build positions before a rebuild (peak memory): the pairs stay readable, the list
   // counts as not built (needs_rebuild) until the next build.
   void release_build_positions();

@@ -4,11 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <numeric>
 #include <stdexcept>
 #include <tuple>
-#include <type_traits>
 
 #include "core/deterministic_sum.hpp"
 #include "core/parallel.hpp"
@@ -210,69 +207,6 @@ bool Interactions::rebuild_due(const Particles& p, const Barriers& b, double dt)
 }
 
 void Interactions::force_rebuild(Particles& p, const Barriers& b, bool reorder) { rebuild(p, b, reorder); }
-
-void Interactions::remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep) {
-  next_drift_.valid = false;
-  if (comm_) {
-    // Collective (the lists are rebuilt on every rank); the ghosts' sources are remote: by ids.
-    std::vector<PairHistory> kept = pp_->export_history(p, *search_);
-    p.drop_ghosts();
-    p.compact(keep);
-    pb_->compact(keep);
-    search_->rebuild(p, b);
-    pp_->import_history(p, *search_, std::move(kept));
-    stats_.rebuilds = search_->rebuilds();
-    return;
-  }
-  ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
-  p.drop_ghosts();
-  std::vector<std::uint32_t> old_index;  // old index of each particle kept
-  for (std::size_t i = 0; i < keep.size(); ++i)
-    if (keep[i]) old_index.push_back(static_cast<std::uint32_t>(i));
-  p.compact(keep);
-  pb_->compact(keep);
-  search_->rebuild(p, b);
-  pp_->restore_history(*search_, std::move(history), old_index);
-  stats_.rebuilds = search_->rebuilds();
-}
-
-void Interactions::add_particles(Particles& p, const Barriers& b, Particles fresh) {
-  next_drift_.valid = false;
-  // Each array of `fresh` onto the end of p's: both lists name the arrays in the same order.
-  const auto append = [&] {
-    std::size_t k = 0;
-    p.for_each_array([&](const char*, auto& to) {
-      std::size_t j = 0;
-      fresh.for_each_array([&](const char*, auto& from) {
-        if constexpr (std::is_same_v<decltype(to), decltype(from)>)
-          if (j == k) to.insert(to.end(), from.begin(), from.end());
-        ++j;
-      });
-      ++k;
-    });
-  };
-  if (comm_) {
-    // Collective, as remove_particles: the ghosts' sources are remote, so the history goes by ids.
-    std::vector<PairHistory> kept = pp_->export_history(p, *search_);
-    p.drop_ghosts();
-    append();
-    search_->rebuild(p, b);
-    pp_->import_history(p, *search_, std::move(kept));
-    stats_.rebuilds = search_->rebuilds();
-    return;
-  }
-  ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
-  p.drop_ghosts();
-  const std::size_t old_n = p.size();
-  append();
-  // The others keep their indices (and so their barrier contact records); a new particle has
-  // no old index (beyond any old list, ghosts included: no carried pair is found for it).
-  std::vector<std::uint32_t> old_index(p.size(), std::numeric_limits<std::uint32_t>::max());
-  std::iota(old_index.begin(), old_index.begin() + static_cast<std::ptrdiff_t>(old_n), std::uint32_t{0});
-  search_->rebuild(p, b);
-  pp_->restore_history(*search_, std::move(history), old_index);
-  stats_.rebuilds = search_->rebuilds();
-}
 
 void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   next_drift_.valid = false;  // the forces change

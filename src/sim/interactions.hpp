@@ -124,6 +124,11 @@ class Interactions {
   void evaluate(Particles& p, Barriers& b, const EvalRequest& req);
   // Removes the particles whose keep[i] is 0, keeping everyone else's contact history.
   void remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep);
+  // Before remove_particles: whether removing them changes the others' rates or the step's
+  // totals, so that the rates must be evaluated again. Not when none of them touches a particle
+  // or barrier element and only contacts and field forces act (sim/interactions_open_system.cpp).
+  // Collective.
+  bool removal_acts_on_others(const Particles& p, const std::vector<char>& keep) const;
   // Appends the particles `fresh` (an inlet's, sim/inlets.hpp) after the others, keeping every
   // existing contact's history; the new ones start without any.
   void add_particles(Particles& p, const Barriers& b, Particles fresh);

@@ -91,8 +91,11 @@ void Simulation::remove_marked(const std::vector<char>& keep, bool exits) {
     if (exits && progress_) progress_->removed(gone[k].id, time_, removed_ + k + 1);
   }
   if (exits) removed_ += count;
+  // The removed particles' forces on the others are gone: re-evaluate the rates (no increment),
+  // unless the removed particles acted on nobody (a particle that fell out of the domain alone).
+  const bool acted = interactions_->removal_acts_on_others(p, keep);
   interactions_->remove_particles(p, scene_.barriers, keep);
-  // The removed particles' forces on the others are gone: re-evaluate the rates (no increment).
+  if (!acted) return;
   interactions_->evaluate(p, scene_.barriers, EvalRequest{time_, 0.0, 1.0, true});
   ++evaluations_;
 }

@@ -158,6 +158,32 @@ TEST(BarrierBroadphase, KeepsEveryTrueCandidateWhileCombinedMotionBelowHalfSkin)
 
 // A long element slanted across the axes (a hopper's cone, a drum's wall): its box holds a whole
 // slab of particles, of which only those near its plane are candidates.
+// Particles removed without a rebuild: the others keep exactly the candidates a build over them
+// gives, and the active list is renumbered.
+TEST(BarrierBroadphase, CompactedCandidatesAreTheBuildOfTheParticlesLeft) {
+  const Cloud c = barrier_cloud();
+  const Barriers b = test_barriers();
+  BarrierBroadphase bp;
+  bp.build(c.x, c.r, b, kR0);
+  const std::uint64_t generation = bp.generation();
+  std::vector<char> keep(c.x.size(), 1);
+  for (std::size_t i = 0; i < keep.size(); i += 3) keep[i] = 0;
+  bp.compact(keep);
+  Cloud left;
+  for (std::size_t i = 0; i < keep.size(); ++i)
+    if (keep[i]) {
+      left.x.push_back(c.x[i]);
+      left.r.push_back(c.r[i]);
+    }
+  BarrierBroadphase fresh;
+  fresh.build(left.x, left.r, b, kR0);
+  EXPECT_EQ(bp.offsets(), fresh.offsets());
+  EXPECT_EQ(bp.indices(), fresh.indices());
+  EXPECT_EQ(bp.active(), fresh.active());
+  EXPECT_GT(bp.active().size(), 100u);
+  EXPECT_NE(bp.generation(), generation) << "the store's layout must follow";
+}
+
 TEST(BarrierBroadphase, SlantedElementListsOnlyParticlesNearIt) {
   Barriers b;
   b.add(0, {0.0, 0.0, 0.0}, {0.1, 0.0, 0.1}, {0.0, 0.1, 0.1}, 0, 1e9, 0.3, {}, 0.0, 300.0);

@@ -236,6 +236,51 @@ TEST(VerletList, RebuildingReusesStateCorrectly) {
   EXPECT_EQ(list_pairs(l), brute_pairs(b, kR0, 0.0));
 }
 
+// Particles removed without a rebuild: the compacted list is the one a build at the same (build)
+// positions gives for the particles left, slot for slot, and after moving them (within skin/2)
+// still holds every touching pair.
+TEST(VerletList, CompactedListIsTheBuildOfTheParticlesLeft) {
+  const Cloud a = clustered(3000, 23);
+  VerletList l;
+  l.build(a.x, a.r, kR0);
+  const std::size_t pairs_before = l.num_pairs();
+  std::vector<char> keep(a.x.size(), 1);
+  std::mt19937_64 rng(24);
+  for (auto& k : keep) k = static_cast<char>(rng() % 4 != 0);
+  const std::vector<std::uint32_t> from = l.compact(keep);
+  Cloud left;
+  std::vector<std::uint32_t> old_index;
+  for (std::size_t i = 0; i < keep.size(); ++i)
+    if (keep[i]) {
+      left.x.push_back(a.x[i]);
+      left.r.push_back(a.r[i]);
+      old_index.push_back(static_cast<std::uint32_t>(i));
+    }
+  VerletList fresh;
+  fresh.build(left.x, left.r, kR0);
+  EXPECT_EQ(l.offsets(), fresh.offsets());
+  EXPECT_EQ(l.indices(), fresh.indices());
+  EXPECT_EQ(l.build_positions(), fresh.build_positions());
+  EXPECT_EQ(l.owned(), left.x.size());
+  EXPECT_LT(l.num_pairs(), pairs_before);
+  // Each kept slot came from the old slot of the same pair.
+  ASSERT_EQ(from.size(), l.num_pairs());
+  VerletList old;
+  old.build(a.x, a.r, kR0);
+  for (std::size_t i = 0; i < left.x.size(); ++i)
+    for (std::size_t k = l.offsets()[i]; k < l.offsets()[i + 1]; ++k) {
+      const std::uint32_t was = from[k];
+      ASSERT_GE(was, old.offsets()[old_index[i]]);
+      ASSERT_LT(was, old.offsets()[old_index[i] + 1]);
+      EXPECT_EQ(old.indices()[was], old_index[l.indices()[k]]);
+    }
+  const std::vector<Vec3> moved = jiggle(left.x, 0.49 * kR0, 25);
+  EXPECT_FALSE(l.needs_rebuild(moved));
+  const PairSet listed = list_pairs(l);
+  for (const auto& pr : brute_pairs(Cloud{moved, left.r}, 0.0, 0.0))
+    EXPECT_TRUE(listed.count(pr)) << pr.first << "-" << pr.second;
+}
+
 // The list's storage stays near its size across rebuilds, on one and two threads: the rows are
 // written into the list itself (thread 0) and grown by reservations, not doubled. And the hook
 // between listing and storing the build positions sees the pairs but no positions yet.

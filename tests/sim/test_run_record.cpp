@@ -7,6 +7,7 @@
 
 #include "sim/simulation.hpp"
 #include "support/run_command.hpp"
+#include "support/open_system_scenes.hpp"
 #include "support/scene_builder.hpp"
 
 using namespace mpdem;
@@ -31,13 +32,7 @@ void advance(Simulation& sim, int steps) {
 
 TEST(RunRecord, RemovedParticlesKeepTheBalance) {
   // Free fall is exact for velocity Verlet; one particle leaves through the floor of the domain.
-  Scene s = test::make_scene(1e-4, 1.0);
-  s.model.params.time.integrator = Integrator::Verlet;
-  DomainParams& d = s.model.params.domain;
-  d.bounded = true;
-  d.min = {-0.1, -0.1, -0.02};
-  d.max = {0.1, 0.1, 0.1};
-  d.on_exit = ExitPolicy::Remove;
+  Scene s = test::bounded_domain_scene(1e-4);
   test::add_particle(s, 1, 0.001, {0, 0, 0.01});
   test::add_particle(s, 2, 0.001, {0.05, 0, 0.09});
   Simulation sim(std::move(s), RunOptions{{}, false, false});

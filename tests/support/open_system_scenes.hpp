@@ -1,6 +1,8 @@
 #pragma once
 // Scenes with inlets and sinks for the open-system tests (tests/sim/test_inlets.cpp,
-// test_inlet_resume.cpp, test_sinks.cpp): an open box under gravity fed by an inlet box above it.
+// test_inlet_resume.cpp, test_sinks.cpp): an open box under gravity fed by an inlet box above it;
+// and a bounded domain that removes what leaves it (test_run_record.cpp,
+// test_interactions_open_system.cpp).
 #include <cmath>
 #include <cstdint>
 
@@ -9,6 +11,19 @@
 #include "scene_builder.hpp"
 
 namespace mpdem::test {
+
+// Velocity Verlet, steps of dt (s), no particles yet; the domain [-0.1, 0.1]^2 x [-0.02, 0.1] m
+// removes the particles that leave it.
+inline Scene bounded_domain_scene(double dt) {
+  Scene s = make_scene(dt, 1.0);
+  s.model.params.time.integrator = Integrator::Verlet;
+  DomainParams& d = s.model.params.domain;
+  d.bounded = true;
+  d.min = {-0.1, -0.1, -0.02};
+  d.max = {0.1, 0.1, 0.1};
+  d.on_exit = ExitPolicy::Remove;
+  return s;
+}
 
 // An inlet filling the box [lo, hi] (m) with spheres of radius r (m) at mass_rate (kg/s).
 inline InletSpec box_inlet(const Vec3& lo, const Vec3& hi, double r, double mass_rate) {

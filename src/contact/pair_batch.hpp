@@ -83,6 +83,11 @@ struct PairPass {
 // True when the build has the AVX-512 candidate selection (bitwise the same as the scalar one).
 extern const bool kVectorSelect;
 
+// A pair is a candidate of the kernel when |x_i - x_j|^2 <= (R_i + R_j)^2 kCandidateReach: a
+// relative margin that leaves the exact decision (overlap > 0) to the contact law, so every
+// touching pair is a candidate.
+inline constexpr double kCandidateReach = 1.0 + 1e-9;
+
 // Evaluates the pairs whose first member is in [lo, hi), one PairBlocks block; its cross pairs
 // are numbered [cross_first, cross_last).
 PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t cross_first,

@@ -97,7 +97,7 @@ inline void select_scalar(const PairPass& q, Batch& b, std::size_t k, std::size_
     c += internal ? 0u : 1u;
     const double reach = q.terms[i].radius + q.terms[j].radius;
     const Vec3 d = q.x[i] - q.x[j];
-    const bool cand = norm2(d) <= reach * reach * (1.0 + 1e-9);
+    const bool cand = norm2(d) <= reach * reach * kCandidateReach;
     const std::size_t t = b.count;
     b.i[t] = i;
     b.j[t] = j;
@@ -137,9 +137,9 @@ inline void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_
   const double* rb = &q.terms[0].radius;  // ContactTerms = 2 doubles
   const __m512d reach = _mm512_add_pd(_mm512_mask_i32gather_pd(zero, lanes, _mm256_slli_epi32(iv, 1), rb, 8),
                                       _mm512_mask_i32gather_pd(zero, lanes, _mm256_slli_epi32(jv, 1), rb, 8));
-  // norm2(d) <= reach^2 (1 + 1e-9) in the scalar order of operations.
+  // norm2(d) <= reach^2 kCandidateReach in the scalar order of operations.
   const __m512d d2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(dx, dx), _mm512_mul_pd(dy, dy)), _mm512_mul_pd(dz, dz));
-  const __m512d lim = _mm512_mul_pd(_mm512_mul_pd(reach, reach), _mm512_set1_pd(1.0 + 1e-9));
+  const __m512d lim = _mm512_mul_pd(_mm512_mul_pd(reach, reach), _mm512_set1_pd(kCandidateReach));
   const __mmask8 cand = _mm512_mask_cmp_pd_mask(lanes, d2, lim, _CMP_LE_OQ);
   const __mmask8 crossing = static_cast<__mmask8>(
       lanes & ~_mm256_cmplt_epu32_mask(jv, _mm256_set1_epi32(static_cast<int>(end))));

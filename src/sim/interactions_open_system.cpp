@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "contact/barrier_contacts.hpp"
+#include "contact/pair_batch.hpp"
 #include "contact/particle_contacts.hpp"
 #include "field/near_field_forces.hpp"
 #include "neighbor/neighbor_search.hpp"
@@ -54,7 +55,7 @@ bool Interactions::removal_acts_on_others(const Particles& p, const std::vector<
       const std::uint32_t i = first[k], j = idx[k];
       if (!gone[i] && !gone[j]) continue;
       const double reach = p.radius[i] + p.radius[j];
-      acts = norm2(p.x[i] - p.x[j]) <= reach * reach * (1.0 + 1e-9);
+      acts = norm2(p.x[i] - p.x[j]) <= reach * reach * kCandidateReach;
     }
   }
   // A barrier contact of a removed particle (made on its owner) at the last, committed,

@@ -16,6 +16,17 @@ namespace {
 // force discontinuity (docs/integrators.md); the midpoint is then within half of it.
 constexpr double kTwoCycleAmplitude = 1e-2;
 
+// `next` holds the owned particles' new values of one of the state's arrays (the first `owned`
+// entries): it becomes the state's array, and the state's array `next`, the previous values.
+// Ghosts (after the owned particles) keep their values: copied across.
+template <class T>
+void swap_in(std::vector<T>& state, std::vector<T>& next, std::size_t owned) {
+  next.resize(state.size());
+  std::copy(state.begin() + static_cast<std::ptrdiff_t>(owned), state.end(),
+            next.begin() + static_cast<std::ptrdiff_t>(owned));
+  state.swap(next);
+}
+
 // f(std::true_type{}) or f(std::false_type{}): a run-time flag as a template argument.
 template <class F>
 void with_flag(bool flag, F&& f) {
@@ -75,11 +86,12 @@ void TrapezoidalIntegrator::restore_start(Particles& p) const {
 void TrapezoidalIntegrator::accept_midpoint(Particles& p) {
   const std::size_t n = p.size();
   const bool rotation = params_.analysis.rotation;
+  const bool thermal = params_.analysis.thermal;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
     p.x[i] = 0.5 * (p.x[i] + xp_[i]);
     p.v[i] = 0.5 * (p.v[i] + vp_[i]);
-    p.T[i] = 0.5 * (p.T[i] + Tp_[i]);
+    if (thermal) p.T[i] = 0.5 * (p.T[i] + Tp_[i]);
     if (rotation) {
       p.w[i] = 0.5 * (p.w[i] + wp_[i]);
       alpha_[i] = 0.5 * (alpha_[i] + alphap_[i]);
@@ -122,8 +134,9 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
   heat_capacity_.resize(model_.materials.size());
   for (std::size_t m = 0; m < heat_capacity_.size(); ++m) heat_capacity_[m] = model_.materials[m].heat_capacity;
   // The end state from the end-of-step rates in the accumulators, or for the predictor from the
-  // start rates extrapolated with the previous step's (trapezoidal_update.hpp, rate_history.hpp).
-  // The state it replaces becomes the previous iterate.
+  // start rates extrapolated with the previous step's (trapezoidal_update.hpp, rate_history.hpp),
+  // into the previous iterate's arrays, which then swap with the state's: the state it replaces
+  // becomes the previous iterate.
   UpdateArrays a{p.x.data(),
                  p.v.data(),
                  p.w.data(),
@@ -157,8 +170,17 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
     a.b_prev = history_.b_prev();
     a.stretch = dt / history_.dt();
   }
+  const std::size_t n = p.size();
+  const auto swap_iterates = [&] {
+    swap_in(p.x, xp_, n);
+    swap_in(p.v, vp_, n);
+    if (rotation) {
+      swap_in(p.w, wp_, n);
+      alpha_.swap(alphap_);
+    }
+    if (thermal) swap_in(p.T, Tp_, n);
+  };
   if (predictor) {
-    const std::size_t n = p.size();
     constexpr std::size_t kChunk = 1024;  // particles per call
     const std::size_t chunks = (n + kChunk - 1) / kChunk;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
@@ -170,9 +192,10 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
           });
         });
       });
+    swap_iterates();
     return {};
   }
-  return deterministic_block_sums<kUpdateSums>(p.size(), [&](std::size_t lo, std::size_t hi, Sums& acc) {
+  const Sums sums = deterministic_block_sums<kUpdateSums>(n, [&](std::size_t lo, std::size_t hi, Sums& acc) {
     UpdateLanes lane = {};
     with_flag(rotation, [&](auto kRotates) {
       with_flag(thermal, [&](auto kThermal) {
@@ -182,6 +205,8 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
     for (int k = 0; k < kUpdateSums; ++k)
       for (std::size_t l = 0; l < kUpdateLanes; ++l) acc[static_cast<std::size_t>(k)] += lane[k][l];
   });
+  swap_iterates();
+  return sums;
 }
 
 void TrapezoidalIntegrator::predict(Particles& p, double dt) {

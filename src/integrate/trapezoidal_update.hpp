@@ -12,6 +12,10 @@
 //   T = T0 + dt ((1 - phi) h0 + phi h1)
 // A fixed particle keeps v and w and moves by exactly dt v0 (dt ((1 - phi) v + phi v) may round
 // differently); it is left out of the mechanical fields' norms.
+//
+// The new iterate y_K goes into the arrays that held y_(K-2), read just before for the two-cycle
+// terms; the caller then swaps those with the state's arrays, so the state holds y_K and the
+// swapped-out arrays y_(K-1). Half the stores of copying y_(K-1) aside and writing y_K over it.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -29,18 +33,19 @@ inline constexpr int kUpdateSums = 4 * kFieldCount;
 using UpdateLanes = double[kUpdateSums][kUpdateLanes];
 
 struct UpdateArrays {
-  // The iterate, replaced by the end state [N]: m, m/s, rad/s, rad, K.
-  Vec3* __restrict x;
-  Vec3* __restrict v;
-  Vec3* __restrict w;
+  // The iterate y_(K-1) [N]: m, m/s, rad/s, rad, K (the predictor: the start state, and alpha
+  // set to 0, the previous rotation increment).
+  const Vec3* __restrict x;
+  const Vec3* __restrict v;
+  const Vec3* __restrict w;
   Vec3* __restrict alpha;
-  double* __restrict T;
-  // The previous iterate, replaced by the iterate [N] (same units).
-  Vec3* __restrict xp;
-  Vec3* __restrict vp;
-  Vec3* __restrict wp;
-  Vec3* __restrict alphap;
-  double* __restrict Tp;
+  const double* __restrict T;
+  // y_(K-2) on entry (not read by the predictor), the new iterate y_K on return [N] (same units).
+  Vec3* __restrict x2;
+  Vec3* __restrict v2;
+  Vec3* __restrict w2;
+  Vec3* __restrict alpha2;
+  double* __restrict T2;
   // The start state and rates [N]: m, m/s, rad/s, K, m/s^2, rad/s^2, K/s.
   const Vec3* __restrict x0;
   const Vec3* __restrict v0;
@@ -70,8 +75,9 @@ struct UpdateArrays {
 
 // The predictor over particles [lo, hi): the end state from the end rates extrapolated linearly
 // from the previous step's start rates, r(t) + stretch (r(t) - r(t - dt_prev)) (without a
-// history: the start rates), the start state as the previous iterate (the iterate is the start
-// state, so neither is read), alpha_(K-1) = 0.
+// history: the start rates), into the y_K arrays; the state (the start state, which the swap
+// makes the previous iterate) is not read, and alpha_(K-1) = 0. Without kThermal T2 is not
+// written (the temperatures are not iterated and not swapped).
 template <bool kRotates, bool kThermal, bool kFixed>
 void predict_range(const UpdateArrays& a, std::size_t lo, std::size_t hi) {
   const double dt = a.dt, phi = a.phi, keep = 1.0 - phi;
@@ -80,27 +86,23 @@ void predict_range(const UpdateArrays& a, std::size_t lo, std::size_t hi) {
     const Vec3 x0 = a.x0[i], v0 = a.v0[i], a0 = a.a0[i];
     const Vec3 a1 = a.a_prev ? a0 + a.stretch * (a0 - a.a_prev[i]) : a0;
     const Vec3 v = held ? v0 : v0 + dt * (keep * a0 + phi * a1);
-    a.xp[i] = x0;
-    a.vp[i] = v0;
-    a.x[i] = held ? x0 + dt * v0 : x0 + dt * (keep * v0 + phi * v);
-    a.v[i] = v;
+    a.x2[i] = held ? x0 + dt * v0 : x0 + dt * (keep * v0 + phi * v);
+    a.v2[i] = v;
     if constexpr (kRotates) {
       const Vec3 w0 = a.w0[i], b0 = a.b0[i];
       const Vec3 b1 = a.b_prev ? b0 + a.stretch * (b0 - a.b_prev[i]) : b0;
       const Vec3 w = held ? w0 : w0 + dt * (keep * b0 + phi * b1);
-      a.wp[i] = w0;
-      a.alphap[i] = Vec3{};
-      a.w[i] = w;
-      a.alpha[i] = held ? dt * w0 : dt * (keep * w0 + phi * w);
+      a.alpha[i] = Vec3{};
+      a.w2[i] = w;
+      a.alpha2[i] = held ? dt * w0 : dt * (keep * w0 + phi * w);
     }
-    a.Tp[i] = a.T0[i];
-    if constexpr (kThermal) a.T[i] = a.T0[i] + dt * (keep * a.h0[i] + phi * a.h0[i]);
+    if constexpr (kThermal) a.T2[i] = a.T0[i] + dt * (keep * a.h0[i] + phi * a.h0[i]);
   }
 }
 
 // One iteration's update of particles [lo, hi) from the end rates, adding each particle's norm
-// terms to the lane of its position within a group of kUpdateLanes. Without kThermal, T stays T0
-// and the temperature terms are not summed (the field is not iterated).
+// terms to the lane of its position within a group of kUpdateLanes. Without kThermal, T2 is not
+// written and the temperature terms are not summed (the field is not iterated).
 template <bool kRotates, bool kThermal, bool kFixed>
 void update_range(const UpdateArrays& a, std::size_t lo, std::size_t hi, UpdateLanes& lane) {
   const double dt = a.dt, phi = a.phi, keep = 1.0 - phi;
@@ -119,16 +121,14 @@ void update_range(const UpdateArrays& a, std::size_t lo, std::size_t hi, UpdateL
       const Vec3 xi = a.x[i], vi = a.v[i];
       add(4 * Field::kPosition, norm2(x - xi));
       add(4 * Field::kPosition + 1, norm2(x - x0));
-      add(4 * Field::kPosition + 2, norm2(x - a.xp[i]));
+      add(4 * Field::kPosition + 2, norm2(x - a.x2[i]));
       add(4 * Field::kPosition + 3, norm2(x));
       add(4 * Field::kVelocity, norm2(v - vi));
       add(4 * Field::kVelocity + 1, norm2(v - v0));
-      add(4 * Field::kVelocity + 2, norm2(v - a.vp[i]));
+      add(4 * Field::kVelocity + 2, norm2(v - a.v2[i]));
       add(4 * Field::kVelocity + 3, norm2(v));
-      a.xp[i] = xi;
-      a.vp[i] = vi;
-      a.x[i] = x;
-      a.v[i] = v;
+      a.x2[i] = x;
+      a.v2[i] = v;
       if constexpr (kRotates) {
         const Vec3 w0 = a.w0[i];
         const Vec3 b1 = a.torque[i] / a.inertia[i];
@@ -141,27 +141,24 @@ void update_range(const UpdateArrays& a, std::size_t lo, std::size_t hi, UpdateL
         const Vec3 wi = a.w[i], alphai = a.alpha[i];
         add(4 * Field::kRotation, norm2(alpha - alphai));
         add(4 * Field::kRotation + 1, norm2(alpha));
-        add(4 * Field::kRotation + 2, norm2(alpha - a.alphap[i]));
+        add(4 * Field::kRotation + 2, norm2(alpha - a.alpha2[i]));
         add(4 * Field::kRotation + 3, (norm2(alpha) + norm2(x - x0) * inv_r2));
         add(4 * Field::kAngularVelocity, norm2(w - wi));
         add(4 * Field::kAngularVelocity + 1, norm2(w - w0));
-        add(4 * Field::kAngularVelocity + 2, norm2(w - a.wp[i]));
+        add(4 * Field::kAngularVelocity + 2, norm2(w - a.w2[i]));
         add(4 * Field::kAngularVelocity + 3, (norm2(w) + norm2(v) * inv_r2));
-        a.wp[i] = wi;
-        a.alphap[i] = alphai;
-        a.w[i] = w;
-        a.alpha[i] = alpha;
+        a.w2[i] = w;
+        a.alpha2[i] = alpha;
       }
       if constexpr (kThermal) {
         const double h1 = a.heat[i] / (a.mass[i] * a.heat_capacity[a.material[i]]);
         const double T = a.T0[i] + dt * (keep * a.h0[i] + phi * h1);
-        const double Ti = a.T[i], dTp = T - a.Tp[i], d0 = T - a.T0[i];
+        const double Ti = a.T[i], dTp = T - a.T2[i], d0 = T - a.T0[i];
         lane[4 * Field::kTemperature][l] += (T - Ti) * (T - Ti);
         lane[4 * Field::kTemperature + 1][l] += d0 * d0;
         lane[4 * Field::kTemperature + 2][l] += dTp * dTp;
         lane[4 * Field::kTemperature + 3][l] += T * T;
-        a.Tp[i] = Ti;
-        a.T[i] = T;
+        a.T2[i] = T;
       }
     }
   }

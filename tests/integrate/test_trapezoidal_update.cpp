@@ -51,6 +51,12 @@ struct Arrays {
     xp = vp = wp = alphap = alpha = std::vector<Vec3>(kN);
     Tp = std::vector<double>(kN);
   }
+  // What the integrator does after each update: the new iterate (written over y_(K-2)) becomes
+  // the state, and the state the previous iterate. Temperatures only when they are iterated.
+  void swap_iterates(bool thermal) {
+    x.swap(xp), v.swap(vp), w.swap(wp), alpha.swap(alphap);
+    if (thermal) T.swap(Tp);
+  }
   UpdateArrays view() {
     return {x.data(),      v.data(),      w.data(),        alpha.data(),    T.data(),      xp.data(),   vp.data(),
             wp.data(),     alphap.data(), Tp.data(),       x0.data(),       v0.data(),     w0.data(),   T0.data(),
@@ -66,20 +72,23 @@ double rel(const Vec3& a, const Vec3& b) { return norm(a - b) / std::max(norm(b)
 TEST(TrapezoidalUpdate, PredictorAndIterationFollowTheClosedForm) {
   Arrays s;
   predict_range<true, false, true>(s.view(), 0, kN);
+  s.swap_iterates(false);
   for (std::size_t i = 0; i < kN; ++i) {
     if (i == 5) continue;
     // Constant rates over the step: v = v0 + dt a0, x = x0 + dt v0 + phi dt^2 a0.
     EXPECT_LT(rel(s.v[i], s.v0[i] + kDt * s.a0[i]), 1e-15) << i;
     EXPECT_LT(rel(s.x[i], s.x0[i] + kDt * s.v0[i] + kPhi * kDt * kDt * s.a0[i]), 1e-15) << i;
     EXPECT_LT(rel(s.alpha[i], kDt * s.w0[i] + kPhi * kDt * kDt * s.b0[i]), 1e-14) << i;
-    EXPECT_EQ(s.xp[i], s.x0[i]);
-    EXPECT_EQ(s.Tp[i], s.T0[i]);
+    EXPECT_EQ(s.xp[i], s.x0[i]);  // the start state became the previous iterate
+    EXPECT_EQ(s.vp[i], s.v0[i]);
+    EXPECT_EQ(s.alphap[i], Vec3{});
   }
   const std::vector<Vec3> x1 = s.x, v1 = s.v, w1 = s.w, alpha1 = s.alpha;
   EXPECT_EQ(s.x[5], s.x0[5] + kDt * s.v0[5]);
   EXPECT_EQ(s.v[5], s.v0[5]);
   UpdateLanes lane = {};
   update_range<true, false, true>(s.view(), 0, kN, lane);
+  s.swap_iterates(false);
   double dx2 = 0.0, dv2 = 0.0, xx02 = 0.0, dalpha2 = 0.0, dw2 = 0.0;  // direct sums over the free particles
   for (std::size_t i = 0; i < kN; ++i) {
     if (i == 5) continue;
@@ -89,6 +98,8 @@ TEST(TrapezoidalUpdate, PredictorAndIterationFollowTheClosedForm) {
     EXPECT_LT(rel(s.x[i], s.x0[i] + kDt * ((1.0 - kPhi) * s.v0[i] + kPhi * v)), 1e-15) << i;
     EXPECT_EQ(s.xp[i], x1[i]);  // the iterate became the previous one
     EXPECT_EQ(s.vp[i], v1[i]);
+    EXPECT_EQ(s.wp[i], w1[i]);
+    EXPECT_EQ(s.alphap[i], alpha1[i]);
     EXPECT_EQ(s.T[i], s.T0[i]);  // not thermal: T stays
     dx2 += norm2(s.x[i] - x1[i]);
     dv2 += norm2(s.v[i] - v1[i]);
@@ -115,9 +126,12 @@ TEST(TrapezoidalUpdate, FixedParticleKeepsItsVelocityAndStaysOutOfTheNorms) {
   Arrays s;
   for (std::size_t i = 0; i < kN; ++i) s.fixed[i] = 1;
   predict_range<true, true, true>(s.view(), 0, kN);
+  s.swap_iterates(true);
   for (std::size_t i = 0; i < kN; ++i) EXPECT_NEAR(s.T[i], s.T0[i] + kDt * s.h0[i], 1e-12) << i;
+  for (std::size_t i = 0; i < kN; ++i) EXPECT_EQ(s.Tp[i], s.T0[i]) << i;
   UpdateLanes lane = {};
   update_range<true, true, true>(s.view(), 0, kN, lane);
+  s.swap_iterates(true);
   for (std::size_t i = 0; i < kN; ++i) {
     EXPECT_EQ(s.v[i], s.v0[i]);
     EXPECT_EQ(s.w[i], s.w0[i]);
@@ -141,9 +155,12 @@ TEST(TrapezoidalUpdate, SplitRangesGiveTheSameStates) {
   update_range<true, true, false>(one.view(), 0, kN, a);
   update_range<true, true, false>(two.view(), 0, 517, b);
   update_range<true, true, false>(two.view(), 517, kN, c);
+  one.swap_iterates(true);
+  two.swap_iterates(true);
   for (std::size_t i = 0; i < kN; ++i) {
     EXPECT_EQ(one.x[i], two.x[i]);
     EXPECT_EQ(one.w[i], two.w[i]);
     EXPECT_EQ(one.alpha[i], two.alpha[i]);
+    EXPECT_EQ(one.T[i], two.T[i]);
   }
 }

@@ -27,6 +27,27 @@ void swap_in(std::vector<T>& state, std::vector<T>& next, std::size_t owned) {
   state.swap(next);
 }
 
+// to[lo, hi) = from[lo, hi).
+template <class T>
+void copy_range(const std::vector<T>& from, std::vector<T>& to, std::size_t lo, std::size_t hi) {
+  std::copy(from.begin() + static_cast<std::ptrdiff_t>(lo), from.begin() + static_cast<std::ptrdiff_t>(hi),
+            to.begin() + static_cast<std::ptrdiff_t>(lo));
+}
+
+// The start rates a0 = F/m, b0 = M/I of particles [lo, hi), with restrict pointers so that the
+// loop vectorises. A fixed particle's (kFixed: fixed[i] != 0) are zero: nothing accelerates it.
+template <bool kFixed>
+void start_rates(const Vec3* __restrict force, const Vec3* __restrict torque, const double* __restrict mass,
+                 const double* __restrict inertia, const std::uint8_t* __restrict fixed, Vec3* __restrict a0,
+                 Vec3* __restrict b0, std::size_t lo, std::size_t hi) {
+  for (std::size_t i = lo; i < hi; ++i) {
+    const bool held = kFixed && fixed[i] != 0;
+    const Vec3 a = force[i] / mass[i], b = torque[i] / inertia[i];
+    a0[i] = {held ? 0.0 : a.x, held ? 0.0 : a.y, held ? 0.0 : a.z};
+    b0[i] = {held ? 0.0 : b.x, held ? 0.0 : b.y, held ? 0.0 : b.z};
+  }
+}
+
 // f(std::true_type{}) or f(std::false_type{}): a run-time flag as a template argument.
 template <class F>
 void with_flag(bool flag, F&& f) {
@@ -50,21 +71,28 @@ void TrapezoidalIntegrator::save_start(const Particles& p) {
   torque0_.resize(n);
   heat0_.resize(n);
   const bool thermal = params_.analysis.thermal;
+  // The materials' heat capacities, for this step's updates too.
+  heat_capacity_.resize(model_.materials.size());
+  for (std::size_t m = 0; m < heat_capacity_.size(); ++m) heat_capacity_[m] = model_.materials[m].heat_capacity;
+  constexpr std::size_t kChunk = 1024;  // particles per task
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-  for (std::size_t i = 0; i < n; ++i) {
-    x0_[i] = p.x[i];
-    v0_[i] = p.v[i];
-    w0_[i] = p.w[i];
-    q0_[i] = p.q[i];
-    T0_[i] = p.T[i];
-    force0_[i] = p.force[i];
-    torque0_[i] = p.torque[i];
-    heat0_[i] = p.heat[i];
-    // A fixed particle's rates are zero: nothing accelerates it.
-    const bool held = any_fixed_ && p.fixed[i];
-    a0_[i] = held ? Vec3{} : p.force[i] / p.mass[i];
-    b0_[i] = held ? Vec3{} : p.torque[i] / p.inertia[i];
-    h0_[i] = thermal ? heating_rate(p, i) : 0.0;
+  for (std::size_t c = 0; c < chunks; ++c) {
+    const std::size_t lo = c * kChunk, hi = std::min(n, lo + kChunk);
+    copy_range(p.x, x0_, lo, hi);
+    copy_range(p.v, v0_, lo, hi);
+    copy_range(p.w, w0_, lo, hi);
+    copy_range(p.q, q0_, lo, hi);
+    copy_range(p.T, T0_, lo, hi);
+    copy_range(p.force, force0_, lo, hi);
+    copy_range(p.torque, torque0_, lo, hi);
+    copy_range(p.heat, heat0_, lo, hi);
+    with_flag(any_fixed_, [&](auto kFixed) {
+      start_rates<kFixed()>(p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(), p.fixed.data(),
+                            a0_.data(), b0_.data(), lo, hi);
+    });
+    for (std::size_t i = lo; i < hi; ++i)
+      h0_[i] = thermal ? p.heat[i] / (p.mass[i] * heat_capacity_[static_cast<std::size_t>(p.material[i])]) : 0.0;
   }
 }
 
@@ -131,8 +159,6 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
 TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double dt, bool predictor) {
   const bool rotation = params_.analysis.rotation;
   const bool thermal = params_.analysis.thermal;
-  heat_capacity_.resize(model_.materials.size());
-  for (std::size_t m = 0; m < heat_capacity_.size(); ++m) heat_capacity_[m] = model_.materials[m].heat_capacity;
   // The end state from the end-of-step rates in the accumulators, or for the predictor from the
   // start rates extrapolated with the previous step's (trapezoidal_update.hpp, rate_history.hpp),
   // into the previous iterate's arrays, which then swap with the state's: the state it replaces

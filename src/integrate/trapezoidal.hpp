@@ -55,10 +55,6 @@ class TrapezoidalIntegrator {
   void restore_start(Particles& p) const;
   void accept_midpoint(Particles& p);  // y <- (y_K + y_(K-1)) / 2
 
-  // K/s, dT/dt = heat / (m c) of particle i, c of its material.
-  double heating_rate(const Particles& p, std::size_t i) const {
-    return p.heat[i] / (p.mass[i] * model_.materials[static_cast<std::size_t>(p.material[i])].heat_capacity);
-  }
   const Model& model_;
   const Params& params_;
   const Communicator* comm_ = nullptr;  // null: one rank
@@ -77,7 +73,7 @@ class TrapezoidalIntegrator {
   std::vector<Vec3> xp_, vp_, wp_, alphap_;  // m, m/s, rad/s, rad
   std::vector<double> Tp_;                   // K
   RateHistory history_;
-  std::vector<double> heat_capacity_;  // [materials] J/(kg K), the materials' (update())
+  std::vector<double> heat_capacity_;  // [materials] J/(kg K), the materials' (save_start(), each step)
 };
 
 }  // namespace mpdem

@@ -100,68 +100,82 @@ void predict_range(const UpdateArrays& a, std::size_t lo, std::size_t hi) {
   }
 }
 
-// One iteration's update of particles [lo, hi) from the end rates, adding each particle's norm
-// terms to the lane of its position within a group of kUpdateLanes. Without kThermal, T2 is not
-// written and the temperature terms are not summed (the field is not iterated).
+// Component by component: a whole-Vec3 store keeps GCC from vectorising the update's loop.
+inline void store(Vec3* __restrict p, const Vec3& v) {
+  p->x = v.x;
+  p->y = v.y;
+  p->z = v.z;
+}
+
+// One iteration's update of particle i from the end rates, adding its norm terms to lane l.
+// Without kThermal, T2 is not written and the temperature terms are not summed (the field is not
+// iterated).
+template <bool kRotates, bool kThermal, bool kFixed>
+[[gnu::always_inline]] inline void update_particle(const UpdateArrays& a, std::size_t i, std::size_t l,
+                                                   UpdateLanes& lane) {
+  const double dt = a.dt, phi = a.phi, keep = 1.0 - phi;
+  const bool held = kFixed && a.fixed[i] != 0;
+  // The mechanical norms count the free particles.
+  const auto add = [&](int term, double value) { lane[term][l] += held ? 0.0 : value; };
+  const Vec3 x0 = a.x0[i], v0 = a.v0[i];
+  const Vec3 a1 = a.force[i] / a.mass[i];
+  const Vec3 vf = v0 + dt * (keep * a.a0[i] + phi * a1);
+  const Vec3 v = held ? v0 : vf;
+  const Vec3 x = held ? x0 + dt * v0 : x0 + dt * (keep * v0 + phi * v);
+  const Vec3 xi = a.x[i], vi = a.v[i];
+  add(4 * Field::kPosition, norm2(x - xi));
+  add(4 * Field::kPosition + 1, norm2(x - x0));
+  add(4 * Field::kPosition + 2, norm2(x - a.x2[i]));
+  add(4 * Field::kPosition + 3, norm2(x));
+  add(4 * Field::kVelocity, norm2(v - vi));
+  add(4 * Field::kVelocity + 1, norm2(v - v0));
+  add(4 * Field::kVelocity + 2, norm2(v - a.v2[i]));
+  add(4 * Field::kVelocity + 3, norm2(v));
+  store(a.x2 + i, x);
+  store(a.v2 + i, v);
+  if constexpr (kRotates) {
+    const Vec3 w0 = a.w0[i];
+    const Vec3 b1 = a.torque[i] / a.inertia[i];
+    const Vec3 wf = w0 + dt * (keep * a.b0[i] + phi * b1);
+    const Vec3 w = held ? w0 : wf;
+    const Vec3 alpha = held ? dt * w0 : dt * (keep * w0 + phi * w);
+    // The rotational fields' magnitudes count the translational ones in the same units
+    // (displacement / R, velocity / R): docs/integrators.md, "two-cycles".
+    const double inv_r2 = 1.0 / (a.radius[i] * a.radius[i]);  // 1/m^2
+    const Vec3 wi = a.w[i], alphai = a.alpha[i];
+    add(4 * Field::kRotation, norm2(alpha - alphai));
+    add(4 * Field::kRotation + 1, norm2(alpha));
+    add(4 * Field::kRotation + 2, norm2(alpha - a.alpha2[i]));
+    add(4 * Field::kRotation + 3, (norm2(alpha) + norm2(x - x0) * inv_r2));
+    add(4 * Field::kAngularVelocity, norm2(w - wi));
+    add(4 * Field::kAngularVelocity + 1, norm2(w - w0));
+    add(4 * Field::kAngularVelocity + 2, norm2(w - a.w2[i]));
+    add(4 * Field::kAngularVelocity + 3, (norm2(w) + norm2(v) * inv_r2));
+    store(a.w2 + i, w);
+    store(a.alpha2 + i, alpha);
+  }
+  if constexpr (kThermal) {
+    const double h1 = a.heat[i] / (a.mass[i] * a.heat_capacity[a.material[i]]);
+    const double T = a.T0[i] + dt * (keep * a.h0[i] + phi * h1);
+    const double Ti = a.T[i], dTp = T - a.T2[i], d0 = T - a.T0[i];
+    lane[4 * Field::kTemperature][l] += (T - Ti) * (T - Ti);
+    lane[4 * Field::kTemperature + 1][l] += d0 * d0;
+    lane[4 * Field::kTemperature + 2][l] += dTp * dTp;
+    lane[4 * Field::kTemperature + 3][l] += T * T;
+    a.T2[i] = T;
+  }
+}
+
+// One iteration's update of particles [lo, hi), each particle's norm terms in the lane of its
+// position within a group of kUpdateLanes: whole groups (a loop of constant length, which
+// vectorises), then the rest.
 template <bool kRotates, bool kThermal, bool kFixed>
 void update_range(const UpdateArrays& a, std::size_t lo, std::size_t hi, UpdateLanes& lane) {
-  const double dt = a.dt, phi = a.phi, keep = 1.0 - phi;
-  for (std::size_t i0 = lo; i0 < hi; i0 += kUpdateLanes) {
-    const std::size_t lanes = std::min(kUpdateLanes, hi - i0);
-    for (std::size_t l = 0; l < lanes; ++l) {
-      const std::size_t i = i0 + l;
-      const bool held = kFixed && a.fixed[i] != 0;
-      // The mechanical norms count the free particles.
-      const auto add = [&](int term, double value) { lane[term][l] += held ? 0.0 : value; };
-      const Vec3 x0 = a.x0[i], v0 = a.v0[i];
-      const Vec3 a1 = a.force[i] / a.mass[i];
-      const Vec3 vf = v0 + dt * (keep * a.a0[i] + phi * a1);
-      const Vec3 v = held ? v0 : vf;
-      const Vec3 x = held ? x0 + dt * v0 : x0 + dt * (keep * v0 + phi * v);
-      const Vec3 xi = a.x[i], vi = a.v[i];
-      add(4 * Field::kPosition, norm2(x - xi));
-      add(4 * Field::kPosition + 1, norm2(x - x0));
-      add(4 * Field::kPosition + 2, norm2(x - a.x2[i]));
-      add(4 * Field::kPosition + 3, norm2(x));
-      add(4 * Field::kVelocity, norm2(v - vi));
-      add(4 * Field::kVelocity + 1, norm2(v - v0));
-      add(4 * Field::kVelocity + 2, norm2(v - a.v2[i]));
-      add(4 * Field::kVelocity + 3, norm2(v));
-      a.x2[i] = x;
-      a.v2[i] = v;
-      if constexpr (kRotates) {
-        const Vec3 w0 = a.w0[i];
-        const Vec3 b1 = a.torque[i] / a.inertia[i];
-        const Vec3 wf = w0 + dt * (keep * a.b0[i] + phi * b1);
-        const Vec3 w = held ? w0 : wf;
-        const Vec3 alpha = held ? dt * w0 : dt * (keep * w0 + phi * w);
-        // The rotational fields' magnitudes count the translational ones in the same units
-        // (displacement / R, velocity / R): docs/integrators.md, "two-cycles".
-        const double inv_r2 = 1.0 / (a.radius[i] * a.radius[i]);  // 1/m^2
-        const Vec3 wi = a.w[i], alphai = a.alpha[i];
-        add(4 * Field::kRotation, norm2(alpha - alphai));
-        add(4 * Field::kRotation + 1, norm2(alpha));
-        add(4 * Field::kRotation + 2, norm2(alpha - a.alpha2[i]));
-        add(4 * Field::kRotation + 3, (norm2(alpha) + norm2(x - x0) * inv_r2));
-        add(4 * Field::kAngularVelocity, norm2(w - wi));
-        add(4 * Field::kAngularVelocity + 1, norm2(w - w0));
-        add(4 * Field::kAngularVelocity + 2, norm2(w - a.w2[i]));
-        add(4 * Field::kAngularVelocity + 3, (norm2(w) + norm2(v) * inv_r2));
-        a.w2[i] = w;
-        a.alpha2[i] = alpha;
-      }
-      if constexpr (kThermal) {
-        const double h1 = a.heat[i] / (a.mass[i] * a.heat_capacity[a.material[i]]);
-        const double T = a.T0[i] + dt * (keep * a.h0[i] + phi * h1);
-        const double Ti = a.T[i], dTp = T - a.T2[i], d0 = T - a.T0[i];
-        lane[4 * Field::kTemperature][l] += (T - Ti) * (T - Ti);
-        lane[4 * Field::kTemperature + 1][l] += d0 * d0;
-        lane[4 * Field::kTemperature + 2][l] += dTp * dTp;
-        lane[4 * Field::kTemperature + 3][l] += T * T;
-        a.T2[i] = T;
-      }
-    }
-  }
+  std::size_t i0 = lo;
+  for (; i0 + kUpdateLanes <= hi; i0 += kUpdateLanes)
+#pragma GCC ivdep
+    for (std::size_t l = 0; l < kUpdateLanes; ++l) update_particle<kRotates, kThermal, kFixed>(a, i0 + l, l, lane);
+  for (std::size_t l = 0; i0 < hi; ++i0, ++l) update_particle<kRotates, kThermal, kFixed>(a, i0, l, lane);
 }
 
 }  // namespace mpdem

@@ -16,9 +16,9 @@ namespace {
 // force discontinuity (docs/integrators.md); the midpoint is then within half of it.
 constexpr double kTwoCycleAmplitude = 1e-2;
 
-// `next` holds the owned particles' new values of one of the state's arrays (the first `owned`
-// entries): it becomes the state's array, and the state's array `next`, the previous values.
-// Ghosts (after the owned particles) keep their values: copied across.
+// Exchanges one of the state's arrays with `next`: what `next` holds for the owned particles (the
+// first `owned` entries) becomes the state's, and the state's values go to `next`. Ghosts (after
+// the owned particles) keep their values in the state's array: copied across.
 template <class T>
 void swap_in(std::vector<T>& state, std::vector<T>& next, std::size_t owned) {
   next.resize(state.size());
@@ -56,21 +56,24 @@ void with_flag(bool flag, F&& f) {
 }
 }  // namespace
 
-void TrapezoidalIntegrator::save_start(const Particles& p) {
+void TrapezoidalIntegrator::save_start(Particles& p) {
   const std::size_t n = p.size();
-  x0_.resize(n);
-  v0_.resize(n);
-  w0_.resize(n);
+  const bool rotation = params_.analysis.rotation;
+  const bool thermal = params_.analysis.thermal;
+  // The start state changes hands instead of being copied: the predictor writes the state's arrays
+  // anew. Orientations are not saved: they change only when a step is accepted (commit). Without
+  // heat transfer nothing changes the temperatures or heat flows.
+  swap_in(p.x, x0_, n);
+  swap_in(p.v, v0_, n);
+  if (rotation) swap_in(p.w, w0_, n);
+  if (thermal) swap_in(p.T, T0_, n);
   a0_.resize(n);
   b0_.resize(n);
-  q0_.resize(n);
-  T0_.resize(n);
-  h0_.resize(n);
+  h0_.resize(thermal ? n : 0);
   alpha_.resize(n);
   force0_.resize(n);
   torque0_.resize(n);
-  heat0_.resize(n);
-  const bool thermal = params_.analysis.thermal;
+  heat0_.resize(thermal ? n : 0);
   // The materials' heat capacities, for this step's updates too.
   heat_capacity_.resize(model_.materials.size());
   for (std::size_t m = 0; m < heat_capacity_.size(); ++m) heat_capacity_[m] = model_.materials[m].heat_capacity;
@@ -79,35 +82,34 @@ void TrapezoidalIntegrator::save_start(const Particles& p) {
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t c = 0; c < chunks; ++c) {
     const std::size_t lo = c * kChunk, hi = std::min(n, lo + kChunk);
-    copy_range(p.x, x0_, lo, hi);
-    copy_range(p.v, v0_, lo, hi);
-    copy_range(p.w, w0_, lo, hi);
-    copy_range(p.q, q0_, lo, hi);
-    copy_range(p.T, T0_, lo, hi);
     copy_range(p.force, force0_, lo, hi);
     copy_range(p.torque, torque0_, lo, hi);
-    copy_range(p.heat, heat0_, lo, hi);
     with_flag(any_fixed_, [&](auto kFixed) {
       start_rates<kFixed()>(p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(), p.fixed.data(),
                             a0_.data(), b0_.data(), lo, hi);
     });
+    if (!thermal) continue;
+    copy_range(p.heat, heat0_, lo, hi);
     for (std::size_t i = lo; i < hi; ++i)
-      h0_[i] = thermal ? p.heat[i] / (p.mass[i] * heat_capacity_[static_cast<std::size_t>(p.material[i])]) : 0.0;
+      h0_[i] = p.heat[i] / (p.mass[i] * heat_capacity_[static_cast<std::size_t>(p.material[i])]);
   }
 }
 
 void TrapezoidalIntegrator::restore_start(Particles& p) const {
   const std::size_t n = p.size();
+  const bool rotation = params_.analysis.rotation;
+  const bool thermal = params_.analysis.thermal;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
     p.x[i] = x0_[i];
     p.v[i] = v0_[i];
-    p.w[i] = w0_[i];
-    p.q[i] = q0_[i];
-    p.T[i] = T0_[i];
+    if (rotation) p.w[i] = w0_[i];
     p.force[i] = force0_[i];
     p.torque[i] = torque0_[i];
-    p.heat[i] = heat0_[i];
+    if (thermal) {
+      p.T[i] = T0_[i];
+      p.heat[i] = heat0_[i];
+    }
   }
 }
 
@@ -123,7 +125,7 @@ void TrapezoidalIntegrator::accept_midpoint(Particles& p) {
     if (rotation) {
       p.w[i] = 0.5 * (p.w[i] + wp_[i]);
       alpha_[i] = 0.5 * (alpha_[i] + alphap_[i]);
-      p.q[i] = rotate_by_increment(q0_[i], alpha_[i]);
+      p.q[i] = rotate_by_increment(p.q[i], alpha_[i]);  // p.q is the start orientation until the commit
     }
   }
 }
@@ -159,10 +161,12 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
 TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double dt, bool predictor) {
   const bool rotation = params_.analysis.rotation;
   const bool thermal = params_.analysis.thermal;
-  // The end state from the end-of-step rates in the accumulators, or for the predictor from the
-  // start rates extrapolated with the previous step's (trapezoidal_update.hpp, rate_history.hpp),
-  // into the previous iterate's arrays, which then swap with the state's: the state it replaces
-  // becomes the previous iterate.
+  // The end state from the end-of-step rates in the accumulators, into the arrays of the iterate
+  // before the previous one, which then swap with the state's: the state it replaces becomes the
+  // previous iterate. The predictor's, from the start rates extrapolated with the previous step's
+  // (trapezoidal_update.hpp, rate_history.hpp), goes straight into the state's arrays (save_start
+  // took their start values): the first iteration's previous iterate is the predictor, and the
+  // one before it is not needed (only the two-cycle test reads it, from the third iteration on).
   UpdateArrays a{p.x.data(),
                  p.v.data(),
                  p.w.data(),
@@ -207,6 +211,7 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
     if (thermal) swap_in(p.T, Tp_, n);
   };
   if (predictor) {
+    a.x2 = p.x.data(), a.v2 = p.v.data(), a.w2 = p.w.data(), a.alpha2 = alpha_.data(), a.T2 = p.T.data();
     constexpr std::size_t kChunk = 1024;  // particles per call
     const std::size_t chunks = (n + kChunk - 1) / kChunk;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
@@ -218,7 +223,6 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
           });
         });
       });
-    swap_iterates();
     return {};
   }
   const Sums sums = deterministic_block_sums<kUpdateSums>(n, [&](std::size_t lo, std::size_t hi, Sums& acc) {
@@ -343,7 +347,7 @@ void TrapezoidalIntegrator::commit(Particles& p, Barriers& b, Interactions& f, c
   // Orientation of the accepted end state (accept_midpoint has set it for a two-cycle).
   if (params_.analysis.rotation && !rep.two_cycle) {
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-    for (std::size_t i = 0; i < n; ++i) p.q[i] = rotate_by_increment(q0_[i], alpha_[i]);
+    for (std::size_t i = 0; i < n; ++i) p.q[i] = rotate_by_increment(p.q[i], alpha_[i]);  // from the start's
   }
   EvalRequest end = req;
   end.commit = true;

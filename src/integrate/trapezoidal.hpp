@@ -51,7 +51,7 @@ class TrapezoidalIntegrator {
   void reject(Particles& p, StepReport& rep) const;
 
   Sums update(Particles& p, double dt, bool predictor);  // the end state (134)-(138)
-  void save_start(const Particles& p);
+  void save_start(Particles& p);                         // takes the start state's arrays, see update()
   void restore_start(Particles& p) const;
   void accept_midpoint(Particles& p);  // y <- (y_K + y_(K-1)) / 2
 
@@ -63,12 +63,11 @@ class TrapezoidalIntegrator {
   bool any_fixed_ = false;
   std::size_t free_ = 0;
   // Start-of-step state and rates [N]
-  std::vector<Vec3> x0_, v0_, w0_, a0_, b0_;  // m, m/s, rad/s, m/s^2, rad/s^2
-  std::vector<Quat> q0_;
-  std::vector<double> T0_, h0_;         // K, K/s
-  std::vector<Vec3> force0_, torque0_;  // N, N m (to restore the rates on failure)
-  std::vector<double> heat0_;           // W
-  std::vector<Vec3> alpha_;             // rad, current rotation increment estimate
+  std::vector<Vec3> x0_, v0_, w0_, a0_, b0_;  // m, m/s, rad/s, m/s^2, rad/s^2 (w0_: with rotation)
+  std::vector<double> T0_, h0_;               // K, K/s (with heat transfer)
+  std::vector<Vec3> force0_, torque0_;        // N, N m (to restore the rates on failure)
+  std::vector<double> heat0_;                 // W (with heat transfer)
+  std::vector<Vec3> alpha_;                   // rad, current rotation increment estimate
   // Previous iterate y_(K-1), to recognise a two-cycle (see docs/integrators.md) [N]
   std::vector<Vec3> xp_, vp_, wp_, alphap_;  // m, m/s, rad/s, rad
   std::vector<double> Tp_;                   // K

@@ -33,12 +33,11 @@ inline constexpr int kUpdateSums = 4 * kFieldCount;
 using UpdateLanes = double[kUpdateSums][kUpdateLanes];
 
 struct UpdateArrays {
-  // The iterate y_(K-1) [N]: m, m/s, rad/s, rad, K (the predictor: the start state, and alpha
-  // set to 0, the previous rotation increment).
+  // The iterate y_(K-1) [N]: m, m/s, rad/s, rad, K (not read by the predictor).
   const Vec3* __restrict x;
   const Vec3* __restrict v;
   const Vec3* __restrict w;
-  Vec3* __restrict alpha;
+  const Vec3* __restrict alpha;
   const double* __restrict T;
   // y_(K-2) on entry (not read by the predictor), the new iterate y_K on return [N] (same units).
   Vec3* __restrict x2;
@@ -75,9 +74,8 @@ struct UpdateArrays {
 
 // The predictor over particles [lo, hi): the end state from the end rates extrapolated linearly
 // from the previous step's start rates, r(t) + stretch (r(t) - r(t - dt_prev)) (without a
-// history: the start rates), into the y_K arrays; the state (the start state, which the swap
-// makes the previous iterate) is not read, and alpha_(K-1) = 0. Without kThermal T2 is not
-// written (the temperatures are not iterated and not swapped).
+// history: the start rates), into the y_K arrays (the caller passes the state's); x, v, w, alpha
+// and T are not read. Without kThermal T2 is not written (the temperatures are not iterated).
 template <bool kRotates, bool kThermal, bool kFixed>
 void predict_range(const UpdateArrays& a, std::size_t lo, std::size_t hi) {
   const double dt = a.dt, phi = a.phi, keep = 1.0 - phi;
@@ -92,7 +90,6 @@ void predict_range(const UpdateArrays& a, std::size_t lo, std::size_t hi) {
       const Vec3 w0 = a.w0[i], b0 = a.b0[i];
       const Vec3 b1 = a.b_prev ? b0 + a.stretch * (b0 - a.b_prev[i]) : b0;
       const Vec3 w = held ? w0 : w0 + dt * (keep * b0 + phi * b1);
-      a.alpha[i] = Vec3{};
       a.w2[i] = w;
       a.alpha2[i] = held ? dt * w0 : dt * (keep * w0 + phi * w);
     }

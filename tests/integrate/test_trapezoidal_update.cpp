@@ -57,6 +57,12 @@ struct Arrays {
     x.swap(xp), v.swap(vp), w.swap(wp), alpha.swap(alphap);
     if (thermal) T.swap(Tp);
   }
+  // The predictor writes the state's arrays (TrapezoidalIntegrator::update).
+  UpdateArrays predictor_view() {
+    UpdateArrays a = view();
+    a.x2 = x.data(), a.v2 = v.data(), a.w2 = w.data(), a.alpha2 = alpha.data(), a.T2 = T.data();
+    return a;
+  }
   UpdateArrays view() {
     return {x.data(),      v.data(),      w.data(),        alpha.data(),    T.data(),      xp.data(),   vp.data(),
             wp.data(),     alphap.data(), Tp.data(),       x0.data(),       v0.data(),     w0.data(),   T0.data(),
@@ -71,17 +77,14 @@ double rel(const Vec3& a, const Vec3& b) { return norm(a - b) / std::max(norm(b)
 
 TEST(TrapezoidalUpdate, PredictorAndIterationFollowTheClosedForm) {
   Arrays s;
-  predict_range<true, false, true>(s.view(), 0, kN);
-  s.swap_iterates(false);
+  predict_range<true, false, true>(s.predictor_view(), 0, kN);
   for (std::size_t i = 0; i < kN; ++i) {
     if (i == 5) continue;
     // Constant rates over the step: v = v0 + dt a0, x = x0 + dt v0 + phi dt^2 a0.
     EXPECT_LT(rel(s.v[i], s.v0[i] + kDt * s.a0[i]), 1e-15) << i;
     EXPECT_LT(rel(s.x[i], s.x0[i] + kDt * s.v0[i] + kPhi * kDt * kDt * s.a0[i]), 1e-15) << i;
     EXPECT_LT(rel(s.alpha[i], kDt * s.w0[i] + kPhi * kDt * kDt * s.b0[i]), 1e-14) << i;
-    EXPECT_EQ(s.xp[i], s.x0[i]);  // the start state became the previous iterate
-    EXPECT_EQ(s.vp[i], s.v0[i]);
-    EXPECT_EQ(s.alphap[i], Vec3{});
+    EXPECT_EQ(s.xp[i], Vec3{});  // the arrays of the iterate before are not written
   }
   const std::vector<Vec3> x1 = s.x, v1 = s.v, w1 = s.w, alpha1 = s.alpha;
   EXPECT_EQ(s.x[5], s.x0[5] + kDt * s.v0[5]);
@@ -125,10 +128,8 @@ TEST(TrapezoidalUpdate, PredictorAndIterationFollowTheClosedForm) {
 TEST(TrapezoidalUpdate, FixedParticleKeepsItsVelocityAndStaysOutOfTheNorms) {
   Arrays s;
   for (std::size_t i = 0; i < kN; ++i) s.fixed[i] = 1;
-  predict_range<true, true, true>(s.view(), 0, kN);
-  s.swap_iterates(true);
+  predict_range<true, true, true>(s.predictor_view(), 0, kN);
   for (std::size_t i = 0; i < kN; ++i) EXPECT_NEAR(s.T[i], s.T0[i] + kDt * s.h0[i], 1e-12) << i;
-  for (std::size_t i = 0; i < kN; ++i) EXPECT_EQ(s.Tp[i], s.T0[i]) << i;
   UpdateLanes lane = {};
   update_range<true, true, true>(s.view(), 0, kN, lane);
   s.swap_iterates(true);

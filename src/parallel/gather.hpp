@@ -15,17 +15,29 @@
 
 namespace mpdem {
 
-// Every rank's values, in rank order, on `root` (empty elsewhere). Collective.
+// The ranks' byte blocks (Communicator::gather, all_gather) as one array of T, in rank order.
 template <class T>
-std::vector<T> gather_values(const Communicator& comm, std::span<const T> mine, int root) {
+std::vector<T> concatenated(const std::vector<std::vector<std::byte>>& blocks) {
   static_assert(std::is_trivially_copyable_v<T>);
   std::vector<T> all;
-  for (const auto& bytes : comm.gather(std::as_bytes(mine), root)) {
+  for (const auto& bytes : blocks) {
     const std::size_t at = all.size(), n = bytes.size() / sizeof(T);
     all.resize(at + n);
     if (n > 0) std::memcpy(all.data() + at, bytes.data(), n * sizeof(T));
   }
   return all;
+}
+
+// Every rank's values, in rank order, on `root` (empty elsewhere). Collective.
+template <class T>
+std::vector<T> gather_values(const Communicator& comm, std::span<const T> mine, int root) {
+  return concatenated<T>(comm.gather(std::as_bytes(mine), root));
+}
+
+// Every rank's values, in rank order, on every rank. Collective.
+template <class T>
+std::vector<T> all_gather_values(const Communicator& comm, std::span<const T> mine) {
+  return concatenated<T>(comm.all_gather(std::as_bytes(mine)));
 }
 
 // Every rank's records (of one record size), in rank order, on `root` (none elsewhere). Collective.

@@ -2,8 +2,6 @@
 // added between steps, their contact history kept, and whether a removal changes the others' rates.
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
-#include <span>
 #include <limits>
 #include <numeric>
 #include <type_traits>
@@ -15,6 +13,7 @@
 #include "contact/particle_contacts.hpp"
 #include "field/near_field_forces.hpp"
 #include "neighbor/neighbor_search.hpp"
+#include "parallel/gather.hpp"
 #include "sim/interactions.hpp"
 #include "thermal/heat_transfer.hpp"
 
@@ -33,15 +32,7 @@ bool Interactions::removal_acts_on_others(const Particles& p, const std::vector<
   std::vector<std::int64_t> ids;
   for (std::size_t i = 0; i < n; ++i)
     if (keep[i] == 0) ids.push_back(p.id[i]);
-  if (comm_) {
-    std::vector<std::int64_t> every;
-    for (const auto& bytes : comm_->all_gather(std::as_bytes(std::span(ids)))) {
-      const std::size_t at = every.size();
-      every.resize(at + bytes.size() / sizeof(std::int64_t));
-      if (!bytes.empty()) std::memcpy(every.data() + at, bytes.data(), bytes.size());
-    }
-    ids = std::move(every);
-  }
+  if (comm_) ids = all_gather_values<std::int64_t>(*comm_, ids);
   std::sort(ids.begin(), ids.end());
   std::vector<char> gone(all, 0);
   for (std::size_t i = 0; i < all; ++i)

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string>
 
 #include "contact/particle_contacts.hpp"
@@ -60,12 +59,7 @@ std::vector<Simulation::Fastest> Simulation::fastest(std::size_t k) const {
   };
   keep_first(mine);
   if (!comm_) return mine;
-  std::vector<Fastest> all;
-  for (const auto& bytes : comm_->all_gather(std::as_bytes(std::span<const Fastest>(mine)))) {
-    const std::size_t at = all.size();
-    all.resize(at + bytes.size() / sizeof(Fastest));
-    std::memcpy(all.data() + at, bytes.data(), bytes.size());
-  }
+  std::vector<Fastest> all = all_gather_values<Fastest>(*comm_, mine);
   keep_first(all);
   return all;
 }

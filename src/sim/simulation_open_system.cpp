@@ -5,8 +5,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
-#include <span>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -74,13 +72,7 @@ void Simulation::remove_marked(const std::vector<char>& keep, bool exits) {
   if (comm_) {
     energy = comm_->sum(energy);
     count = comm_->sum(count);
-    std::vector<Removed> all;
-    for (const auto& b : comm_->gather(std::as_bytes(std::span(gone)), 0)) {
-      const std::size_t at = all.size(), n = b.size() / sizeof(Removed);
-      all.resize(at + n);
-      if (n > 0) std::memcpy(all.data() + at, b.data(), b.size());
-    }
-    gone = std::move(all);  // on rank 0; empty elsewhere
+    gone = gather_values<Removed>(*comm_, gone, 0);  // on rank 0; empty elsewhere
   }
   // By id: removed.csv does not depend on the particle order or the rank count.
   std::sort(gone.begin(), gone.end(), [](const Removed& a, const Removed& b) { return a.id < b.id; });

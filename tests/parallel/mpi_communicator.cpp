@@ -37,6 +37,21 @@ TEST(Communicator, FixedGatherIsInRankOrder) {
   }
 }
 
+// Ranks holding r values each (rank 0 none): every rank gets all of them, concatenated in rank
+// order; gather_values only on the root.
+TEST(Communicator, GatheredValuesAreConcatenatedInRankOrder) {
+  const Communicator& comm = Communicator::world();
+  std::vector<std::int64_t> mine;
+  for (int k = 0; k < comm.rank(); ++k) mine.push_back(1000 * comm.rank() + k);
+  const std::vector<std::int64_t> every = all_gather_values<std::int64_t>(comm, mine);
+  const std::vector<std::int64_t> at_root = gather_values<std::int64_t>(comm, mine, 0);
+  std::vector<std::int64_t> expected;
+  for (int r = 0; r < comm.size(); ++r)
+    for (int k = 0; k < r; ++k) expected.push_back(1000 * r + k);
+  EXPECT_EQ(every, expected);
+  EXPECT_EQ(at_root, comm.rank() == 0 ? expected : std::vector<std::int64_t>{});
+}
+
 TEST(Communicator, SumsAndMaximaInRankOrder) {
   const Communicator& comm = Communicator::world();
   std::vector<double> sum(3), max(3);

@@ -256,6 +256,12 @@ PairBlockSums evaluate_block(const PairPass& q, std::size_t lo, std::size_t hi, 
       __builtin_prefetch(sp + 64);
       __builtin_prefetch(sp + 128);
       __builtin_prefetch(q.first + k + kAhead);
+      if constexpr (kStepStart) {  // and so is the trapezoidal rule's step-start tangential velocity
+        const char* vp = reinterpret_cast<const char*>(q.vt0 + k + kAhead);
+        __builtin_prefetch(vp);
+        __builtin_prefetch(vp + 64);
+        __builtin_prefetch(vp + 128);
+      }
     }
     // The first members' data and sums too (their index rises slowly: one group covers them).
     if (k + kAhead / 2 < k1) {

@@ -3,6 +3,8 @@
 #include "parallel/gather.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <iterator>
 #include <cmath>
 #include <type_traits>
 
@@ -115,6 +117,7 @@ void TrapezoidalIntegrator::restore_start(Particles& p) const {
 
 void TrapezoidalIntegrator::accept_midpoint(Particles& p) {
   const std::size_t n = p.size();
+  displacement2_ = -1.0;  // the positions move: the commit's evaluation checks them itself
   const bool rotation = params_.analysis.rotation;
   const bool thermal = params_.analysis.thermal;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
@@ -138,7 +141,7 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
   free_ = p.size();
   if (any_fixed_)
     for (std::size_t i = 0; i < p.size(); ++i) free_ -= p.fixed[i] ? 1 : 0;
-  predict(p, dt);
+  predict(p, dt, f.build_positions(p, b));
   if (req.phi > 0.0) {  // phi = 0 is explicit: the predictor is the end state
     rep.converged = false;
     for (int k = 1; k <= max_iter && !rep.converged; ++k) {
@@ -158,7 +161,8 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
   return rep;
 }
 
-TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double dt, bool predictor) {
+TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double dt, bool predictor,
+                                                          const Vec3* x_build) {
   const bool rotation = params_.analysis.rotation;
   const bool thermal = params_.analysis.thermal;
   // The end state from the end-of-step rates in the accumulators, into the arrays of the iterate
@@ -200,6 +204,7 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
     a.b_prev = history_.b_prev();
     a.stretch = dt / history_.dt();
   }
+  a.xb = x_build ? x_build : x0_.data();
   const std::size_t n = p.size();
   const auto swap_iterates = [&] {
     swap_in(p.x, xp_, n);
@@ -214,32 +219,42 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
     a.x2 = p.x.data(), a.v2 = p.v.data(), a.w2 = p.w.data(), a.alpha2 = alpha_.data(), a.T2 = p.T.data();
     constexpr std::size_t kChunk = 1024;  // particles per call
     const std::size_t chunks = (n + kChunk - 1) / kChunk;
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+    double far = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : far) if (n > kParallelThreshold)
     for (std::size_t c = 0; c < chunks; ++c)
       with_flag(rotation, [&](auto kRotates) {
         with_flag(thermal, [&](auto kThermal) {
           with_flag(any_fixed_, [&](auto kFixed) {
-            predict_range<kRotates(), kThermal(), kFixed()>(a, c * kChunk, std::min(n, (c + 1) * kChunk));
+            far = std::max(
+                far, predict_range<kRotates(), kThermal(), kFixed()>(a, c * kChunk, std::min(n, (c + 1) * kChunk)));
           });
         });
       });
+    displacement2_ = x_build ? far : -1.0;
     return {};
   }
+  std::atomic<double> far{0.0};
   const Sums sums = deterministic_block_sums<kUpdateSums>(n, [&](std::size_t lo, std::size_t hi, Sums& acc) {
     UpdateLanes lane = {};
+    FarLanes lane_far = {};
     with_flag(rotation, [&](auto kRotates) {
       with_flag(thermal, [&](auto kThermal) {
-        with_flag(any_fixed_, [&](auto kFixed) { update_range<kRotates(), kThermal(), kFixed()>(a, lo, hi, lane); });
+        with_flag(any_fixed_,
+                  [&](auto kFixed) { update_range<kRotates(), kThermal(), kFixed()>(a, lo, hi, lane, lane_far); });
       });
     });
     for (int k = 0; k < kUpdateSums; ++k)
       for (std::size_t l = 0; l < kUpdateLanes; ++l) acc[static_cast<std::size_t>(k)] += lane[k][l];
+    const double block_far = *std::max_element(std::begin(lane_far), std::end(lane_far));
+    for (double seen = far.load(std::memory_order_relaxed);
+         block_far > seen && !far.compare_exchange_weak(seen, block_far, std::memory_order_relaxed);) {}
   });
   swap_iterates();
+  displacement2_ = x_build ? far.load() : -1.0;
   return sums;
 }
 
-void TrapezoidalIntegrator::predict(Particles& p, double dt) {
+void TrapezoidalIntegrator::predict(Particles& p, double dt, const Vec3* x_build) {
   const std::size_t n = p.size();
   save_start(p);
   xp_.resize(n);
@@ -247,13 +262,14 @@ void TrapezoidalIntegrator::predict(Particles& p, double dt) {
   wp_.resize(n);
   alphap_.resize(n);
   Tp_.resize(n);
-  update(p, dt, true);
+  update(p, dt, true, x_build);
 }
 
 TrapezoidalIntegrator::Sums TrapezoidalIntegrator::iterate(Particles& p, Barriers& b, Interactions& f,
                                                            const EvalRequest& req) {
+  f.set_measured_displacement(displacement2_);
   f.evaluate(p, b, req);
-  return update(p, req.dt, false);
+  return update(p, req.dt, false, f.build_positions(p, b));
 }
 
 void TrapezoidalIntegrator::test_convergence(Particles& p, const Sums& local, int k, StepReport& rep) {
@@ -352,6 +368,7 @@ void TrapezoidalIntegrator::commit(Particles& p, Barriers& b, Interactions& f, c
   EvalRequest end = req;
   end.commit = true;
   end.iteration = 0;
+  f.set_measured_displacement(displacement2_);
   f.evaluate(p, b, end);
 }
 

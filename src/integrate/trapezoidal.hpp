@@ -43,15 +43,17 @@ class TrapezoidalIntegrator {
   using Sums = std::array<double, 4 * kFieldCount>;
 
   // The four stages of a step:
-  void predict(Particles& p, double dt);                                             // end state from the start rates
+  void predict(Particles& p, double dt, const Vec3* x_build);                        // end state from the start rates
   Sums iterate(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req);  // evaluate, update
   void test_convergence(Particles& p, const Sums& s, int k, StepReport& rep);        // sets rep.converged
   void commit(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req, const StepReport& rep);
   // After the last iteration failed: names the culprit and restores the start state.
   void reject(Particles& p, StepReport& rep) const;
 
-  Sums update(Particles& p, double dt, bool predictor);  // the end state (134)-(138)
-  void save_start(Particles& p);                         // takes the start state's arrays, see update()
+  // The end state (134)-(138); x_build: the lists' build positions (Interactions::build_positions,
+  // null: none), from which the pass measures displacement2_.
+  Sums update(Particles& p, double dt, bool predictor, const Vec3* x_build);
+  void save_start(Particles& p);  // takes the start state's arrays, see update()
   void restore_start(Particles& p) const;
   void accept_midpoint(Particles& p);  // y <- (y_K + y_(K-1)) / 2
 
@@ -62,6 +64,9 @@ class TrapezoidalIntegrator {
   // are free (the mechanical fields' norms are over those).
   bool any_fixed_ = false;
   std::size_t free_ = 0;
+  // m^2, the largest squared displacement of the positions in p.x from the lists' build positions,
+  // measured by the pass that wrote them and handed to the next evaluation; -1: not measured.
+  double displacement2_ = -1.0;
   // Start-of-step state and rates [N]
   std::vector<Vec3> x0_, v0_, w0_, a0_, b0_;  // m, m/s, rad/s, m/s^2, rad/s^2 (w0_: with rotation)
   std::vector<double> T0_, h0_;               // K, K/s (with heat transfer)

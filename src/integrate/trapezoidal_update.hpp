@@ -70,21 +70,32 @@ struct UpdateArrays {
   const Vec3* a_prev = nullptr;
   const Vec3* b_prev = nullptr;
   double stretch = 1.0;
+  // The neighbour lists' build positions [N] m, from which the passes measure the new positions'
+  // largest squared displacement (Interactions::set_measured_displacement); any array of the
+  // particles' positions when there is nothing to measure (the result is then not used).
+  const Vec3* xb = nullptr;
 };
+
+// Largest squared displacement per lane, m^2 (max is exact: its order does not matter).
+using FarLanes = double[kUpdateLanes];
 
 // The predictor over particles [lo, hi): the end state from the end rates extrapolated linearly
 // from the previous step's start rates, r(t) + stretch (r(t) - r(t - dt_prev)) (without a
 // history: the start rates), into the y_K arrays (the caller passes the state's); x, v, w, alpha
 // and T are not read. Without kThermal T2 is not written (the temperatures are not iterated).
+// Returns the new positions' largest squared displacement from xb (m^2).
 template <bool kRotates, bool kThermal, bool kFixed>
-void predict_range(const UpdateArrays& a, std::size_t lo, std::size_t hi) {
+double predict_range(const UpdateArrays& a, std::size_t lo, std::size_t hi) {
   const double dt = a.dt, phi = a.phi, keep = 1.0 - phi;
+  double far = 0.0;
   for (std::size_t i = lo; i < hi; ++i) {
     const bool held = kFixed && a.fixed[i] != 0;
     const Vec3 x0 = a.x0[i], v0 = a.v0[i], a0 = a.a0[i];
     const Vec3 a1 = a.a_prev ? a0 + a.stretch * (a0 - a.a_prev[i]) : a0;
     const Vec3 v = held ? v0 : v0 + dt * (keep * a0 + phi * a1);
-    a.x2[i] = held ? x0 + dt * v0 : x0 + dt * (keep * v0 + phi * v);
+    const Vec3 x = held ? x0 + dt * v0 : x0 + dt * (keep * v0 + phi * v);
+    far = std::max(far, norm2(x - a.xb[i]));
+    a.x2[i] = x;
     a.v2[i] = v;
     if constexpr (kRotates) {
       const Vec3 w0 = a.w0[i], b0 = a.b0[i];
@@ -95,6 +106,7 @@ void predict_range(const UpdateArrays& a, std::size_t lo, std::size_t hi) {
     }
     if constexpr (kThermal) a.T2[i] = a.T0[i] + dt * (keep * a.h0[i] + phi * a.h0[i]);
   }
+  return far;
 }
 
 // Component by component: a whole-Vec3 store keeps GCC from vectorising the update's loop.
@@ -109,7 +121,7 @@ inline void store(Vec3* __restrict p, const Vec3& v) {
 // iterated).
 template <bool kRotates, bool kThermal, bool kFixed>
 [[gnu::always_inline]] inline void update_particle(const UpdateArrays& a, std::size_t i, std::size_t l,
-                                                   UpdateLanes& lane) {
+                                                   UpdateLanes& lane, FarLanes& far) {
   const double dt = a.dt, phi = a.phi, keep = 1.0 - phi;
   const bool held = kFixed && a.fixed[i] != 0;
   // The mechanical norms count the free particles.
@@ -128,6 +140,7 @@ template <bool kRotates, bool kThermal, bool kFixed>
   add(4 * Field::kVelocity + 1, norm2(v - v0));
   add(4 * Field::kVelocity + 2, norm2(v - a.v2[i]));
   add(4 * Field::kVelocity + 3, norm2(v));
+  far[l] = std::max(far[l], norm2(x - a.xb[i]));
   store(a.x2 + i, x);
   store(a.v2 + i, v);
   if constexpr (kRotates) {
@@ -164,15 +177,15 @@ template <bool kRotates, bool kThermal, bool kFixed>
 }
 
 // One iteration's update of particles [lo, hi), each particle's norm terms in the lane of its
-// position within a group of kUpdateLanes: whole groups (a loop of constant length, which
-// vectorises), then the rest.
+// position within a group of kUpdateLanes, and the new positions' largest squared displacement
+// from xb into far: whole groups (a loop of constant length, which vectorises), then the rest.
 template <bool kRotates, bool kThermal, bool kFixed>
-void update_range(const UpdateArrays& a, std::size_t lo, std::size_t hi, UpdateLanes& lane) {
+void update_range(const UpdateArrays& a, std::size_t lo, std::size_t hi, UpdateLanes& lane, FarLanes& far) {
   std::size_t i0 = lo;
   for (; i0 + kUpdateLanes <= hi; i0 += kUpdateLanes)
 #pragma GCC ivdep
-    for (std::size_t l = 0; l < kUpdateLanes; ++l) update_particle<kRotates, kThermal, kFixed>(a, i0 + l, l, lane);
-  for (std::size_t l = 0; i0 < hi; ++i0, ++l) update_particle<kRotates, kThermal, kFixed>(a, i0, l, lane);
+    for (std::size_t l = 0; l < kUpdateLanes; ++l) update_particle<kRotates, kThermal, kFixed>(a, i0 + l, l, lane, far);
+  for (std::size_t l = 0; i0 < hi; ++i0, ++l) update_particle<kRotates, kThermal, kFixed>(a, i0, l, lane, far);
 }
 
 }  // namespace mpdem

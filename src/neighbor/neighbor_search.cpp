@@ -17,6 +17,12 @@ bool NeighborSearch::needs_rebuild(const Particles& p, const Barriers& b) const 
   return broad_.needs_rebuild(b, list_.max_displacement(p.x));
 }
 
+bool NeighborSearch::needs_rebuild(const Particles& p, const Barriers& b, double max2) const {
+  if (stale(p) || list_.size() != p.size_with_ghosts() || broad_.num_elements() != b.size()) return true;
+  if (b.size() == 0) return list_.needs_rebuild(max2);
+  return !list_.built() || broad_.needs_rebuild(b, std::sqrt(max2));  // max_displacement's value
+}
+
 void NeighborSearch::rebuild(Particles& p, const Barriers& b, const std::function<void()>& after_list) {
   p.drop_ghosts();
   build(p, p.x, b, after_list);

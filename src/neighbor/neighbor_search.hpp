@@ -47,6 +47,9 @@ class NeighborSearch {
 
   // The particles changed in count (or lost their ghosts) since the build, or moved too far.
   bool needs_rebuild(const Particles& p, const Barriers& b) const;
+  // The same, for the owned particles' largest squared displacement from the build positions
+  // max2 (m^2), measured by the pass that wrote p.x (the trapezoidal rule's predictor and updates).
+  bool needs_rebuild(const Particles& p, const Barriers& b, double max2) const;
   bool stale(const Particles& p) const {
     return list_.owned() != p.size() || (halo_ ? halo_->size() : images_.size()) != p.n_ghost;
   }

@@ -340,8 +340,7 @@ double VerletList::max_displacement(std::span<const Vec3> x) const {
 bool VerletList::needs_rebuild(std::span<const Vec3> x) const {
   // Compared squared so the threshold is exact: rebuild iff some |dx_i|^2 > (skin/2)^2.
   if (!built_ || (x.size() != x_build_.size() && x.size() != owned_)) return true;
-  const double half = 0.5 * skin_;
-  const double limit2 = half * half;
+  const double limit2 = half_skin2();
   bool exceeded = false;
   const std::size_t n = owned_;
 #pragma omp parallel for schedule(static) reduction(|| : exceeded) if (n >= kNeighborParallelMin)

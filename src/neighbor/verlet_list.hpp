@@ -66,8 +66,12 @@ class VerletList {
   // True when some particle has moved strictly more than skin/2 since the build (or the count
   // changed, or the list was never built).
   bool needs_rebuild(std::span<const Vec3> x) const;
+  // The same rule for a largest squared displacement max2 (m^2) measured elsewhere.
+  bool needs_rebuild(double max2) const { return !built_ || max2 > half_skin2(); }
+  bool built() const { return built_; }  // false before the first build and after release_build_positions
 
   double skin() const { return skin_; }                                  // m
+  double half_skin2() const { return (0.5 * skin_) * (0.5 * skin_); }    // m^2, the rebuild threshold squared
   const std::vector<Vec3>& build_positions() const { return x_build_; }  // [N] m, at the last build (owned first)
   double extra_range() const { return extra_; }                          // m
   double max_radius() const { return max_radius_; }                      // m, at build

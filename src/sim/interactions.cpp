@@ -186,6 +186,10 @@ bool Interactions::drift_within(const Particles& p, double dt, double limit, boo
   return beyond == 0;
 }
 
+const Vec3* Interactions::build_positions(const Particles& p, const Barriers& b) const {
+  return stale(p, b) || !search_->pairs().built() ? nullptr : search_->pairs().build_positions().data();
+}
+
 bool Interactions::rebuild_due(const Particles& p, const Barriers& b, double dt) const {
   const VerletList& list = search_->pairs();
   const std::size_t n = p.size();
@@ -232,8 +236,13 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     // anything do so on one rank, the ranks would disagree on the collective, hence the throw.
     if (comm_ && known >= 0.0 && !checked)
       throw std::logic_error("Interactions::evaluate: the particles changed since prepare_step");
-    const bool due = checked ? b.size() > 0 && search_->barrier_candidates().needs_rebuild(b, known)
-                             : any_rank(search_->needs_rebuild(p, b));
+    // Otherwise the particles are checked here, from the displacement the integrator measured
+    // when it wrote their positions (set_measured_displacement), or by a pass of their own.
+    const double measured = measured_displacement2_;
+    measured_displacement2_ = -1.0;
+    const bool due = checked           ? b.size() > 0 && search_->barrier_candidates().needs_rebuild(b, known)
+                     : measured >= 0.0 ? any_rank(search_->needs_rebuild(p, b, measured))
+                                       : any_rank(search_->needs_rebuild(p, b));
     if (due) {
       rebuild(p, b, false);
       ++mid_step_rebuilds_;

@@ -118,6 +118,13 @@ class Interactions {
   };
   DriftCheck next_drift_check(const Particles& p, const Barriers& b, double dt) const;
   void record_next_drift(const DriftCheck& c, const Particles& p, std::size_t beyond);
+  // The list check of an evaluation, for an integrator whose pass writes the positions it will
+  // see (the trapezoidal rule's predictor and updates): that pass measures the largest squared
+  // displacement (m^2) of the owned particles from build_positions() [N] (null: stale lists, no
+  // measurement) and hands it over just before the evaluation, which then needs no pass of its
+  // own over the particles. Consumed by that evaluation; -1: not measured.
+  const Vec3* build_positions(const Particles& p, const Barriers& b) const;
+  void set_measured_displacement(double max2) { measured_displacement2_ = max2; }
   // Fills force, torque, heat of every particle (and the barriers' loads) for the current state.
   // Never reorders. Should the particles have moved beyond what prepare_step foresaw, it rebuilds
   // the lists in place first (counted by mid_step_rebuilds()).
@@ -227,6 +234,7 @@ class Interactions {
   // m, bound on the particles' displacement since the build at the next evaluation, set by
   // prepare_step when the step's drift is known (StepPolicy::drift_known); -1: unknown.
   double predicted_displacement_ = -1.0;
+  double measured_displacement2_ = -1.0;  // m^2, set_measured_displacement's; -1: none
   // The integrator's check of the coming step (record_next_drift), valid until the state, the
   // forces or the lists change (an evaluation, a rebuild, a removal, a restore).
   struct NextDrift {

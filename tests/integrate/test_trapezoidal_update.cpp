@@ -3,8 +3,10 @@
 // particle count that leaves a partial group of lanes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <vector>
 
 #include "integrate/trapezoidal_update.hpp"
@@ -64,10 +66,14 @@ struct Arrays {
     return a;
   }
   UpdateArrays view() {
-    return {x.data(),      v.data(),      w.data(),        alpha.data(),    T.data(),      xp.data(),   vp.data(),
-            wp.data(),     alphap.data(), Tp.data(),       x0.data(),       v0.data(),     w0.data(),   T0.data(),
-            a0.data(),     b0.data(),     h0.data(),       force.data(),    torque.data(), mass.data(), inertia.data(),
-            radius.data(), heat.data(),   material.data(), capacity.data(), fixed.data(),  kDt,         kPhi};
+    return {x.data(),        v.data(),      w.data(),      alpha.data(),
+            T.data(),        xp.data(),     vp.data(),     wp.data(),
+            alphap.data(),   Tp.data(),     x0.data(),     v0.data(),
+            w0.data(),       T0.data(),     a0.data(),     b0.data(),
+            h0.data(),       force.data(),  torque.data(), mass.data(),
+            inertia.data(),  radius.data(), heat.data(),   material.data(),
+            capacity.data(), fixed.data(),  kDt,           kPhi,
+            nullptr,         nullptr,       1.0,           x0.data()};
   }
 };
 
@@ -77,7 +83,11 @@ double rel(const Vec3& a, const Vec3& b) { return norm(a - b) / std::max(norm(b)
 
 TEST(TrapezoidalUpdate, PredictorAndIterationFollowTheClosedForm) {
   Arrays s;
-  predict_range<true, false, true>(s.predictor_view(), 0, kN);
+  const double predicted_far = predict_range<true, false, true>(s.predictor_view(), 0, kN);
+  double direct_far = 0.0;  // the largest squared displacement from xb (= x0 here)
+  for (std::size_t i = 0; i < kN; ++i) direct_far = std::max(direct_far, norm2(s.x[i] - s.x0[i]));
+  EXPECT_EQ(predicted_far, direct_far);
+  EXPECT_GT(direct_far, 0.0);
   for (std::size_t i = 0; i < kN; ++i) {
     if (i == 5) continue;
     // Constant rates over the step: v = v0 + dt a0, x = x0 + dt v0 + phi dt^2 a0.
@@ -90,8 +100,12 @@ TEST(TrapezoidalUpdate, PredictorAndIterationFollowTheClosedForm) {
   EXPECT_EQ(s.x[5], s.x0[5] + kDt * s.v0[5]);
   EXPECT_EQ(s.v[5], s.v0[5]);
   UpdateLanes lane = {};
-  update_range<true, false, true>(s.view(), 0, kN, lane);
+  FarLanes far = {};
+  update_range<true, false, true>(s.view(), 0, kN, lane, far);
   s.swap_iterates(false);
+  direct_far = 0.0;
+  for (std::size_t i = 0; i < kN; ++i) direct_far = std::max(direct_far, norm2(s.x[i] - s.x0[i]));
+  EXPECT_EQ(*std::max_element(std::begin(far), std::end(far)), direct_far);
   double dx2 = 0.0, dv2 = 0.0, xx02 = 0.0, dalpha2 = 0.0, dw2 = 0.0;  // direct sums over the free particles
   for (std::size_t i = 0; i < kN; ++i) {
     if (i == 5) continue;
@@ -131,7 +145,8 @@ TEST(TrapezoidalUpdate, FixedParticleKeepsItsVelocityAndStaysOutOfTheNorms) {
   predict_range<true, true, true>(s.predictor_view(), 0, kN);
   for (std::size_t i = 0; i < kN; ++i) EXPECT_NEAR(s.T[i], s.T0[i] + kDt * s.h0[i], 1e-12) << i;
   UpdateLanes lane = {};
-  update_range<true, true, true>(s.view(), 0, kN, lane);
+  FarLanes far = {};
+  update_range<true, true, true>(s.view(), 0, kN, lane, far);
   s.swap_iterates(true);
   for (std::size_t i = 0; i < kN; ++i) {
     EXPECT_EQ(s.v[i], s.v0[i]);
@@ -153,9 +168,10 @@ TEST(TrapezoidalUpdate, FixedParticleKeepsItsVelocityAndStaysOutOfTheNorms) {
 TEST(TrapezoidalUpdate, SplitRangesGiveTheSameStates) {
   Arrays one, two;
   UpdateLanes a = {}, b = {}, c = {};
-  update_range<true, true, false>(one.view(), 0, kN, a);
-  update_range<true, true, false>(two.view(), 0, 517, b);
-  update_range<true, true, false>(two.view(), 517, kN, c);
+  FarLanes fa = {}, fb = {}, fc = {};
+  update_range<true, true, false>(one.view(), 0, kN, a, fa);
+  update_range<true, true, false>(two.view(), 0, 517, b, fb);
+  update_range<true, true, false>(two.view(), 517, kN, c, fc);
   one.swap_iterates(true);
   two.swap_iterates(true);
   for (std::size_t i = 0; i < kN; ++i) {

@@ -137,6 +137,36 @@ void expect_forces_match(Interactions& in, Scene& s, double L, const char* when)
   EXPECT_EQ(in.stats().contacts_pp, brute_pairs(p, 0.0).size()) << when;
 }
 
+// The rebuild decision from a displacement measured elsewhere (the trapezoidal rule's passes,
+// Interactions::set_measured_displacement) is the search's own on both sides of the threshold:
+// with barriers (whose rule takes the displacement itself) and without (the squared rule).
+TEST(NeighborEngine, MeasuredDisplacementGivesTheSearchsOwnDecision) {
+  const double r0 = 1e-3, L = 0.08, skin = 0.2 * r0;  // m
+  Scene s = random_cloud(300, r0, L, 3);
+  Particles& p = s.particles;
+  resolve_material_variants(s.model, p, s.barriers, "");
+  const Barriers none;
+  for (const Barriers* b : std::vector<const Barriers*>{&s.barriers, &none}) {
+    NeighborSearch ns(skin, 0.0);
+    ns.rebuild(p, *b);
+    const std::vector<Vec3> x_build = ns.pairs().build_positions();
+    std::set<bool> seen;
+    for (const double f : {0.5, 1.0 - 1e-15, 1.0, 1.0 + 1e-15, 1.0 + 1e-9, 2.0}) {
+      Particles q = p;
+      q.x[17] = x_build[17] + Vec3{0.5 * skin * f, 0.0, 0.0};
+      double max2 = 0.0;
+      for (std::size_t i = 0; i < q.size(); ++i) max2 = std::max(max2, norm2(q.x[i] - x_build[i]));
+      const bool own = ns.needs_rebuild(q, *b);
+      EXPECT_EQ(ns.needs_rebuild(q, *b, max2), own) << "displacement " << f << " x skin/2";
+      seen.insert(own);
+    }
+    EXPECT_EQ(seen.size(), 2u) << "both decisions occur";
+    Particles more = p;  // a particle added since the build: stale whatever the displacement
+    more.add(100000, 0, r0, 1000.0, {0.5 * L, 0.5 * L, 0.5 * L}, {});
+    EXPECT_TRUE(ns.needs_rebuild(more, *b, 0.0));
+  }
+}
+
 TEST(NeighborEngine, ListsAndContactsEqualBruteForceAcrossRebuilds) {
   const double r0 = 1e-3, L = 0.08;  // m
   Scene s = random_cloud(1200, r0, L, 11);

@@ -1,8 +1,9 @@
 #pragma once
 // The trapezoidal rule's end-state update (physics.md section 9, thesis (134)-(138)) over a range
-// of particles, with the convergence norms' terms, written so that it vectorises: plain restrict
-// pointers, no call, selects instead of branches, and one partial sum per vector lane (added in
-// lane order by the caller, so the sums do not depend on the thread count).
+// of particles, with the convergence norms' terms, written so that it vectorises: restrict
+// pointers (and `GCC ivdep`, since GCC ignores restrict on struct members), no call, selects
+// instead of branches, and one partial sum per vector lane (added in lane order by the caller, so
+// the sums do not depend on the thread count).
 //
 // Per particle, from the start state (x0, v0, w0, T0) and rates (a0, b0, h0) and the end rates
 // a1 = F/m, b1 = M/I, h1 (for the predictor: a0 and b0 extrapolated from the previous step's

@@ -10,15 +10,19 @@
 
 namespace mpdem {
 
+bool NeighborSearch::lists_mismatch(const Particles& p, const Barriers& b) const {
+  return stale(p) || list_.size() != p.size_with_ghosts() || broad_.num_elements() != b.size();
+}
+
 bool NeighborSearch::needs_rebuild(const Particles& p, const Barriers& b) const {
-  if (stale(p) || list_.size() != p.size_with_ghosts() || broad_.num_elements() != b.size()) return true;
+  if (lists_mismatch(p, b)) return true;
   // One pass over the particles: the barrier rule needs the displacement itself.
   if (b.size() == 0) return list_.needs_rebuild(p.x);
   return broad_.needs_rebuild(b, list_.max_displacement(p.x));
 }
 
 bool NeighborSearch::needs_rebuild(const Particles& p, const Barriers& b, double max2) const {
-  if (stale(p) || list_.size() != p.size_with_ghosts() || broad_.num_elements() != b.size()) return true;
+  if (lists_mismatch(p, b)) return true;
   if (b.size() == 0) return list_.needs_rebuild(max2);
   return !list_.built() || broad_.needs_rebuild(b, std::sqrt(max2));  // max_displacement's value
 }

@@ -113,6 +113,9 @@ class NeighborSearch {
   double skin() const { return skin_; }
 
  private:
+  // The particles or elements changed in count (or lost their ghosts) since the build.
+  bool lists_mismatch(const Particles& p, const Barriers& b) const;
+
   double skin_;
   double extra_;
   PeriodicImages images_;

@@ -116,22 +116,41 @@ class Scene:
         return files
 
     def _engine_input(self, scratch):
-        """(file, text, name) for the engine: the file itself when the scene is as read, else the
-        TOML text standing for a file in self.dir, its array sources written to `scratch`."""
+        """(file, text, name, sources) for the engine: the file itself when the scene is as read,
+        else the TOML text standing for a file in self.dir, its array sources written to
+        `scratch` (sources: each such CSV file's path -> (table, entry index))."""
         if self._file is not None and self.data == self._as_read and not any(self._arrays.values()):
-            return str(self._file), None, ""
+            return str(self._file), None, "", {}
         files = self._write_arrays(Path(scratch), "scene", relative=False)
         name = f"{self.name} (built in Python)" if self._file is None else f"{self._file} (changed in Python)"
-        return str(self.dir / f"{Path(self.name).stem}.toml"), dumps(self._document(files)), name
+        sources = {path: (kind, k) for kind, by_entry in files.items() for k, path in by_entry.items()}
+        return str(self.dir / f"{Path(self.name).stem}.toml"), dumps(self._document(files)), name, sources
+
+    def _engine_call(self, scratch, call):
+        """(call(file, text, name), sources) on the engine's input (_engine_input). An InputError in an array
+        source is raised again naming the builder call and row instead of the temporary CSV file
+        it was passed in (which the user never saw, and which is deleted)."""
+        file, text, name, sources = self._engine_input(scratch)
+        try:
+            return call(file, text, name), sources
+        except _core.InputError as e:
+            where = sources.get(getattr(e, "file", None))
+            if where is None:
+                raise
+            raise _array_source_error(e, name, *where) from None
 
     def check(self):
         """The problems `mpdem check` reports, as (stops_run, message) pairs; raises InputError
-        for bad input, as Simulation(scene) would."""
+        for bad input, as Simulation(scene) would. An array source is named as its builder call
+        ("particles entry 1"), not by the temporary CSV file it was passed in."""
         import tempfile
 
         with tempfile.TemporaryDirectory() as scratch:
-            file, text, name = self._engine_input(scratch)
-            return _core.check(file, text, name)
+            problems, sources = self._engine_call(scratch, _core.check)
+        for path, (table, entry) in sources.items():
+            problems = [(stop, msg.replace(path, f"{table} entry {entry}")
+                         .replace(f"'{Path(path).name}'", f"{table} entry {entry}")) for stop, msg in problems]
+        return problems
 
     # --- tables ----------------------------------------------------------------------------------
 
@@ -268,6 +287,27 @@ class Scene:
         if tri is not None:
             self._arrays["barriers"][k] = tri
         return self
+
+
+def input_error(message, key, file="", line=0):
+    """An mpdem.InputError (a ValueError) with the attributes the engine's carry."""
+    err = _core.InputError(message)
+    err.file, err.line, err.key = file, line, key
+    return err
+
+
+def _array_source_error(e, scene_name, table, entry):
+    """The InputError `e`, raised in the CSV file of array source `entry` of `table`, as one naming
+    that source and its row: "particles entry 2, row 0: 'radius': ..." (row k is line k + 2 of
+    the file: the header comes first)."""
+    line = int(e.line)
+    prefix = f"{e.file}:{line}: " if line > 0 else f"{e.file}: "
+    what = str(e)[len(prefix):] if str(e).startswith(prefix) else str(e)
+    row = line - 2 if line >= 2 else None
+    place = f"{table} entry {entry}" + (f", row {row}" if row is not None else "")
+    err = input_error(f"{scene_name}: {place}: {what}", e.key, file=scene_name)
+    err.entry, err.row = (table, entry), row
+    return err
 
 
 def _write_particle_csv(path, arrays):

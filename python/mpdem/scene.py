@@ -256,9 +256,9 @@ class Scene:
                 if a is not None:
                     arrays[name] = np.broadcast_to(np.asarray(a, dtype=float), shape)
             if id is not None:
-                arrays["id"] = np.asarray(id, dtype=np.int64).reshape(n)
+                arrays["id"] = integers("id", id).reshape(n)
             if fixed is not None and not isinstance(fixed, bool):
-                arrays["fixed"] = np.broadcast_to(np.asarray(fixed, dtype=np.int64), (n,))
+                arrays["fixed"] = np.broadcast_to(integers("fixed", fixed), (n,))
                 fixed = None
             if material is not None and not isinstance(material, str):
                 arrays["material"] = np.asarray(material).reshape(n)
@@ -281,7 +281,7 @@ class Scene:
                 raise ValueError("barriers: give vertices, a file or an stl, not several")
             tri = {"vertices": np.asarray(vertices, dtype=float).reshape(-1, 3, 3)}
             if id is not None:
-                tri["id"] = np.asarray(id, dtype=np.int64).reshape(len(tri["vertices"]))
+                tri["id"] = integers("id", id).reshape(len(tri["vertices"]))
         entry = dict(file=file, stl=stl, **keys)
         k = self._add("barriers", entry)
         if tri is not None:
@@ -294,6 +294,23 @@ def input_error(message, key, file="", line=0):
     err = _core.InputError(message)
     err.file, err.line, err.key = file, line, key
     return err
+
+
+def integers(key, values):
+    """`values` as an int64 array; a value that is not a whole number (1.5, nan, "a") is refused
+    (InputError naming `key`), not truncated."""
+    a = np.asarray(values)
+    if a.dtype.kind in "iub":
+        return a.astype(np.int64)
+    try:
+        f = np.asarray(a, dtype=float)
+        whole = np.isfinite(f) & (f == np.floor(f)) & (np.abs(f) < 2.0**63)
+    except (TypeError, ValueError):
+        f, whole = a, np.zeros(a.shape, dtype=bool)
+    if not np.all(whole):
+        bad = f[~whole].reshape(-1)[0] if f.ndim else f
+        raise input_error(f"'{key}': expected whole numbers, got {bad!r}", key)
+    return f.astype(np.int64)
 
 
 def _array_source_error(e, scene_name, table, entry):

@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from . import _core
-from .scene import _scene_of, input_error
+from .scene import _scene_of, input_error, integers
 
 __all__ = ["Simulation", "Particles"]
 
@@ -39,14 +39,14 @@ class Particles:
     def set(self, name, values, ids=None):
         """Sets `name` (position, velocity, angular_velocity, temperature) for the particles
         `ids` (values in that order), or for all particles in id order when ids is None."""
-        self._core.set(name, np.asarray(values, dtype=float), None if ids is None else np.asarray(ids, dtype=np.int64))
+        self._core.set(name, np.asarray(values, dtype=float), None if ids is None else integers("ids", ids))
 
     def add_force(self, ids, force=None, torque=None):
         """Adds force (N) and torque (N m, about the centre) to the particles `ids` at every
         evaluation from now on, on top of contacts and fields, until set again or cleared: rows of
         (3,) in the order of `ids` (one row: the same for all). A zero row removes a particle's
         load. Their work enters the energy balance (log: total_energy). Not in checkpoints."""
-        ids = np.atleast_1d(np.asarray(ids, dtype=np.int64))
+        ids = np.atleast_1d(integers("ids", ids))
         n = len(ids)
         f = np.zeros((n, 3)) if force is None else np.broadcast_to(np.asarray(force, dtype=float), (n, 3))
         t = np.zeros((n, 3)) if torque is None else np.broadcast_to(np.asarray(torque, dtype=float), (n, 3))
@@ -277,7 +277,7 @@ class Simulation:
             if a is not None:
                 arrays[name] = np.broadcast_to(np.asarray(a, dtype=float), shape)
         if id is not None:
-            arrays["id"] = np.asarray(id, dtype=np.int64).reshape(n)
+            arrays["id"] = integers("id", id).reshape(n)
         mats = self._material_indices(material, n)
         if mats is not None:
             arrays["material"] = mats
@@ -286,7 +286,7 @@ class Simulation:
     def remove_particles(self, ids):
         """Removes the particles `ids` between steps (written to removed.csv; an unknown id is an
         InputError); the others' contact history is kept."""
-        self._core.remove_particles(np.atleast_1d(np.asarray(ids, dtype=np.int64)))
+        self._core.remove_particles(np.atleast_1d(integers("ids", ids)))
 
 
 # Arguments are checked at the call, each class of value alike: an InputError (a ValueError)

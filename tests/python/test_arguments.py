@@ -19,6 +19,7 @@ def refused(key, call):
         call()
     assert isinstance(e.value, ValueError)
     assert e.value.key == key and f"'{key}'" in str(e.value), str(e.value)
+    assert not str(e.value).startswith(":"), str(e.value)  # no empty file name in front
     return str(e.value)
 
 
@@ -126,3 +127,22 @@ def test_check_names_array_sources_by_their_builder_call(tmp_path):
     s.particles([[0.005, 0.005, 0.02], [0.0055, 0.005, 0.02]], [1e-3, 1e-3], material="glass")  # overlap
     problems = [msg for stops, msg in s.check() if stops and "overlap" in msg]
     assert problems and all("particles entry 1" in m and ".csv" not in m for m in problems), problems
+
+
+def test_ids_and_flags_are_whole_numbers(sim, tmp_path):
+    """An id or flag given as a float is refused, not truncated to another particle's id."""
+    first = int(sim.particles.id[0])  # 5: 5.5 would be truncated to it
+    n, v = len(sim.particles), sim.particles.velocity
+    refused("ids", lambda: sim.particles.set("velocity", [[0.0, 0.0, 1.0]], ids=[first + 0.5]))
+    refused("ids", lambda: sim.remove_particles([first + 0.5]))
+    refused("ids", lambda: sim.particles.add_force([first + 0.5], [0.0, 0.0, 1e-5]))
+    refused("ids", lambda: sim.remove_particles([NAN]))
+    refused("id", lambda: sim.add_particles([[0.015, 0.015, 0.02]], 1e-3, id=[1000.5]))
+    assert len(sim.particles) == n and np.array_equal(sim.particles.velocity, v)
+    sim.remove_particles([float(first)])  # a whole float is a whole number
+    assert len(sim.particles) == n - 1
+
+    s = mpdem.Scene(dir=tmp_path)
+    refused("id", lambda: s.particles([[0.0, 0.0, 0.0]], 1e-3, id=[1.5]))
+    refused("fixed", lambda: s.particles([[0.0, 0.0, 0.0]], 1e-3, fixed=[0.5]))
+    refused("id", lambda: s.barriers(np.zeros((1, 3, 3)), id=[0.25]))

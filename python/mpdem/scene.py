@@ -127,9 +127,9 @@ class Scene:
         return str(self.dir / f"{Path(self.name).stem}.toml"), dumps(self._document(files)), name, sources
 
     def _engine_call(self, scratch, call):
-        """(call(file, text, name), sources) on the engine's input (_engine_input). An InputError in an array
-        source is raised again naming the builder call and row instead of the temporary CSV file
-        it was passed in (which the user never saw, and which is deleted)."""
+        """(call(file, text, name), sources) on the engine's input (_engine_input). An InputError
+        in an array source is raised again naming the builder call and row instead of the
+        temporary CSV file it was passed in (which the user never saw, and which is deleted)."""
         file, text, name, sources = self._engine_input(scratch)
         try:
             return call(file, text, name), sources

@@ -247,18 +247,18 @@ class Scene:
         if position is not None:
             if file is not None or generate is not None:
                 raise ValueError("particles: give arrays, a file or generate, not several")
-            n = len(np.asarray(position))
-            arrays = {"position": np.asarray(position, dtype=float).reshape(n, 3),
-                      "radius": np.broadcast_to(np.asarray(radius, dtype=float), (n,))}
+            x = numbers("position", position, (-1, 3), reshape=True)
+            n = len(x)
+            arrays = {"position": x, "radius": numbers("radius", radius, (n,))}
             for name, a, shape in (("velocity", velocity, (n, 3)), ("angular_velocity", angular_velocity, (n, 3)),
                                    ("temperature", temperature, (n,)), ("charge", charge, (n,)),
                                    ("density", density, (n,))):
                 if a is not None:
-                    arrays[name] = np.broadcast_to(np.asarray(a, dtype=float), shape)
+                    arrays[name] = numbers(name, a, shape)
             if id is not None:
-                arrays["id"] = integers("id", id).reshape(n)
+                arrays["id"] = numbers("id", id, (n,), whole=True, reshape=True)
             if fixed is not None and not isinstance(fixed, bool):
-                arrays["fixed"] = np.broadcast_to(integers("fixed", fixed), (n,))
+                arrays["fixed"] = numbers("fixed", fixed, (n,), whole=True)
                 fixed = None
             if material is not None and not isinstance(material, str):
                 arrays["material"] = np.asarray(material).reshape(n)
@@ -279,9 +279,9 @@ class Scene:
         if vertices is not None:
             if file is not None or stl is not None:
                 raise ValueError("barriers: give vertices, a file or an stl, not several")
-            tri = {"vertices": np.asarray(vertices, dtype=float).reshape(-1, 3, 3)}
+            tri = {"vertices": numbers("vertices", vertices, (-1, 3, 3), reshape=True)}
             if id is not None:
-                tri["id"] = integers("id", id).reshape(len(tri["vertices"]))
+                tri["id"] = numbers("id", id, (len(tri["vertices"]),), whole=True, reshape=True)
         entry = dict(file=file, stl=stl, **keys)
         k = self._add("barriers", entry)
         if tri is not None:
@@ -311,6 +311,27 @@ def integers(key, values):
         bad = f[~whole].reshape(-1)[0] if f.ndim else f
         raise input_error(f"'{key}': expected whole numbers, got {bad!r}", key)
     return f.astype(np.int64)
+
+
+def numbers(key, value, shape, whole=False, reshape=False):
+    """`value` as an array of `shape`: floats (whole: int64, see integers()), one value or row
+    broadcast to all (reshape: reshaped instead, e.g. a flat list of 3 N coordinates; a -1 in
+    `shape` takes the rows the values make; None: any shape). An InputError naming `key` when the
+    values are not numbers or do not fit the shape."""
+    if whole:
+        a = integers(key, value)
+    else:
+        try:
+            a = np.asarray(value, dtype=float)
+        except (TypeError, ValueError):
+            raise input_error(f"'{key}': expected numbers, got {type(value).__name__} {value!r:.80}", key) from None
+    if shape is None:  # the callee checks the shape
+        return a
+    try:
+        return a.reshape(shape) if reshape else np.broadcast_to(a, shape)
+    except ValueError:
+        want = "(" + ", ".join("N" if d == -1 else str(d) for d in shape) + ("," if len(shape) == 1 else "") + ")"
+        raise input_error(f"'{key}': expected an array of shape {want}, got one of shape {a.shape}", key) from None
 
 
 def _array_source_error(e, scene_name, table, entry):

@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from . import _core
-from .scene import _scene_of, input_error, integers
+from .scene import _scene_of, input_error, integers, numbers
 
 __all__ = ["Simulation", "Particles"]
 
@@ -39,7 +39,7 @@ class Particles:
     def set(self, name, values, ids=None):
         """Sets `name` (position, velocity, angular_velocity, temperature) for the particles
         `ids` (values in that order), or for all particles in id order when ids is None."""
-        self._core.set(name, np.asarray(values, dtype=float), None if ids is None else integers("ids", ids))
+        self._core.set(name, numbers(name, values, None), None if ids is None else integers("ids", ids))
 
     def add_force(self, ids, force=None, torque=None):
         """Adds force (N) and torque (N m, about the centre) to the particles `ids` at every
@@ -48,8 +48,8 @@ class Particles:
         load. Their work enters the energy balance (log: total_energy). Not in checkpoints."""
         ids = np.atleast_1d(integers("ids", ids))
         n = len(ids)
-        f = np.zeros((n, 3)) if force is None else np.broadcast_to(np.asarray(force, dtype=float), (n, 3))
-        t = np.zeros((n, 3)) if torque is None else np.broadcast_to(np.asarray(torque, dtype=float), (n, 3))
+        f = np.zeros((n, 3)) if force is None else numbers("force", force, (n, 3))
+        t = np.zeros((n, 3)) if torque is None else numbers("torque", torque, (n, 3))
         self._core.add_loads(ids, np.ascontiguousarray(f), np.ascontiguousarray(t))
 
     def clear_forces(self):
@@ -259,8 +259,8 @@ class Simulation:
                     raise input_error(f"'material': no material '{v}' (materials: {', '.join(names)})", "material")
                 out[k] = names.index(v)
             else:
-                out[k] = float(v)
-        return np.broadcast_to(out, (n,))
+                out[k] = numbers("material", v, ())
+        return numbers("material", out, (n,))
 
     def add_particles(self, position, radius, velocity=None, angular_velocity=None, material=None, id=None,
                       temperature=None, charge=None, fixed=None):
@@ -269,15 +269,15 @@ class Simulation:
         angular_velocity (N, 3), material (a name or index, or N of them; default the first
         material), temperature (K) and charge (C) default to the material's, fixed (N,) 0/1.
         The others' contact history is kept; no overlap check is made."""
-        position = np.asarray(position, dtype=float).reshape(-1, 3)
+        position = numbers("position", position, (-1, 3), reshape=True)
         n = len(position)
-        arrays = {"position": position, "radius": np.broadcast_to(np.asarray(radius, dtype=float), (n,))}
+        arrays = {"position": position, "radius": numbers("radius", radius, (n,))}
         for name, a, shape in (("velocity", velocity, (n, 3)), ("angular_velocity", angular_velocity, (n, 3)),
                                ("temperature", temperature, (n,)), ("charge", charge, (n,)), ("fixed", fixed, (n,))):
             if a is not None:
-                arrays[name] = np.broadcast_to(np.asarray(a, dtype=float), shape)
+                arrays[name] = numbers(name, a, shape)
         if id is not None:
-            arrays["id"] = integers("id", id).reshape(n)
+            arrays["id"] = numbers("id", id, (n,), whole=True, reshape=True)
         mats = self._material_indices(material, n)
         if mats is not None:
             arrays["material"] = mats

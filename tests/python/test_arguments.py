@@ -146,3 +146,18 @@ def test_ids_and_flags_are_whole_numbers(sim, tmp_path):
     refused("id", lambda: s.particles([[0.0, 0.0, 0.0]], 1e-3, id=[1.5]))
     refused("fixed", lambda: s.particles([[0.0, 0.0, 0.0]], 1e-3, fixed=[0.5]))
     refused("id", lambda: s.barriers(np.zeros((1, 3, 3)), id=[0.25]))
+
+
+def test_arrays_of_the_wrong_shape_or_not_numbers_name_their_argument(sim, tmp_path):
+    at = [[0.015, 0.015, 0.02], [0.015, 0.0, 0.02]]
+    refused("velocity", lambda: sim.add_particles(at, 1e-3, velocity=[[0, 0, 1]] * 3))
+    refused("radius", lambda: sim.add_particles(at, [1e-3, 1e-3, 1e-3]))
+    refused("position", lambda: sim.add_particles([0.0, 0.1], 1e-3))
+    refused("material", lambda: sim.add_particles(at, 1e-3, material=[0, [1]]))
+    refused("charge", lambda: sim.add_particles(at, 1e-3, charge="high"))
+    refused("force", lambda: sim.particles.add_force(sim.particles.id[:2], [[0, 0, 1]] * 3))
+    refused("velocity", lambda: sim.particles.set("velocity", "fast"))
+    s = mpdem.Scene(dir=tmp_path)
+    refused("radius", lambda: s.particles(at, [1e-3, 1e-3, 1e-3]))
+    refused("velocity", lambda: s.particles(at, 1e-3, velocity=[1.0, 2.0]))
+    refused("vertices", lambda: s.barriers(np.zeros((2, 3, 2))))

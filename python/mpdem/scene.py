@@ -116,22 +116,41 @@ class Scene:
         return files
 
     def _engine_input(self, scratch):
-        """(file, text, name) for the engine: the file itself when the scene is as read, else the
-        TOML text standing for a file in self.dir, its array sources written to `scratch`."""
+        """(file, text, name, sources) for the engine: the file itself when the scene is as read,
+        else the TOML text standing for a file in self.dir, its array sources written to
+        `scratch` (sources: each such CSV file's path -> (table, entry index))."""
         if self._file is not None and self.data == self._as_read and not any(self._arrays.values()):
-            return str(self._file), None, ""
+            return str(self._file), None, "", {}
         files = self._write_arrays(Path(scratch), "scene", relative=False)
         name = f"{self.name} (built in Python)" if self._file is None else f"{self._file} (changed in Python)"
-        return str(self.dir / f"{Path(self.name).stem}.toml"), dumps(self._document(files)), name
+        sources = {path: (kind, k) for kind, by_entry in files.items() for k, path in by_entry.items()}
+        return str(self.dir / f"{Path(self.name).stem}.toml"), dumps(self._document(files)), name, sources
+
+    def _engine_call(self, scratch, call):
+        """(call(file, text, name), sources) on the engine's input (_engine_input). An InputError
+        in an array source is raised again naming the builder call and row instead of the
+        temporary CSV file it was passed in (which the user never saw, and which is deleted)."""
+        file, text, name, sources = self._engine_input(scratch)
+        try:
+            return call(file, text, name), sources
+        except _core.InputError as e:
+            where = sources.get(getattr(e, "file", None))
+            if where is None:
+                raise
+            raise _array_source_error(e, name, *where) from None
 
     def check(self):
         """The problems `mpdem check` reports, as (stops_run, message) pairs; raises InputError
-        for bad input, as Simulation(scene) would."""
+        for bad input, as Simulation(scene) would. An array source is named as its builder call
+        ("particles entry 1"), not by the temporary CSV file it was passed in."""
         import tempfile
 
         with tempfile.TemporaryDirectory() as scratch:
-            file, text, name = self._engine_input(scratch)
-            return _core.check(file, text, name)
+            problems, sources = self._engine_call(scratch, _core.check)
+        for path, (table, entry) in sources.items():
+            problems = [(stop, msg.replace(path, f"{table} entry {entry}")
+                         .replace(f"'{Path(path).name}'", f"{table} entry {entry}")) for stop, msg in problems]
+        return problems
 
     # --- tables ----------------------------------------------------------------------------------
 
@@ -228,18 +247,18 @@ class Scene:
         if position is not None:
             if file is not None or generate is not None:
                 raise ValueError("particles: give arrays, a file or generate, not several")
-            n = len(np.asarray(position))
-            arrays = {"position": np.asarray(position, dtype=float).reshape(n, 3),
-                      "radius": np.broadcast_to(np.asarray(radius, dtype=float), (n,))}
+            x = numbers("position", position, (-1, 3), reshape=True)
+            n = len(x)
+            arrays = {"position": x, "radius": numbers("radius", radius, (n,))}
             for name, a, shape in (("velocity", velocity, (n, 3)), ("angular_velocity", angular_velocity, (n, 3)),
                                    ("temperature", temperature, (n,)), ("charge", charge, (n,)),
                                    ("density", density, (n,))):
                 if a is not None:
-                    arrays[name] = np.broadcast_to(np.asarray(a, dtype=float), shape)
+                    arrays[name] = numbers(name, a, shape)
             if id is not None:
-                arrays["id"] = np.asarray(id, dtype=np.int64).reshape(n)
+                arrays["id"] = numbers("id", id, (n,), whole=True, reshape=True)
             if fixed is not None and not isinstance(fixed, bool):
-                arrays["fixed"] = np.broadcast_to(np.asarray(fixed, dtype=np.int64), (n,))
+                arrays["fixed"] = numbers("fixed", fixed, (n,), whole=True)
                 fixed = None
             if material is not None and not isinstance(material, str):
                 arrays["material"] = np.asarray(material).reshape(n)
@@ -260,14 +279,73 @@ class Scene:
         if vertices is not None:
             if file is not None or stl is not None:
                 raise ValueError("barriers: give vertices, a file or an stl, not several")
-            tri = {"vertices": np.asarray(vertices, dtype=float).reshape(-1, 3, 3)}
+            tri = {"vertices": numbers("vertices", vertices, (-1, 3, 3), reshape=True)}
             if id is not None:
-                tri["id"] = np.asarray(id, dtype=np.int64).reshape(len(tri["vertices"]))
+                tri["id"] = numbers("id", id, (len(tri["vertices"]),), whole=True, reshape=True)
         entry = dict(file=file, stl=stl, **keys)
         k = self._add("barriers", entry)
         if tri is not None:
             self._arrays["barriers"][k] = tri
         return self
+
+
+def input_error(message, key, file="", line=0):
+    """An mpdem.InputError (a ValueError) with the attributes the engine's carry."""
+    err = _core.InputError(message)
+    err.file, err.line, err.key = file, line, key
+    return err
+
+
+def integers(key, values):
+    """`values` as an int64 array; a value that is not a whole number (1.5, nan, "a") is refused
+    (InputError naming `key`), not truncated."""
+    a = np.asarray(values)
+    if a.dtype.kind in "iub":
+        return a.astype(np.int64)
+    try:
+        f = np.asarray(a, dtype=float)
+        whole = np.isfinite(f) & (f == np.floor(f)) & (np.abs(f) < 2.0**63)
+    except (TypeError, ValueError):
+        f, whole = a, np.zeros(a.shape, dtype=bool)
+    if not np.all(whole):
+        bad = f[~whole].reshape(-1)[0] if f.ndim else f
+        raise input_error(f"'{key}': expected whole numbers, got {bad!r}", key)
+    return f.astype(np.int64)
+
+
+def numbers(key, value, shape, whole=False, reshape=False):
+    """`value` as an array of `shape`: floats (whole: int64, see integers()), one value or row
+    broadcast to all (reshape: reshaped instead, e.g. a flat list of 3 N coordinates; a -1 in
+    `shape` takes the rows the values make; None: any shape). An InputError naming `key` when the
+    values are not numbers or do not fit the shape."""
+    if whole:
+        a = integers(key, value)
+    else:
+        try:
+            a = np.asarray(value, dtype=float)
+        except (TypeError, ValueError):
+            raise input_error(f"'{key}': expected numbers, got {type(value).__name__} {value!r:.80}", key) from None
+    if shape is None:  # the callee checks the shape
+        return a
+    try:
+        return a.reshape(shape) if reshape else np.broadcast_to(a, shape)
+    except ValueError:
+        want = "(" + ", ".join("N" if d == -1 else str(d) for d in shape) + ("," if len(shape) == 1 else "") + ")"
+        raise input_error(f"'{key}': expected an array of shape {want}, got one of shape {a.shape}", key) from None
+
+
+def _array_source_error(e, scene_name, table, entry):
+    """The InputError `e`, raised in the CSV file of array source `entry` of `table`, as one naming
+    that source and its row: "particles entry 2, row 0: 'radius': ..." (row k is line k + 2 of
+    the file: the header comes first)."""
+    line = int(e.line)
+    prefix = f"{e.file}:{line}: " if line > 0 else f"{e.file}: "
+    what = str(e)[len(prefix):] if str(e).startswith(prefix) else str(e)
+    row = line - 2 if line >= 2 else None
+    place = f"{table} entry {entry}" + (f", row {row}" if row is not None else "")
+    err = input_error(f"{scene_name}: {place}: {what}", e.key, file=scene_name)
+    err.entry, err.row = (table, entry), row
+    return err
 
 
 def _write_particle_csv(path, arrays):

@@ -4,13 +4,15 @@ Stepping happens in the engine with the GIL released; Python runs only between a
 (callbacks, Ctrl-C), never inside a step's fixed-point iterations.
 """
 
+import math
+import operator
 import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from . import _core
-from .scene import _scene_of
+from .scene import _scene_of, input_error, integers, numbers
 
 __all__ = ["Simulation", "Particles"]
 
@@ -37,17 +39,17 @@ class Particles:
     def set(self, name, values, ids=None):
         """Sets `name` (position, velocity, angular_velocity, temperature) for the particles
         `ids` (values in that order), or for all particles in id order when ids is None."""
-        self._core.set(name, np.asarray(values, dtype=float), None if ids is None else np.asarray(ids, dtype=np.int64))
+        self._core.set(name, numbers(name, values, None), None if ids is None else integers("ids", ids))
 
     def add_force(self, ids, force=None, torque=None):
         """Adds force (N) and torque (N m, about the centre) to the particles `ids` at every
         evaluation from now on, on top of contacts and fields, until set again or cleared: rows of
         (3,) in the order of `ids` (one row: the same for all). A zero row removes a particle's
         load. Their work enters the energy balance (log: total_energy). Not in checkpoints."""
-        ids = np.atleast_1d(np.asarray(ids, dtype=np.int64))
+        ids = np.atleast_1d(integers("ids", ids))
         n = len(ids)
-        f = np.zeros((n, 3)) if force is None else np.broadcast_to(np.asarray(force, dtype=float), (n, 3))
-        t = np.zeros((n, 3)) if torque is None else np.broadcast_to(np.asarray(torque, dtype=float), (n, 3))
+        f = np.zeros((n, 3)) if force is None else numbers("force", force, (n, 3))
+        t = np.zeros((n, 3)) if torque is None else numbers("torque", torque, (n, 3))
         self._core.add_loads(ids, np.ascontiguousarray(f), np.ascontiguousarray(t))
 
     def clear_forces(self):
@@ -119,7 +121,7 @@ class Barriers:
     def set_velocity(self, group, velocity):
         """From now on the group translates at `velocity` (m/s), its position continuous; only for
         groups without sine, cosine or rotation terms in their law."""
-        self._core.set_group_velocity(group, [float(v) for v in velocity])
+        self._core.set_group_velocity(group, _vector("velocity", velocity))
 
 
 class Simulation:
@@ -133,11 +135,13 @@ class Simulation:
     def __init__(self, scene, threads=None, output_dir=None, write_output=True, progress=False, _resume=None):
         self.scene = _scene_of(scene)
         self._scratch = tempfile.TemporaryDirectory(prefix="mpdem-")  # CSV files of array sources
-        file, text, name = self.scene._engine_input(self._scratch.name)
-        self._core = _core.Simulation(file, text, name, threads=threads or 0,
-                                      output_dir=str(output_dir) if output_dir is not None else "",
-                                      write_output=write_output, progress=progress,
-                                      resume=str(_resume) if _resume is not None else "")
+        threads = 0 if threads is None else _whole("threads", threads, 1)
+        self._core, _ = self.scene._engine_call(
+            self._scratch.name,
+            lambda file, text, name: _core.Simulation(file, text, name, threads=threads,
+                                                      output_dir=str(output_dir) if output_dir is not None else "",
+                                                      write_output=write_output, progress=progress,
+                                                      resume=str(_resume) if _resume is not None else ""))
         self.particles = Particles(self._core)
         self.barriers = Barriers(self._core)
 
@@ -153,13 +157,16 @@ class Simulation:
         """Steps for `duration` s of simulated time (None: to the scene's [time] duration),
         calling callback(sim) after every `every` accepted steps. Returns True when the run
         reached the scene's end (its final outputs then written as `mpdem run` writes them)."""
-        end = None if duration is None else self.time + float(duration)
+        end = None if duration is None else self.time + _seconds("duration", duration)
+        every = _whole("every", every, 1)
+        if callback is not None and not callable(callback):
+            raise TypeError(f"'callback': expected a function of the simulation, got {type(callback).__name__}")
         cb = None if callback is None else (lambda: callback(self))
-        return self._core.run(end, cb, int(every))
+        return self._core.run(end, cb, every)
 
     def step(self, n=1):
-        """n accepted steps."""
-        self._core.step(int(n))
+        """n accepted steps (n >= 0)."""
+        self._core.step(_whole("n", n, 0))
 
     def close(self):
         """Writes the final outputs now (a run that stopped before the scene's end)."""
@@ -223,7 +230,7 @@ class Simulation:
 
     @gravity.setter
     def gravity(self, g):
-        self._core.gravity = [float(c) for c in g]
+        self._core.gravity = _vector("gravity", g)
 
     @property
     def materials(self):
@@ -249,11 +256,11 @@ class Simulation:
         for k, v in enumerate(m):
             if isinstance(v, str):
                 if v not in names:
-                    raise mpdem_input_error("material", f"no material '{v}' (materials: {', '.join(names)})")
+                    raise input_error(f"'material': no material '{v}' (materials: {', '.join(names)})", "material")
                 out[k] = names.index(v)
             else:
-                out[k] = float(v)
-        return np.broadcast_to(out, (n,))
+                out[k] = numbers("material", v, ())
+        return numbers("material", out, (n,))
 
     def add_particles(self, position, radius, velocity=None, angular_velocity=None, material=None, id=None,
                       temperature=None, charge=None, fixed=None):
@@ -262,15 +269,15 @@ class Simulation:
         angular_velocity (N, 3), material (a name or index, or N of them; default the first
         material), temperature (K) and charge (C) default to the material's, fixed (N,) 0/1.
         The others' contact history is kept; no overlap check is made."""
-        position = np.asarray(position, dtype=float).reshape(-1, 3)
+        position = numbers("position", position, (-1, 3), reshape=True)
         n = len(position)
-        arrays = {"position": position, "radius": np.broadcast_to(np.asarray(radius, dtype=float), (n,))}
+        arrays = {"position": position, "radius": numbers("radius", radius, (n,))}
         for name, a, shape in (("velocity", velocity, (n, 3)), ("angular_velocity", angular_velocity, (n, 3)),
                                ("temperature", temperature, (n,)), ("charge", charge, (n,)), ("fixed", fixed, (n,))):
             if a is not None:
-                arrays[name] = np.broadcast_to(np.asarray(a, dtype=float), shape)
+                arrays[name] = numbers(name, a, shape)
         if id is not None:
-            arrays["id"] = np.asarray(id, dtype=np.int64).reshape(n)
+            arrays["id"] = numbers("id", id, (n,), whole=True, reshape=True)
         mats = self._material_indices(material, n)
         if mats is not None:
             arrays["material"] = mats
@@ -279,10 +286,40 @@ class Simulation:
     def remove_particles(self, ids):
         """Removes the particles `ids` between steps (written to removed.csv; an unknown id is an
         InputError); the others' contact history is kept."""
-        self._core.remove_particles(np.atleast_1d(np.asarray(ids, dtype=np.int64)))
+        self._core.remove_particles(np.atleast_1d(integers("ids", ids)))
 
 
-def mpdem_input_error(key, message):
-    err = _core.InputError(f"'{key}': {message}")
-    err.file, err.line, err.key = "", 0, key
-    return err
+# Arguments are checked at the call, each class of value alike: an InputError (a ValueError)
+# naming the argument, rather than a diverged state or a silently ignored value steps later.
+
+def _whole(key, value, least):
+    """An integer >= least (not a bool, not a float: 2.5 steps is not rounded)."""
+    try:
+        n = operator.index(value)
+    except TypeError:
+        n = None
+    if n is None or isinstance(value, (bool, np.bool_)) or n < least:
+        raise input_error(f"'{key}': expected an integer >= {least}, got {value!r}", key)
+    return n
+
+
+def _seconds(key, value):
+    """A finite number of seconds >= 0."""
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        v = math.nan
+    if not (math.isfinite(v) and v >= 0.0):
+        raise input_error(f"'{key}': expected a finite number of seconds >= 0, got {value!r}", key)
+    return v
+
+
+def _vector(key, value):
+    """Three finite numbers, as a list."""
+    try:
+        v = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        v = np.full(1, np.nan)
+    if v.shape != (3,) or not np.all(np.isfinite(v)):
+        raise input_error(f"'{key}': expected three finite numbers, got {value!r}", key)
+    return [float(c) for c in v]

@@ -1,13 +1,16 @@
 #include "io/csv_log.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <iterator>
+#include <numeric>
 #include <ostream>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "io/atomic_file.hpp"
 
@@ -101,6 +104,18 @@ void CsvLog::flush() {
   buffer_.clear();
 }
 
+namespace {
+// Storage indices in ascending id order: a snapshot's rows are in the same order whatever the
+// engine's storage order (it reorders at rebuilds) and however many ranks gathered them.
+std::vector<std::size_t> ascending_ids(const Particles& p) {
+  std::vector<std::size_t> order(p.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  const auto by_id = [&p](std::size_t a, std::size_t b) { return p.id[a] < p.id[b]; };
+  if (!std::is_sorted(order.begin(), order.end(), by_id)) std::sort(order.begin(), order.end(), by_id);
+  return order;
+}
+}  // namespace
+
 void write_particles_csv(const std::filesystem::path& file, const Particles& p, double time, const Vec3& period) {
   const bool periodic = period.x > 0.0 || period.y > 0.0 || period.z > 0.0;
   write_file_atomically(
@@ -117,7 +132,7 @@ void write_particles_csv(const std::filesystem::path& file, const Particles& p, 
           num(v.y);
           num(v.z);
         };
-        for (std::size_t i = 0; i < p.size(); ++i) {
+        for (const std::size_t i : ascending_ids(p)) {
           num(time);
           // Ids are printed as integers directly: a double would round ids beyond 2^53.
           char buf[24];

@@ -47,9 +47,10 @@ class CsvLog {
   std::string buffer_;
 };
 
-// Writes all particles at one time as a complete CSV file, atomically. Columns:
-// time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz
-// (s, -, m, m/s, rad/s, m, -, K, C, N).
+// Writes all particles at one time as a complete CSV file, atomically, one row per particle in
+// ascending id order (whatever their storage order). Columns:
+// time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed
+// (s, -, m, m/s, rad/s, m, -, K, C, N, -).
 // period [m]: the domain's period along its periodic axes, 0 along the others; with any periodic
 // axis the rows add the image counts ix, iy, iz and the unwrapped centre xu, yu, zu (m).
 void write_particles_csv(const std::filesystem::path& file, const Particles& particles, double time,

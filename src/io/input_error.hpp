@@ -26,8 +26,9 @@ class InputError : public std::runtime_error {
       s += ':';
       s += std::to_string(line);
     }
-    if (!key.empty()) s += ": '" + key + "'";
-    return s + ": " + message;
+    // Without a file (an argument of a call, a command-line option) the message starts at the key.
+    if (!key.empty()) s += (s.empty() ? "'" : ": '") + key + "'";
+    return s.empty() ? message : s + ": " + message;
   }
   std::string file_;
   std::size_t line_;

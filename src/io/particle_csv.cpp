@@ -17,10 +17,15 @@ namespace mpdem {
 
 namespace {
 
-constexpr std::array<std::string_view, 21> kColumns = {
+// The input columns, then the columns only a particle CSV snapshot has (docs/output.md: time,
+// the force, a periodic run's image counts and unwrapped centre), which are skipped so that a
+// snapshot seeds a new scene as it is.
+constexpr std::size_t kInputColumns = 21;
+constexpr std::array<std::string_view, kInputColumns + 10> kColumns = {
     "id",           "x",          "y",        "z",       "vx",    "vy",      "vz",     "wx",          "wy",
     "wz",           "radius",     "material", "density", "young", "poisson", "charge", "temperature", "heat_capacity",
-    "conductivity", "emissivity", "fixed"};
+    "conductivity", "emissivity", "fixed",    "time",    "fx",    "fy",      "fz",     "ix",          "iy",
+    "iz",           "xu",         "yu",       "zu"};
 
 // Column indices (-1 when absent), looked up once per file.
 struct Cols {

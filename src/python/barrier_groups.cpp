@@ -1,5 +1,11 @@
 #include "python/barrier_groups.hpp"
 
+#include <fmt/core.h>
+
+#include <cmath>
+
+#include "io/input_error.hpp"
+
 namespace mpdem::python {
 
 namespace {
@@ -56,6 +62,9 @@ py::tuple group_motion(const Barriers& b, const std::string& group) {
 
 void set_group_velocity(Barriers& b, const std::string& group, const Vec3& v, double t) {
   const int g = group_index(b, group);
+  if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+    throw InputError("", 0, "velocity",
+                     fmt::format("components must be finite, got [{}, {}, {}] (group '{}')", v.x, v.y, v.z, group));
   for (std::size_t e = 0; e < b.size(); ++e) {
     if (b.group[e] != g) continue;
     const MotionLaw& law = b.motion[e];

@@ -19,7 +19,8 @@ py::dict group_load(const Barriers& b, const std::string& group);
 // (3,) m and m/s: the translation u(t) and velocity u'(t) of the group's first element.
 py::tuple group_motion(const Barriers& b, const std::string& group);
 // From time t on, the group translates at the constant velocity v (m/s), its position continuous
-// at t. A group whose law has a sine, cosine or rotation term is refused (ValueError).
+// at t. A group whose law has a sine, cosine or rotation term is refused (ValueError), as is a
+// component that is not finite (InputError, key "velocity").
 void set_group_velocity(Barriers& b, const std::string& group, const Vec3& v, double t);
 
 }  // namespace mpdem::python

@@ -1,9 +1,14 @@
 #include "python/particle_arrays.hpp"
 
+#include <fmt/core.h>
+
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
 #include <unordered_map>
+
+#include "io/input_error.hpp"
 
 namespace mpdem::python {
 
@@ -72,6 +77,24 @@ template <class T>
 std::vector<py::ssize_t> shape_of(std::size_t n) {
   if (Layout<T>::width == 1) return {static_cast<py::ssize_t>(n)};
   return {static_cast<py::ssize_t>(n), Layout<T>::width};
+}
+
+// Every value finite, and a temperature >= 0 (the particle CSV's range), before any is set: a
+// NaN would otherwise surface as a diverged state one step later, far from the call.
+void check_values(const Particles& p, const std::string& name,
+                  const py::array_t<double, py::array::c_style | py::array::forcecast>& values,
+                  const std::vector<std::size_t>& target) {
+  const std::size_t width = values.ndim() == 1 ? 1 : static_cast<std::size_t>(values.shape(1));
+  const double* v = values.data();
+  for (std::size_t k = 0; k < target.size() * width; ++k) {
+    const bool finite = std::isfinite(v[k]);
+    if (finite && !(name == "temperature" && v[k] < 0.0)) continue;
+    const std::size_t row = k / width;
+    throw InputError("", 0, name,
+                     fmt::format("{} (row {}, particle id {}: {})",
+                                 finite ? "temperatures must be >= 0 K" : "values must be finite", row,
+                                 p.id[target[row]], v[k]));
+  }
 }
 
 }  // namespace
@@ -151,6 +174,7 @@ void set_array(Particles& p, const std::string& name,
                               (width == 1 ? " values" : " rows of 3 values") + ", got an array of shape (" +
                               std::to_string(values.shape(0)) +
                               (values.ndim() > 1 ? ", " + std::to_string(values.shape(1)) : std::string()) + ")");
+      check_values(p, name, values, target);
       const auto* src = reinterpret_cast<const T*>(values.data());
       for (std::size_t k = 0; k < target.size(); ++k) a[target[k]] = src[k];
     }

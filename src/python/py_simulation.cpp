@@ -1,5 +1,6 @@
 #include "python/py_simulation.hpp"
 
+#include <fmt/core.h>
 #include <omp.h>
 
 #include <chrono>
@@ -8,6 +9,7 @@
 
 #include "io/global_log.hpp"
 #include "io/input_error.hpp"
+#include "model/derived_limits.hpp"
 #include "model/particle_defaults.hpp"
 #include "parallel/communicator.hpp"
 #include "python/particle_arrays.hpp"
@@ -155,8 +157,18 @@ std::optional<Doubles> rows(const py::dict& arrays, const char* key, std::size_t
                      "expected " + std::to_string(n) + (width == 1 ? " values" : " rows of 3 values") +
                          " (one per new particle)");
   for (py::ssize_t k = 0; k < a.size(); ++k)
-    if (!std::isfinite(a.data()[k])) throw InputError("", 0, key, "values must be finite");
+    if (!std::isfinite(a.data()[k]))
+      throw InputError("", 0, key, fmt::format("values must be finite (row {}: {})", k / width, a.data()[k]));
   return a;
+}
+
+// The mass, inertia and time scales a radius gives with its material must be usable, as the
+// particle CSV reader requires (model/derived_limits.hpp).
+void check_new_particle(const Material& m, double r, std::size_t row, bool thermal) {
+  std::string p = mass_problem(r, m.density);
+  if (p.empty()) p = time_scale_problem(r, m.density, m.young, m.poisson);
+  if (p.empty() && thermal) p = thermal_mass_problem(r, m.density, m.heat_capacity);
+  if (!p.empty()) throw InputError("", 0, "radius", fmt::format("{} (row {}, material '{}')", p, row, m.name));
 }
 
 Vec3 row3(const Doubles& a, std::size_t i) {
@@ -187,13 +199,20 @@ py::array_t<std::int64_t> PySimulation::add_particles(const py::dict& arrays) {
   Particles fresh;
   fresh.reserve(n);
   std::int64_t next = sim_->next_free_id();
+  const bool thermal = sim_->model().params.analysis.thermal;
   for (std::size_t i = 0; i < n; ++i) {
     const double r = radius->data()[i];
-    if (!(r > 0.0)) throw InputError("", 0, "radius", "must be > 0, got " + std::to_string(r));
+    if (!(r > 0.0)) throw InputError("", 0, "radius", fmt::format("must be > 0, got {} (row {})", r, i));
     const double m = material ? material->data()[i] : 0.0;
     if (m != std::floor(m) || m < 0.0 || m >= static_cast<double>(materials.size()))
-      throw InputError("", 0, "material", "not a material of the scene: " + std::to_string(m));
+      throw InputError("", 0, "material", fmt::format("not a material of the scene: {} (row {})", m, i));
     const auto mat = static_cast<int>(m);
+    check_new_particle(materials[static_cast<std::size_t>(mat)], r, i, thermal);
+    if (temperature && temperature->data()[i] < 0.0)
+      throw InputError("", 0, "temperature", fmt::format("must be >= 0 K, got {} (row {})", temperature->data()[i], i));
+    if (fixed && fixed->data()[i] != 0.0 && fixed->data()[i] != 1.0)
+      throw InputError("", 0, "fixed",
+                       fmt::format("expected 0 (free) or 1 (fixed), got {} (row {})", fixed->data()[i], i));
     const std::int64_t pid = id ? id->data()[i] : next++;
     fresh.add(pid, mat, r, materials[static_cast<std::size_t>(mat)].density, row3(*position, i),
               velocity ? row3(*velocity, i) : Vec3{});
@@ -228,8 +247,9 @@ void PySimulation::add_loads(const py::array_t<std::int64_t, py::array::forcecas
   for (std::size_t k = 0; k < n; ++k) {
     f[k] = row3(force, k);
     t[k] = row3(torque, k);
-    if (!std::isfinite(norm2(f[k])) || !std::isfinite(norm2(t[k])))
-      throw py::value_error("added forces and torques must be finite (id " + std::to_string(id[k]) + ")");
+    for (const auto& [key, v] : {std::pair{"force", f[k]}, std::pair{"torque", t[k]}})
+      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+        throw InputError("", 0, key, fmt::format("values must be finite (row {}, particle id {})", k, id[k]));
   }
   sim_->interactions().external_loads().set(id, f, t);
   sim_->state_changed();

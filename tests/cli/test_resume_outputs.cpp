@@ -142,20 +142,31 @@ std::vector<std::string> column(const std::string& csv, std::size_t col) {
   return out;
 }
 
+// In d/u the uninterrupted run of 300 steps; in d/r a run of `steps` (started by `launcher`),
+// checkpointed every `checkpoint_every` steps, resumed from its end checkpoint to 300 steps, each
+// .pvd then listing each file once and no snapshot file of the first run rewritten. Returns
+// whether all three runs exited with 0.
+bool run_and_resume(const fs::path& d, int steps, int checkpoint_every, const std::string& launcher = "") {
+  write_inputs(d);
+  const std::string output = std::string(kEveryOutput) + "checkpoint_every = " + std::to_string(checkpoint_every) +
+                             "\n";
+  write_scene(d / "long.toml", 300, output, kFields);
+  write_scene(d / "short.toml", steps, output, kFields);
+  if (run_in(d, "run long.toml --output u") != 0 || run_in(d, "run short.toml --output r", launcher) != 0) return false;
+  const auto first = files(d / "r");
+  if (run_in(d, "run long.toml --output r --resume r/checkpoint.bin") != 0) return false;
+  expect_pvds_list_each_file_once(d / "r");
+  expect_kept(first, files(d / "r"));
+  return true;
+}
+
 }  // namespace
 
 // 150 steps, then resumed from the checkpoint of step 150 (the run's end) to 300: every file, the
 // logs and .pvd indexes included, is the uninterrupted 300-step run's, byte for byte.
 TEST(ResumeOutputs, EndCheckpointResumedLongerIsTheUninterruptedRun) {
   const fs::path d = fresh_dir("resume_end");
-  write_inputs(d);
-  const std::string output = std::string(kEveryOutput) + "checkpoint_every = 150\n";
-  write_scene(d / "long.toml", 300, output, kFields);
-  write_scene(d / "short.toml", 150, output, kFields);
-  ASSERT_EQ(run_in(d, "run long.toml --output u"), 0) << slurp(d / "err.txt");
-  ASSERT_EQ(run_in(d, "run short.toml --output r"), 0) << slurp(d / "err.txt");
-  const auto short_run = files(d / "r");
-  ASSERT_EQ(run_in(d, "run long.toml --output r --resume r/checkpoint.bin"), 0) << slurp(d / "err.txt");
+  ASSERT_TRUE(run_and_resume(d, 150, 150)) << slurp(d / "err.txt");
   const auto whole = files(d / "u"), resumed = files(d / "r");
   ASSERT_GT(whole.size(), 100u);
   for (const auto& [name, bytes] : whole) {
@@ -164,8 +175,6 @@ TEST(ResumeOutputs, EndCheckpointResumedLongerIsTheUninterruptedRun) {
     else EXPECT_TRUE(it->second == bytes) << name << " differs from the uninterrupted run's";
   }
   for (const auto& [name, bytes] : resumed) EXPECT_TRUE(whole.count(name)) << name << ": not in the uninterrupted run";
-  expect_pvds_list_each_file_once(d / "r");
-  expect_kept(short_run, resumed);
   fs::remove_all(d);
 }
 
@@ -175,16 +184,7 @@ TEST(ResumeOutputs, EndCheckpointResumedLongerIsTheUninterruptedRun) {
 // missing, its times (functions of the step count) the same.
 TEST(ResumeOutputs, UnalignedEndKeepsItsSnapshotAndEveryRegularOne) {
   const fs::path d = fresh_dir("resume_unaligned");
-  write_inputs(d);
-  const std::string output = std::string(kEveryOutput) + "checkpoint_every = 5\n";
-  write_scene(d / "long.toml", 300, output, kFields);
-  write_scene(d / "short.toml", 155, output, kFields);
-  ASSERT_EQ(run_in(d, "run long.toml --output u"), 0) << slurp(d / "err.txt");
-  ASSERT_EQ(run_in(d, "run short.toml --output r"), 0) << slurp(d / "err.txt");
-  const auto short_run = files(d / "r");
-  ASSERT_EQ(run_in(d, "run long.toml --output r --resume r/checkpoint.bin"), 0) << slurp(d / "err.txt");
-  expect_pvds_list_each_file_once(d / "r");
-  expect_kept(short_run, files(d / "r"));
+  ASSERT_TRUE(run_and_resume(d, 155, 5)) << slurp(d / "err.txt");
   char end[64];
   std::snprintf(end, sizeof end, "%.17g", 155 * kDt);
   for (const char* pvd : {"particles.pvd", "barriers.pvd", "contacts.pvd"}) {
@@ -204,20 +204,11 @@ TEST(ResumeOutputs, UnalignedEndKeepsItsSnapshotAndEveryRegularOne) {
 TEST(ResumeOutputs, TwoRankEndCheckpointResumedOnOneRank) {
   if (std::string(MPDEM_MPIEXEC).empty()) GTEST_SKIP() << "built without MPDEM_MPI";
   const fs::path d = fresh_dir("resume_2to1");
-  write_inputs(d);
-  const std::string output = std::string(kEveryOutput) + "checkpoint_every = 150\n";
-  write_scene(d / "long.toml", 300, output, kFields);
-  write_scene(d / "short.toml", 150, output, kFields);
-  ASSERT_EQ(run_in(d, "run long.toml --output u"), 0) << slurp(d / "err.txt");
   const std::string mpirun =
       std::string("env OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 '") +
       MPDEM_MPIEXEC + "' -np 2 --oversubscribe";
-  ASSERT_EQ(run_in(d, "run short.toml --output r", mpirun), 0) << slurp(d / "err.txt");
-  const auto short_run = files(d / "r");
-  ASSERT_TRUE(short_run.count("particles/particles_000010.pvtu"));
-  ASSERT_EQ(run_in(d, "run long.toml --output r --resume r/checkpoint.bin"), 0) << slurp(d / "err.txt");
-  expect_pvds_list_each_file_once(d / "r");
-  expect_kept(short_run, files(d / "r"));
+  ASSERT_TRUE(run_and_resume(d, 150, 150, mpirun)) << slurp(d / "err.txt");
+  ASSERT_TRUE(fs::exists(d / "r" / "particles/particles_000010.pvtu"));  // written on 2 ranks
   for (const char* pvd : {"particles.pvd", "barriers.pvd", "contacts.pvd", "cg_g.pvd"}) {
     const auto a = pvd_entries(d / "u" / pvd), b = pvd_entries(d / "r" / pvd);
     ASSERT_EQ(a.size(), b.size()) << pvd;

@@ -96,16 +96,14 @@ StepReport Simulation::advance(double dt) {
 }
 
 void Simulation::advance_clock(double h, bool adaptive) {
+  if (adaptive || h != clock_dt_) {  // another step length: count its steps from this one's start
+    clock_time_ = time_;
+    clock_step_ = steps_;
+    clock_dt_ = adaptive ? std::numeric_limits<double>::quiet_NaN() : h;
+  }
   ++steps_;
   last_h_ = h;
-  if (!adaptive && h == clock_dt_) {
-    time_ = clock_time_ + static_cast<double>(steps_ - clock_step_) * h;
-    return;
-  }
-  time_ += h;
-  clock_time_ = time_;
-  clock_step_ = steps_;
-  clock_dt_ = adaptive ? std::numeric_limits<double>::quiet_NaN() : h;
+  time_ = adaptive ? time_ + h : clock_time_ + static_cast<double>(steps_ - clock_step_) * h;
 }
 
 double Simulation::round_off(double end) const {

@@ -188,9 +188,9 @@ class Simulation {
   std::uint64_t steps_ = 0;
   // The time after a step of h: time_ = clock_time_ + (steps_ - clock_step_) * clock_dt_ while the
   // steps keep their length (a function of the step count: no round-off accumulates, a run in
-  // parts or resumed is the same run); a step of another length restarts the count after it.
-  // Adaptive steps add their length (clock_dt_ NaN). Not in the checkpoint: a resume restarts the
-  // count at t = 0 when the checkpoint's time is steps * time.dt, else at the checkpoint.
+  // parts or resumed is the same run); a step of another length starts the count again at its
+  // start. Adaptive steps add their length (clock_dt_ NaN). Not in the checkpoint: a resume counts
+  // from t = 0 when the checkpoint's time is steps * time.dt, else from the checkpoint.
   void advance_clock(double h, bool adaptive);
   double round_off(double end) const;  // s, how far from `end` the time still counts as there
   double clock_time_ = 0.0;            // s

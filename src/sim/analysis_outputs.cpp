@@ -142,12 +142,11 @@ bool AnalysisOutputs::needs_contacts(double t_end, double dt, double end) const 
   return false;
 }
 
-void AnalysisOutputs::after_step(double t, double h, double end, const Particles& p, const Barriers& b,
+void AnalysisOutputs::after_step(double t, double h, double end, bool last, const Particles& p, const Barriers& b,
                                  const Interactions& in) {
   const double slack = 0.5 * h;
   // The run's last step writes a contact snapshot; a periodic one due within half a step before
   // it is left to it, so the end state is written once.
-  const bool last = t >= end - 1e-9 * h;
   const bool contacts_due = contacts_on() && (last || (t >= contacts_next_ - slack && t < end - slack));
   bool fields_due = false;
   for (const Field& f : fields_) fields_due = fields_due || t >= f.next_sample - slack;

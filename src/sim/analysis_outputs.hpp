@@ -37,9 +37,11 @@ class AnalysisOutputs {
   // Whether a step of dt that ends at t_end may take a sample or write a contact snapshot (end:
   // the run's end time, where a contact snapshot is always written).
   bool needs_contacts(double t_end, double dt, double end) const;
-  // After a step of h ending at t (end: the run's end time). The contact list must be the step's.
-  // Collective on several ranks.
-  void after_step(double t, double h, double end, const Particles& p, const Barriers& b, const Interactions& in);
+  // After a step of h ending at t (end: the run's end time; last: t has reached it, within the
+  // round-off of Simulation::reached). The contact list must be the step's. Collective on several
+  // ranks.
+  void after_step(double t, double h, double end, bool last, const Particles& p, const Barriers& b,
+                  const Interactions& in);
   void flush();
 
   void save(BinaryWriter& w) const;  // rank 0's state (the schedule is every rank's)

@@ -317,7 +317,8 @@ void Simulation::step(double end) {
       log_row({steps_, time_, h, &last_, evaluations_, redone_, removed_, {}});
   }
   if (analysis_) {
-    analysis_->after_step(time_, h, prm.time.duration, scene_.particles, scene_.barriers, *interactions_);
+    analysis_->after_step(time_, h, prm.time.duration, reached(prm.time.duration), scene_.particles, scene_.barriers,
+                          *interactions_);
     if (analysis_recording_) interactions_->particle_contacts().record_contacts(false);
     analysis_recording_ = false;
   }

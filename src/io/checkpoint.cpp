@@ -15,6 +15,7 @@
 #include <vector>
 #include <type_traits>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "io/atomic_file.hpp"
@@ -206,6 +207,15 @@ void Simulation::resume_from(const std::filesystem::path& file) {
                      fmt::format("the checkpoint '{}' is at t = {:.9g} s, not before the scene's time.duration = "
                                  "{:.9g} s: nothing is left to run; raise time.duration to continue the run",
                                  name, time_, duration));
+  // The time goes on as the checkpoint's run counted it: from t = 0 while each of its steps had
+  // the scene's dt (a resume with a longer duration is then the uninterrupted run), else from the
+  // checkpoint (an edited step, or a step cut to land on an end).
+  const Params& prm = scene_.model.params;
+  const bool adaptive = prm.time.adaptive && prm.time.integrator == Integrator::Trapezoidal;
+  const bool from_zero = static_cast<double>(steps_) * prm.time.dt == time_;
+  clock_time_ = from_zero ? 0.0 : time_;
+  clock_step_ = from_zero ? 0 : steps_;
+  clock_dt_ = adaptive ? std::numeric_limits<double>::quiet_NaN() : prm.time.dt;
   initialized_ = true;
   resumed_ = true;
 }

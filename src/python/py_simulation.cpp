@@ -84,11 +84,11 @@ double PySimulation::step_limit() const {
   // Whole steps of the scene's dt, as `mpdem run` takes them, so that a run in parts is the same
   // run; only the scene's end cuts a step short.
   const double end = end_time();
-  return sim_->time() < end - 1e-9 * sim_->model().params.time.dt ? end : std::numeric_limits<double>::infinity();
+  return sim_->reached(end) ? std::numeric_limits<double>::infinity() : end;
 }
 
 void PySimulation::finish_if_at_end() {
-  if (!finished_ && sim_->time() >= end_time() - 1e-9 * sim_->model().params.time.dt) {
+  if (!finished_ && sim_->reached(end_time())) {
     sim_->finish();
     finished_ = true;
   } else {
@@ -98,12 +98,11 @@ void PySimulation::finish_if_at_end() {
 
 bool PySimulation::run(std::optional<double> end, const py::object& callback, long every) {
   const double until = end.value_or(end_time());
-  const double dt = sim_->model().params.time.dt;
   const bool calls = !callback.is_none() && every > 0;
   py::gil_scoped_release nogil;
   use_threads(options_.threads);
   sim_->start();
-  while (sim_->time() < until - 1e-9 * dt) {
+  while (!sim_->reached(until)) {
     step_flushing(step_limit());
     if (calls && sim_->steps() % static_cast<std::uint64_t>(every) == 0) {
       py::gil_scoped_acquire gil;

@@ -24,6 +24,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// s, the first multiple of `every` after u, computed directly (an interval below the step gives
+// one snapshot per step, never a loop over the intervals passed).
+double next_multiple(double every, double u) { return (std::floor(u / every) + 1.0) * every; }
+
 // The owned particles as coarse-graining input (contacts not yet counted) and their ids.
 void cg_particles(const Particles& p, std::vector<CgParticle>& particles, std::vector<std::int64_t>& ids) {
   const std::size_t n = p.size();
@@ -138,12 +142,11 @@ bool AnalysisOutputs::needs_contacts(double t_end, double dt, double end) const 
   return false;
 }
 
-void AnalysisOutputs::after_step(double t, double h, double end, const Particles& p, const Barriers& b,
+void AnalysisOutputs::after_step(double t, double h, double end, bool last, const Particles& p, const Barriers& b,
                                  const Interactions& in) {
   const double slack = 0.5 * h;
   // The run's last step writes a contact snapshot; a periodic one due within half a step before
   // it is left to it, so the end state is written once.
-  const bool last = t >= end - 1e-9 * h;
   const bool contacts_due = contacts_on() && (last || (t >= contacts_next_ - slack && t < end - slack));
   bool fields_due = false;
   for (const Field& f : fields_) fields_due = fields_due || t >= f.next_sample - slack;
@@ -172,8 +175,7 @@ void AnalysisOutputs::after_step(double t, double h, double end, const Particles
       contacts_pvd_->add(t, name);
     }
     ++contact_snapshots_;
-    while (contacts_next_ <= t + slack)
-      contacts_next_ = static_cast<double>(contact_snapshots_ + 1) * prm.output.contacts_every;
+    contacts_next_ = next_multiple(prm.output.contacts_every, t + slack);
   }
   std::vector<CgContact> contacts;
   if (files && fields_due) cg_contacts(ids, list, particles, contacts);
@@ -182,23 +184,48 @@ void AnalysisOutputs::after_step(double t, double h, double end, const Particles
     const CoarseGrainSpec& c = prm.coarse_grain[k];
     if (t < f.next_sample - slack) continue;
     if (files) f.average.add(coarse_grain(c.grid, c.kernel, c.width, particles, contacts, period_));
-    // The next sample: the first one after this step (a step longer than the spacing skips some).
-    const std::uint64_t per_window = c.average > 0.0 ? static_cast<std::uint64_t>(c.samples) : 1;
-    bool window_done = false;
-    do {
-      if (++f.sample == per_window) {
-        window_done = true;
-        f.sample = 0;
-        ++f.outputs;
-      }
+    // The window is done once its last sample is passed (a step longer than the spacing skips
+    // samples); the next sample is the first one after this step, found directly.
+    const std::uint64_t n = c.average > 0.0 ? static_cast<std::uint64_t>(c.samples) : 1;
+    const double u = t + slack;
+    if (f.sample + 1 < n && sample_time(c, f.outputs, n - 1) > u) {
+      f.sample = first_sample_after(c, f.outputs, f.sample + 1, u);
       f.next_sample = sample_time(c, f.outputs, f.sample);
-    } while (f.next_sample <= t + slack && !window_done);
-    if (window_done) {
-      if (files) write_field(k, t, f.average.mean());
-      f.average.clear();
-      while (f.next_sample <= t + slack) f.next_sample = sample_time(c, ++f.outputs, 0);
+      continue;
     }
+    if (files) write_field(k, t, f.average.mean());
+    f.average.clear();
+    f.outputs = first_window_after(c, f.outputs + 1, u);
+    f.sample = n > 1 ? first_sample_after(c, f.outputs, 0, u) : 0;
+    f.next_sample = sample_time(c, f.outputs, f.sample);
   }
+}
+
+// The smallest sample index s >= s0 of `window` whose time is after u (s, the window's last
+// sample is), from its estimate corrected for round-off.
+std::uint64_t AnalysisOutputs::first_sample_after(const CoarseGrainSpec& c, std::uint64_t window, std::uint64_t s0,
+                                                  double u) const {
+  const auto n = static_cast<std::uint64_t>(c.samples);
+  const double start = static_cast<double>(window + 1) * c.every - c.average;  // s, the window's start
+  const double x = std::floor((u - start) * static_cast<double>(n) / c.average);
+  std::uint64_t s = x <= static_cast<double>(s0) ? s0 : std::min(n - 1, static_cast<std::uint64_t>(x));
+  for (int k = 0; k < 2 && s > s0 && sample_time(c, window, s - 1) > u; ++k) --s;
+  for (int k = 0; k < 2 && s + 1 < n && sample_time(c, window, s) <= u; ++k) ++s;
+  return s;
+}
+
+// The smallest window index w >= w0 whose last sample (at its end) is after u, from its estimate
+// corrected for round-off: a window whose first samples a long step passed still gets an output,
+// from the samples left. An interval below the resolution of the time gives a window that is not
+// after u: it is then due at the next step (one output per step, never a loop over windows).
+std::uint64_t AnalysisOutputs::first_window_after(const CoarseGrainSpec& c, std::uint64_t w0, double u) const {
+  const std::uint64_t last = c.average > 0.0 ? static_cast<std::uint64_t>(c.samples) - 1 : 0;
+  constexpr double kLargest = 0x1p62;  // -, a window index that stays exact in a double and an uint64
+  const double x = std::min(kLargest, std::floor(u / c.every));
+  std::uint64_t w = x <= static_cast<double>(w0) ? w0 : static_cast<std::uint64_t>(x);
+  for (int k = 0; k < 2 && w > w0 && sample_time(c, w - 1, last) > u; ++k) --w;
+  for (int k = 0; k < 2 && sample_time(c, w, last) <= u; ++k) ++w;
+  return w;
 }
 
 void AnalysisOutputs::write_field(std::size_t k, double t, const CgFields& f) {
@@ -209,7 +236,8 @@ void AnalysisOutputs::write_field(std::size_t k, double t, const CgFields& f) {
     return;
   }
   const std::string stem = "cg_" + c.name;
-  const std::string name = fmt::format("{}/{}_{:06d}.vti", stem, stem, fields_[k].outputs - 1);
+  // Named by the count of files written (the .pvd lists each), whether or not windows were skipped.
+  const std::string name = fmt::format("{}/{}_{:06d}.vti", stem, stem, grid_pvd_[k]->entries().size());
   write_cg_vti(dir_ / name, c.grid, f, t, model_.params.output.format);
   grid_pvd_[k]->add(t, name);
 }

@@ -37,9 +37,11 @@ class AnalysisOutputs {
   // Whether a step of dt that ends at t_end may take a sample or write a contact snapshot (end:
   // the run's end time, where a contact snapshot is always written).
   bool needs_contacts(double t_end, double dt, double end) const;
-  // After a step of h ending at t (end: the run's end time). The contact list must be the step's.
-  // Collective on several ranks.
-  void after_step(double t, double h, double end, const Particles& p, const Barriers& b, const Interactions& in);
+  // After a step of h ending at t (end: the run's end time; last: t has reached it, within the
+  // round-off of Simulation::reached). The contact list must be the step's. Collective on several
+  // ranks.
+  void after_step(double t, double h, double end, bool last, const Particles& p, const Barriers& b,
+                  const Interactions& in);
   void flush();
 
   void save(BinaryWriter& w) const;  // rank 0's state (the schedule is every rank's)
@@ -47,12 +49,14 @@ class AnalysisOutputs {
 
  private:
   struct Field {                // one [[coarse_grain]] entry's progress
-    std::uint64_t outputs = 0;  // written so far
-    std::uint64_t sample = 0;   // samples taken in the current window
+    std::uint64_t outputs = 0;  // -, the window of the next sample (window k ends at (k + 1) every)
+    std::uint64_t sample = 0;   // -, the next sample's index in its window
     double next_sample = 0.0;   // s
     CgAverage average;
   };
   double sample_time(const CoarseGrainSpec& c, std::uint64_t window, std::uint64_t sample) const;
+  std::uint64_t first_sample_after(const CoarseGrainSpec& c, std::uint64_t window, std::uint64_t s0, double u) const;
+  std::uint64_t first_window_after(const CoarseGrainSpec& c, std::uint64_t w0, double u) const;
   void write_field(std::size_t k, double t, const CgFields& f);
 
   bool writes() const;  // this rank computes the fields and writes the files (rank 0)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <tuple>
 
@@ -44,7 +45,8 @@ Simulation::Simulation(Scene&& scene, RunOptions options)
       options_(std::move(options)),
       interactions_(std::make_unique<Interactions>(scene_.model, scene_.particles, scene_.barriers,
                                                    integrator_policy(scene_.model.params))),
-      trapezoidal_(scene_.model), verlet_(scene_.model), dt_(scene_.model.params.time.dt) {
+      trapezoidal_(scene_.model), verlet_(scene_.model), clock_dt_(scene_.model.params.time.dt),
+      dt_(scene_.model.params.time.dt) {
   // The inlets first: their first id follows every particle of the scene, whichever rank holds it.
   if (!scene_.model.params.inlets.empty()) inlets_ = std::make_unique<Inlets>(scene_.model, scene_.particles);
   if (!scene_.model.params.sinks.empty()) sinks_ = std::make_unique<Sinks>(scene_.model);
@@ -88,19 +90,35 @@ StepReport Simulation::advance(double dt) {
     }
   }
   evaluations_ += static_cast<std::uint64_t>(rep.evaluations);
-  const double t0 = time_;
-  time_ += dt;
-  ++steps_;
-  check_state(rep, time_ - t0);
+  advance_clock(dt, false);
+  check_state(rep, dt);
   return rep;
 }
+
+void Simulation::advance_clock(double h, bool adaptive) {
+  if (adaptive || h != clock_dt_) {  // another step length: count its steps from this one's start
+    clock_time_ = time_;
+    clock_step_ = steps_;
+    clock_dt_ = adaptive ? std::numeric_limits<double>::quiet_NaN() : h;
+  }
+  ++steps_;
+  last_h_ = h;
+  time_ = adaptive ? time_ + h : clock_time_ + static_cast<double>(steps_ - clock_step_) * h;
+}
+
+double Simulation::round_off(double end) const {
+  // A few units in the last place of `end`, and never less than a billionth of the step.
+  const double ulps = std::isfinite(end) ? 8.0 * std::numeric_limits<double>::epsilon() * std::abs(end) : 0.0;
+  return 1e-9 * scene_.model.params.time.dt + ulps;
+}
+
+bool Simulation::reached(double end) const { return time_ >= end - round_off(end); }
 
 StepReport Simulation::advance_adaptive(double limit) {
   initialize();
   // Once for all tries: a redone step is shorter and starts from the same state.
   interactions_->prepare_step(scene_.particles, scene_.barriers, std::min(dt_, limit));
   const Params& prm = scene_.model.params;
-  const double t0 = time_;
   for (;;) {
     const double h = std::min(dt_, limit);
     StepReport rep = trapezoidal_.step(scene_.particles, scene_.barriers, *interactions_, time_, h,
@@ -108,11 +126,10 @@ StepReport Simulation::advance_adaptive(double limit) {
     evaluations_ += static_cast<std::uint64_t>(rep.evaluations);
     const double factor = step_factor(rep, prm);
     if (rep.converged) {
-      time_ += h;
-      ++steps_;
+      advance_clock(h, true);
       // A step shortened to land on `limit` says nothing about the step to take next.
       if (h == dt_) dt_ = std::clamp(factor * h, prm.time.dt_min, prm.time.dt_max);
-      check_state(rep, time_ - t0);
+      check_state(rep, h);
       return rep;
     }
     if (h <= prm.time.dt_min * (1.0 + 1e-12))
@@ -232,7 +249,7 @@ void Simulation::snapshots(double h, bool force) {
 RunSummary Simulation::run() {
   start();
   const double end = scene_.model.params.time.duration;
-  while (time_ < end - 1e-9 * scene_.model.params.time.dt) step(end);
+  while (!reached(end)) step(end);
   return finish();
 }
 
@@ -273,10 +290,13 @@ void Simulation::step(double end) {
   start();
   const Params& prm = scene_.model.params;
   const bool out = options_.write_output;
-  const double t0 = time_;
   const bool adaptive = prm.time.adaptive && prm.time.integrator == Integrator::Trapezoidal;
-  // The step to take (an adaptive step may turn out shorter); the last one ends exactly at `end`.
-  const double planned = std::min(adaptive ? dt_ : prm.time.dt, end - time_);
+  // The step to take (an adaptive step may turn out shorter); the last one ends exactly at `end`,
+  // unless it ends within round-off of it: then it is taken whole, as every other step.
+  const double whole = adaptive ? dt_ : prm.time.dt;
+  const double left = end - time_;
+  const bool cut = left < whole - round_off(end);
+  const double planned = cut ? left : whole;
   if (analysis_) {  // the contact list of a step that an analysis output samples
     ParticleContacts& pc = interactions_->particle_contacts();
     if (!pc.recording() && analysis_->needs_contacts(time_ + planned, planned, prm.time.duration)) {
@@ -284,17 +304,21 @@ void Simulation::step(double end) {
       analysis_recording_ = true;
     }
   }
-  if (adaptive) last_ = advance_adaptive(end - time_);
+  const bool before_end = !reached(prm.time.duration);
+  if (adaptive) last_ = advance_adaptive(cut ? left : std::max(left, whole));
   else last_ = advance(planned);
-  const double h = time_ - t0;
+  const double h = last_h_;
   if (output_) output_->accumulate_barrier_loads(scene_.barriers, h);
   if (out) {
-    snapshots(h, false);
+    // The step that reaches the run's end writes the end's snapshots (finish() finds them
+    // written), before a checkpoint of this step: a run resumed from it continues their series.
+    snapshots(h, before_end && reached(prm.time.duration));
     if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) == 0)
       log_row({steps_, time_, h, &last_, evaluations_, redone_, removed_, {}});
   }
   if (analysis_) {
-    analysis_->after_step(time_, h, prm.time.duration, scene_.particles, scene_.barriers, *interactions_);
+    analysis_->after_step(time_, h, prm.time.duration, reached(prm.time.duration), scene_.particles, scene_.barriers,
+                          *interactions_);
     if (analysis_recording_) interactions_->particle_contacts().record_contacts(false);
     analysis_recording_ = false;
   }

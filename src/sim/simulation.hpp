@@ -56,6 +56,9 @@ class Simulation {
   Simulation& operator=(const Simulation&) = delete;
 
   RunSummary run();  // runs to [time] duration; the summary says how trustworthy the run was
+  // Whether the time has reached `end` (s): only round-off of the time separates them. step(end)
+  // takes a step whole when it ends within that of `end`, and cuts it to land on `end` otherwise.
+  bool reached(double end) const;
 
   // run() in parts, for callers that act between steps (the Python module): start() opens the
   // outputs and writes the first snapshots (once; step() and finish() call it); step(end) takes one
@@ -183,6 +186,17 @@ class Simulation {
   std::unique_ptr<Sinks> sinks_;               // null without [[sink]]
   double time_ = 0.0;                          // s
   std::uint64_t steps_ = 0;
+  // The time after a step of h: time_ = clock_time_ + (steps_ - clock_step_) * clock_dt_ while the
+  // steps keep their length (a function of the step count: no round-off accumulates, a run in
+  // parts or resumed is the same run); a step of another length starts the count again at its
+  // start. Adaptive steps add their length (clock_dt_ NaN). Not in the checkpoint: a resume counts
+  // from t = 0 when the checkpoint's time is steps * time.dt, else from the checkpoint.
+  void advance_clock(double h, bool adaptive);
+  double round_off(double end) const;  // s, how far from `end` the time still counts as there
+  double clock_time_ = 0.0;            // s
+  std::uint64_t clock_step_ = 0;
+  double clock_dt_ = 0.0;  // s
+  double last_h_ = 0.0;    // s, the length of the last accepted step
   std::uint64_t evaluations_ = 0;
   std::uint64_t redone_ = 0;     // adaptive steps redone with a smaller dt
   double dt_ = 0.0;              // s, step the next adaptive step tries

@@ -59,7 +59,7 @@ std::string summary_line(const RunSummary& s) {
 std::string counts_line(const RunSummary& s) {
   std::string line = fmt::format("{} steps, {} interaction evaluations, {} particles removed at the domain boundary",
                                  s.steps, s.evaluations, s.removed);
-  if (s.open) line += fmt::format(", {} in sinks", s.sunk);
+  if (s.sinks) line += fmt::format(", {} in sinks", s.sunk);
   return line;
 }
 

@@ -54,7 +54,8 @@ struct RunSummary {
   // An open system (inlets or sinks): energy enters and leaves after t = 0, so the start balance
   // alone is no measure of it (0 J for a silo filled from empty).
   bool open = false;
-  std::size_t sunk = 0;          // particles removed by the sinks
+  bool sinks = false;            // the scene has sinks
+  std::size_t sunk = 0;          // particles removed by them
   double inserted_energy = 0.0;  // J, what the inlets' particles brought in
   double dissipated = 0.0;       // J, damping + friction dissipated over the run
 };

@@ -112,6 +112,7 @@ std::string Simulation::open_system_summary() const {
 
 void Simulation::summarise_open_system(RunSummary& sum) const {
   sum.open = inlets_ || sinks_;
+  sum.sinks = sinks_ != nullptr;
   sum.inserted_energy = inlets_ ? inlets_->inserted_energy() : 0.0;
   sum.dissipated = stats().damping_dissipated + stats().friction_dissipated;
   if (sinks_)

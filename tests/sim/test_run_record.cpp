@@ -155,9 +155,10 @@ TEST(RunRecord, OpenSystemDriftAgainstTheDissipatedEnergy) {
   s.steps = 10;
   s.evaluations = 11;
   s.removed = 3;
+  s.sinks = true;
   s.sunk = 4;
   EXPECT_EQ(counts_line(s),
             "10 steps, 11 interaction evaluations, 3 particles removed at the domain boundary, 4 in sinks");
-  s.open = false;
+  s.sinks = false;  // inlets only
   EXPECT_EQ(counts_line(s), "10 steps, 11 interaction evaluations, 3 particles removed at the domain boundary");
 }

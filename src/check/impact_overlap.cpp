@@ -13,11 +13,16 @@
 #include "physics/barrier_moduli.hpp"
 #include "physics/hertz.hpp"
 #include "physics/time_step_estimate.hpp"
+#include "sim/inlets.hpp"
 
 namespace mpdem {
 
 std::string ImpactSpeed::origin() const {
   if (speed <= 0.0) return "no initial motion and no fall";
+  if (!inlet.empty())
+    return inlet_fall > 0.0 ? fmt::format("inlet '{}': inserted at {:.3g} m/s, then a fall of {:.3g} m under gravity",
+                                          inlet, insertion_speed, inlet_fall)
+                            : fmt::format("inlet '{}': inserted at {:.3g} m/s", inlet, insertion_speed);
   if (fastest >= speed) return "the fastest initial particle speed";
   return fmt::format("a fall of {:.3g} m under gravity", fall_height);
 }
@@ -29,24 +34,48 @@ ImpactSpeed expected_impact_speed(const Scene& scene) {
   ImpactSpeed s;
   for (std::size_t i = 0; i < p.size(); ++i) s.fastest = std::max(s.fastest, norm(p.v[i]));
   const double g = norm(prm.fields.gravity);
-  if (g > 0.0 && p.size() > 0) {
-    const Vec3 down = prm.fields.gravity / g;
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    const auto take = [&](const Vec3& x) {
-      lo = std::min(lo, dot(down, x));
-      hi = std::max(hi, dot(down, x));
-    };
-    for (const Vec3& x : p.x) take(x);
-    for (std::size_t e = 0; e < b.size(); ++e)
-      for (int k = 0; k < 3; ++k) take(b.vertex(e, k));
-    s.fall_height = hi - lo;
-    if (prm.domain.bounded) {
-      const Vec3 ext = prm.domain.max - prm.domain.min;
-      s.fall_height = std::min(s.fall_height,
-                               std::abs(down.x) * ext.x + std::abs(down.y) * ext.y + std::abs(down.z) * ext.z);
+  const Vec3 down = g > 0.0 ? prm.fields.gravity / g : Vec3{};
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;  // m, along gravity
+  const auto take = [&](const Vec3& x) {
+    lo = std::min(lo, dot(down, x));
+    hi = std::max(hi, dot(down, x));
+  };
+  for (const Vec3& x : p.x) take(x);
+  for (std::size_t e = 0; e < b.size(); ++e)
+    for (int k = 0; k < 3; ++k) take(b.vertex(e, k));
+  // m, the domain's extent along gravity and its lowest point
+  double extent = std::numeric_limits<double>::infinity(), bottom = extent;
+  if (prm.domain.bounded) {
+    const Vec3 ext = prm.domain.max - prm.domain.min;
+    extent = std::abs(down.x) * ext.x + std::abs(down.y) * ext.y + std::abs(down.z) * ext.z;
+    bottom = dot(down, (prm.domain.min + prm.domain.max) * 0.5) + 0.5 * extent;
+  }
+  if (g > 0.0 && p.size() > 0) s.fall_height = std::min(hi - lo, extent);
+  s.speed = std::max(s.fastest, std::sqrt(2.0 * g * s.fall_height));
+  // The inlets' particles: the top of each volume (the centres of its smallest particles) falls
+  // to the lowest point of everything, its own and the other inlets' volumes included.
+  std::vector<std::pair<double, double>> tops;  // per inlet: m, top along gravity; m/s, insertion speed
+  for (const InletSpec& in : prm.inlets) {
+    Vec3 a, c;
+    if (!inlet_centre_box(in.volume, in.radius.smallest(), a, c)) inlet_centre_box(in.volume, 0.0, a, c);
+    double top = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 8; ++k) {
+      const Vec3 x{k & 1 ? c.x : a.x, k & 2 ? c.y : a.y, k & 4 ? c.z : a.z};
+      take(x);
+      top = std::min(top, dot(down, x));
+    }
+    tops.emplace_back(top, norm(in.velocity) + std::sqrt(3.0) * in.velocity_spread);
+  }
+  for (std::size_t j = 0; j < tops.size(); ++j) {
+    const double fall = g > 0.0 ? std::max(0.0, std::min(hi, bottom) - tops[j].first) : 0.0;  // m
+    const double v = std::sqrt(tops[j].second * tops[j].second + 2.0 * g * fall);             // m/s
+    if (v > s.speed) {
+      s.speed = v;
+      s.inlet = prm.inlets[j].name;
+      s.insertion_speed = tops[j].second;
+      s.inlet_fall = fall;
     }
   }
-  s.speed = std::max(s.fastest, std::sqrt(2.0 * g * s.fall_height));
   return s;
 }
 
@@ -78,6 +107,14 @@ std::vector<ImpactEstimate> impact_estimates(const Scene& scene, double speed) {
     r.lo = std::min(r.lo, p.radius[i]);
     r.hi = std::max(r.hi, p.radius[i]);
     ++r.count;
+  }
+  for (const InletSpec& in : scene.model.params.inlets) {  // many particles each, from the smallest to the largest
+    const int k = in.material.empty() ? 0 : scene.model.material_index(in.material);
+    if (k < 0 || static_cast<std::size_t>(k) >= mats.size() || !(in.radius.smallest() > 0.0)) continue;
+    RadiusRange& r = radii[static_cast<std::size_t>(k)];
+    r.lo = std::min(r.lo, in.radius.smallest());
+    r.hi = std::max(r.hi, in.radius.largest());
+    r.count += 2;
   }
   for (const int m : bars.material)
     if (m >= 0) barrier_material[static_cast<std::size_t>(m)] = 1;

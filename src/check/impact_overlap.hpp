@@ -11,16 +11,21 @@
 
 namespace mpdem {
 
-// The expected impact speed: the fastest initial particle, or a free fall over the scene's
-// height along gravity (particle centres and barrier vertices; at most the domain's extent
-// along gravity when it is bounded), whichever is faster.
+// The expected impact speed: the fastest initial particle, a free fall over the scene's height
+// along gravity (particle centres and barrier vertices; at most the domain's extent along
+// gravity when it is bounded), or the fastest inlet's particles, whichever is faster. An inlet's
+// particles reach sqrt(v^2 + 2 |g| H): v their largest insertion speed (|velocity| + sqrt(3)
+// velocity_spread), H the fall from the top of the inlet's volume to the lowest point of the
+// scene (particle centres, barrier vertices, inlet volumes; not below a bounded domain).
 struct ImpactSpeed {
-  double speed = 0.0;          // m/s, max(fastest, sqrt(2 |g| fall_height))
-  double fastest = 0.0;        // m/s, largest initial particle speed
-  double fall_height = 0.0;    // m, extent along gravity
-  std::string origin() const;  // what sets it: "a fall of 0.47 m under gravity", ...
+  double speed = 0.0;            // m/s, the largest of the three
+  double fastest = 0.0;          // m/s, largest initial particle speed
+  double fall_height = 0.0;      // m, extent along gravity (0 without particles)
+  std::string inlet;             // the fastest inlet's name when it sets the speed, else ""
+  double insertion_speed = 0.0;  // m/s, that inlet's largest insertion speed
+  double inlet_fall = 0.0;       // m, that inlet's fall
+  std::string origin() const;    // what sets it: "a fall of 0.47 m under gravity", ...
 };
-
 ImpactSpeed expected_impact_speed(const Scene& scene);
 
 // Peak overlap of a head-on impact at `speed` between particles of materials a and b (equal
@@ -35,7 +40,8 @@ struct ImpactEstimate {
   double ratio = 0.0;    // -, overlap / radius, as checks.max_overlap measures it
 };
 
-// Every pair of materials the scene's particles and barrier elements have, deepest first.
+// Every pair of materials the scene's particles (those present and those its inlets insert) and
+// barrier elements have, deepest first.
 std::vector<ImpactEstimate> impact_estimates(const Scene& scene, double speed);
 
 }  // namespace mpdem

@@ -24,8 +24,15 @@ void check_region_walls(const Scene& scene, SceneProblems& out);
 // A periodic [domain] (errors): barrier elements crossing a periodic face at t = 0 (a wall is
 // not copied across the period), and periods shorter than twice the neighbour search's reach.
 void check_periodic_domain(const Scene& scene, SceneProblems& out);
-// Estimated peak overlap of an impact at the expected speed per material pair against
-// checks.max_overlap (warnings).
+// Barrier elements whose motion carries them across a periodic face after t = 0, before the
+// run's end (errors; the run starts with a warning: it goes on, wrongly, from then on).
+void check_periodic_motion(const Scene& scene, SceneProblems& out);
+// [[inlet]] entries (check/inlet_checks.cpp): a volume where the centres of its particles lie
+// entirely outside a bounded domain (error; refuses the run with on_exit = "stop") or partly
+// (error with on_exit = "stop", else a warning), a start at or after the run's end (warning).
+void check_inlets(const Scene& scene, SceneProblems& out);
+// Estimated peak overlap of an impact at the expected speed (initial particles, falls, inlets)
+// per material pair against checks.max_overlap (warnings).
 void check_impact_overlaps(const Scene& scene, SceneProblems& out);
 
 // At most this many ids (or pairs) are listed in one message; the rest are counted.

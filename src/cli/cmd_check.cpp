@@ -11,13 +11,14 @@ namespace mpdem::cli {
 int check_command(const std::filesystem::path& scene_file) {
   const Scene scene = load_scene(scene_file);
   print_summary(scene);
-  warn_about_time_step(scene);
+  const std::size_t dt_warning = warn_about_time_step(scene) ? 1 : 0;
   std::fflush(stdout);  // the summary before the problems (stderr) also when both go to one pipe
   const SceneProblems problems = check_scene(scene);
   const std::size_t errors = print_problems(problems, false);
-  if (!problems.empty())
-    fmt::print(stderr, "check: {} error{}, {} warning{} before step 1\n", errors, errors == 1 ? "" : "s",
-               problems.size() - errors, problems.size() - errors == 1 ? "" : "s");
+  const std::size_t warnings = problems.size() - errors + dt_warning;
+  // Always the closing count, also "0 errors, 0 warnings": a script can rely on the line.
+  fmt::print(stderr, "check: {} error{}, {} warning{} before step 1\n", errors, errors == 1 ? "" : "s", warnings,
+             warnings == 1 ? "" : "s");
   return errors > 0 ? 2 : 0;
 }
 

@@ -47,8 +47,7 @@ int run_command(const RunArgs& args) {
   const RunSummary s = sim.run();
   if (!speaks) return 0;
   if (!args.quiet) {
-    fmt::print(stderr, "{} steps, {} interaction evaluations, {} particles removed\n", s.steps, s.evaluations,
-               s.removed);
+    fmt::print(stderr, "{}\n", counts_line(s));
     fmt::print(stderr, "{}\n", summary_line(s));
   }
   // Even with --quiet: the run is complete but its results are suspect. The exit status stays 0

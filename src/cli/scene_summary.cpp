@@ -121,8 +121,11 @@ void print_summary(const Scene& scene) {
     q += p.charge[i];
   }
   fmt::print("scene: {}\n", scene.file.string());
-  fmt::print("particles: {}  total mass {:.6g} kg  radius {:.4g} .. {:.4g} m  total charge {:.4g} C\n", p.size(), mass,
-             p.size() ? rmin : 0.0, rmax, q);
+  if (p.size() == 0)
+    fmt::print("particles: 0 at t = 0{}\n", prm.inlets.empty() ? "" : " (the inlets below insert them)");
+  else
+    fmt::print("particles: {}  total mass {:.6g} kg  radius {:.4g} .. {:.4g} m  total charge {:.4g} C\n", p.size(),
+               mass, rmin, rmax, q);
   fmt::print("materials: {}\n", scene.model.materials.size());
   for (const Material& m : scene.model.materials)
     fmt::print("  {:<16} density {:.6g} kg/m^3  E {}  nu {:.4g}\n", m.name, m.density,
@@ -140,6 +143,7 @@ void print_summary(const Scene& scene) {
     fmt::print("  {:<16} {} triangles{}, area {:.6g} m^2\n", b.group_names[g], n,
                rigid == 0 ? "" : (rigid == n ? " (rigid)" : " (" + std::to_string(rigid) + " rigid)"), area);
   }
+  print_entries(scene);
   fmt::print("integrator: {}  phi {}  dt {:.4g} s  duration {:.6g} s  ({:.0f} steps)\n",
              prm.time.integrator == Integrator::Verlet ? "verlet" : "trapezoidal", prm.time.phi, prm.time.dt,
              prm.time.duration, std::ceil(prm.time.duration / prm.time.dt));
@@ -150,14 +154,15 @@ void print_summary(const Scene& scene) {
              a.hertz ? "min of 0.2 x Rayleigh time and contact time / 50" : "contact time / 50");
 }
 
-void warn_about_time_step(const Scene& scene) {
+bool warn_about_time_step(const Scene& scene) {
   const TimeStepAdvice a = time_step_advice(scene);
-  if (a.recommended > 0.0 && scene.model.params.time.dt > a.recommended)
-    fmt::print(stderr,
-               "warning: time.dt = {:.4g} s exceeds the recommended {:.4g} s ({}{} {:.4g} s / 50); contacts may be "
-               "under-resolved\n",
-               scene.model.params.time.dt, a.recommended, a.hertz ? rayleigh_text(a) + " x 0.2, " : "", contact_text(a),
-               std::min(a.contact_pp, a.contact_pb > 0 ? a.contact_pb : a.contact_pp));
+  if (!(a.recommended > 0.0 && scene.model.params.time.dt > a.recommended)) return false;
+  fmt::print(stderr,
+             "warning: time.dt = {:.4g} s exceeds the recommended {:.4g} s ({}{} {:.4g} s / 50); contacts may be "
+             "under-resolved\n",
+             scene.model.params.time.dt, a.recommended, a.hertz ? rayleigh_text(a) + " x 0.2, " : "", contact_text(a),
+             std::min(a.contact_pp, a.contact_pb > 0 ? a.contact_pb : a.contact_pp));
+  return true;
 }
 
 std::size_t print_problems(const SceneProblems& problems, bool for_run) {

@@ -19,9 +19,13 @@ struct TimeStepAdvice {
 };
 
 TimeStepAdvice time_step_advice(const Scene& scene);
+// The scene's parts (particles, materials, barriers, inlets, sinks, coarse grain, outputs), the
+// time step and its recommendation, on stdout.
 void print_summary(const Scene& scene);
-// Warns on stderr when time.dt exceeds the recommended step.
-void warn_about_time_step(const Scene& scene);
+// The summary's lines for inlets, sinks, coarse-grained fields and outputs (summary_entries.cpp).
+void print_entries(const Scene& scene);
+// Warns on stderr when time.dt exceeds the recommended step; returns whether it did.
+bool warn_about_time_step(const Scene& scene);
 // Prints every problem on stderr as "error: " or "warning: " and its location. for_run: only the
 // problems that would stop the run are errors, the others warn. Returns how many were errors.
 std::size_t print_problems(const SceneProblems& problems, bool for_run);

@@ -159,4 +159,15 @@ double RadiusDistribution::smallest() const {
   return 0.0;
 }
 
+double RadiusDistribution::largest() const {
+  switch (law) {
+    case RadiusLaw::Constant: return value;
+    case RadiusLaw::Discrete: return radii.empty() ? 0.0 : *std::max_element(radii.begin(), radii.end());
+    case RadiusLaw::Uniform:
+    case RadiusLaw::Normal:
+    case RadiusLaw::LogNormal: return max > 0.0 ? max : mean + 3.0 * std;
+  }
+  return 0.0;
+}
+
 }  // namespace mpdem

@@ -31,6 +31,9 @@ struct RadiusDistribution {
   // m, the smallest radius it gives (its lower bound; for a log-normal without one, half its
   // mean), for defaults that scale with the particles (the neighbour skin).
   double smallest() const;
+  // m, the largest radius it gives (its upper bound; for a log-normal without one, its mean + 3
+  // std), for estimates that need the largest particles (the checks' impact overlap).
+  double largest() const;
   // Human-readable summary for messages and the CLI ("uniform [0.001, 0.002] m").
   std::string describe() const;
 };

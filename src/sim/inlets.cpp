@@ -38,6 +38,30 @@ Vec3 to_world(const InsertionVolume& vol, const Vec3& a) {
 }
 }  // namespace
 
+bool inlet_centre_box(const InsertionVolume& vol, double inset, Vec3& lo, Vec3& hi) {
+  // The centres' region, the volume shrunk by `inset`, as a box of the frame [a, b].
+  const RegionSpec& spec = vol.region;
+  Vec3 a = spec.min + Vec3{inset, inset, inset}, b = spec.max - Vec3{inset, inset, inset};
+  if (spec.shape == RegionShape::Cylinder) {  // in world coordinates (identity frame): its tight box
+    const double h = norm(spec.axis);
+    if (!(spec.radius > inset && h > 2.0 * inset)) return false;
+    RegionSpec c = spec;
+    c.base += spec.axis * (inset / h);
+    c.axis *= 1.0 - 2.0 * inset / h;
+    c.radius -= inset;
+    const Region region(c, "inlet", 0);
+    a = region.lo();
+    b = region.hi();
+  }
+  if (!(a.x <= b.x && a.y <= b.y && a.z <= b.z)) return false;
+  for (int c = 0; c < 8; ++c) {  // the frame box's eight corners in the world
+    const Vec3 w = to_world(vol, {c & 1 ? b.x : a.x, c & 2 ? b.y : a.y, c & 4 ? b.z : a.z});
+    lo = c == 0 ? w : Vec3{std::min(lo.x, w.x), std::min(lo.y, w.y), std::min(lo.z, w.z)};
+    hi = c == 0 ? w : Vec3{std::max(hi.x, w.x), std::max(hi.y, w.y), std::max(hi.z, w.z)};
+  }
+  return true;
+}
+
 Inlets::Inlets(const Model& model, const Particles& p) : model_(model) {
   const Params& prm = model.params;
   for (const InletSpec& s : prm.inlets) {
@@ -50,13 +74,7 @@ Inlets::Inlets(const Model& model, const Particles& p) : model_(model) {
              s.interval > 0.0 ? s.interval : kIntervalSteps * prm.time.dt,
              {},
              {}};
-    // World bounding box of the volume: its frame box's eight corners.
-    for (int c = 0; c < 8; ++c) {
-      const Vec3 lo = in.region.lo(), hi = in.region.hi();
-      const Vec3 w = to_world(s.volume, {c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z});
-      in.lo = c == 0 ? w : Vec3{std::min(in.lo.x, w.x), std::min(in.lo.y, w.y), std::min(in.lo.z, w.z)};
-      in.hi = c == 0 ? w : Vec3{std::max(in.hi.x, w.x), std::max(in.hi.y, w.y), std::max(in.hi.z, w.z)};
-    }
+    inlet_centre_box(s.volume, 0.0, in.lo, in.hi);
     inlets_.push_back(std::move(in));
   }
   state_.resize(inlets_.size());

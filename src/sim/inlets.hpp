@@ -26,6 +26,11 @@
 
 namespace mpdem {
 
+// m, the world box [lo, hi] holding the centres of the particles of radius `inset` (m) an inlet can
+// place in `vol` (inset 0: the volume itself); tight for boxes, cylinders and discs. False when
+// no such particle fits.
+bool inlet_centre_box(const InsertionVolume& vol, double inset, Vec3& lo, Vec3& hi);
+
 class Inlets {
  public:
   // The scene's inlets (model.params.inlets); `p`: the particles at the start (the first id).

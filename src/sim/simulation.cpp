@@ -366,6 +366,7 @@ RunSummary Simulation::finish() {
   if (inlets_ || sinks_) progress_->summary(open_system_summary());  // the final totals
   progress_->finish(time_, steps_);
   RunSummary sum{time_, steps_, steps_ - first_step_, evaluations_, removed_, record_, prm.checks.energy_drift, ""};
+  summarise_open_system(sum);
   // Work and potential the balance leaves out make its drift meaningless as a measure of the step.
   if (prm.near_field.cutoff > 0.0) sum.drift_unchecked = "the near field's potential is not in the balance";
   if (output_) {

@@ -134,6 +134,7 @@ class Simulation {
   ParticleTotals totals() const;            // the sums over every rank's particles for the global log
   void log_row(GlobalLogRow row);           // a global log row, with the inlets' and sinks' columns
   std::string open_system_summary() const;  // the inlets' and sinks' line for stderr ("" = none)
+  void summarise_open_system(RunSummary& sum) const;  // its totals for the end-of-run verdict
   // J, mechanical energy + cumulative dissipation + what removed particles took along, from the
   // scan of the particles.
   double energy_balance(const StateScan& s) const;

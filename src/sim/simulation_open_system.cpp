@@ -110,4 +110,13 @@ std::string Simulation::open_system_summary() const {
   return in.empty() || out.empty() ? in + out : in + "; " + out;
 }
 
+void Simulation::summarise_open_system(RunSummary& sum) const {
+  sum.open = inlets_ || sinks_;
+  sum.sinks = sinks_ != nullptr;
+  sum.inserted_energy = inlets_ ? inlets_->inserted_energy() : 0.0;
+  sum.dissipated = stats().damping_dissipated + stats().friction_dissipated;
+  if (sinks_)
+    for (const Sinks::State& s : sinks_->states()) sum.sunk += s.removed;
+}
+
 }  // namespace mpdem

@@ -114,3 +114,51 @@ TEST(RunRecord, DriftWarningAboveTheThresholdOnly) {
   r.peak_active = 5.0;
   EXPECT_DOUBLE_EQ(energy_drift(r), 0.1);
 }
+
+// Issue 45 item 4: an open system's drift is measured against the energy the run handled (here
+// the 5.6 J the contacts dissipated), not a start balance of 0 J; a closed one as before.
+TEST(RunRecord, OpenSystemDriftAgainstTheDissipatedEnergy) {
+  RunSummary s;
+  s.time = 1.0;
+  s.drift_limit = 0.05;
+  s.record.started = true;
+  s.record.balance = 0.12;  // J, from 0 J at the start (filled from empty)
+  s.record.peak_active = 0.6;
+  s.inserted_energy = 5.7;
+  s.dissipated = 5.6;
+  // Closed (as before): against the largest kinetic + elastic energy, 20 %.
+  EXPECT_DOUBLE_EQ(energy_drift(s), 0.2);
+  EXPECT_NE(drift_warning(s).find("rose by 20%"), std::string::npos) << drift_warning(s);
+  s.open = true;
+  EXPECT_EQ(drift_reference(s).energy, 5.6);
+  EXPECT_STREQ(drift_reference(s).what, "the energy dissipated");
+  EXPECT_DOUBLE_EQ(energy_drift(s), 0.12 / 5.6);
+  EXPECT_EQ(drift_warning(s), "");
+  EXPECT_NE(summary_line(s).find("energy balance drift +2.14% of the energy dissipated, 5.6 J (an open system: the "
+                                 "balance 0 J at the start, 0.12 J at the end; inlets brought 5.7 J)"),
+            std::string::npos)
+      << summary_line(s);
+  // Little dissipated (particles passing through): the largest kinetic + elastic energy.
+  s.dissipated = 0.1;
+  EXPECT_DOUBLE_EQ(energy_drift(s), 0.2);
+  const std::string w = drift_warning(s);
+  EXPECT_NE(w.find("warning: the energy balance rose by 20% of the largest kinetic + rotational + elastic energy, "
+                   "0.6 J (an open system"),
+            std::string::npos)
+      << w;
+  EXPECT_NE(w.find("not to be trusted"), std::string::npos) << w;
+  // A start balance larger than both (a discharge from a full silo) stays the reference.
+  s.record.start_balance = 10.0;
+  s.record.balance = 10.12;
+  EXPECT_NEAR(energy_drift(s), 0.012, 1e-12);  // 0.12 J of the 10 J
+  // Sinks' removals beside the domain exits.
+  s.steps = 10;
+  s.evaluations = 11;
+  s.removed = 3;
+  s.sinks = true;
+  s.sunk = 4;
+  EXPECT_EQ(counts_line(s),
+            "10 steps, 11 interaction evaluations, 3 particles removed at the domain boundary, 4 in sinks");
+  s.sinks = false;  // inlets only
+  EXPECT_EQ(counts_line(s), "10 steps, 11 interaction evaluations, 3 particles removed at the domain boundary");
+}

@@ -82,6 +82,7 @@ stop() {
     local ranks
     ranks=$(ranks_of "$job")
     if [ "$(printf '%s\n' "$ranks" | grep -c .)" -eq "$NP" ]; then
+      # shellcheck disable=SC2086  # one word per rank
       kill -TERM $ranks
     else
       fail "$name: $NP ranks expected as the children of process $job, found: $ranks"

@@ -7,6 +7,7 @@
 
 #include "cli/bench_command.hpp"
 #include "cli/commands.hpp"
+#include "cli/mpi_launcher.hpp"
 #include "cli/openmp_environment.hpp"
 #include "cli/plot_command.hpp"
 #include "cli/run_paths.hpp"
@@ -106,7 +107,8 @@ int dispatch(int argc, char** argv) {
     if (comm.rank() != 0) return 128 + e.signal;  // every rank stops at the same step
     fmt::print(stderr, "\nstopped by signal {} at t = {:.9g} s (step {}).\n", e.signal, e.time, e.step);
     if (!e.checkpoint.empty())
-      fmt::print(stderr, "checkpoint written to {}\nresume with: {}\n", e.checkpoint.string(),
+      fmt::print(stderr, "checkpoint written to {}\nresume with: {}{}\n", e.checkpoint.string(),
+                 mpdem::cli::launcher_command(comm.size()),
                  mpdem::cli::resume_command(argc > 0 ? argv[0] : "mpdem", run, e.checkpoint));
     return 128 + e.signal;
   } catch (const mpdem::RunError& e) {

@@ -1,10 +1,12 @@
 #include "parallel/communicator.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 #ifdef MPDEM_HAVE_MPI
@@ -46,6 +48,33 @@ bool mpi_running() {
 #ifdef MPDEM_HAVE_MPI
 // The communicator of a Fortran handle (an int, so that the header needs no MPI type).
 MPI_Comm mpi_comm(int handle) { return MPI_Comm_f2c(handle); }
+
+// Waits until every request is complete (statuses: one per request, or MPI_STATUSES_IGNORE).
+// MPI's own waits poll without pause, so a waiting rank holds its core for whole time slices;
+// where the cores are shared (other programs, more ranks than cores) the rank it waits for may be
+// waiting for a core, and a small scene crawled (docs/parallel.md, "Shared machines"). So: poll
+// for kSpin, which covers the usual waits of ranks that each have a core (a shorter spin gave the
+// core away too often and was slower), then sleep kNap between polls, which leaves the core to
+// the others. All calls are non-blocking ones completed here.
+void complete(std::span<MPI_Request> requests, MPI_Status* statuses) {
+  constexpr auto kSpin = std::chrono::microseconds(200);
+  constexpr auto kNap = std::chrono::microseconds(20);  // the kernel adds its timer slack (50 us)
+  const int n = static_cast<int>(requests.size());
+  int done = 0;
+  MPI_Testall(n, requests.data(), &done, statuses);
+  if (done) return;
+  const auto spin_end = std::chrono::steady_clock::now() + kSpin;
+  while (std::chrono::steady_clock::now() < spin_end) {
+    MPI_Testall(n, requests.data(), &done, statuses);
+    if (done) return;
+  }
+  for (;;) {
+    std::this_thread::sleep_for(kNap);
+    MPI_Testall(n, requests.data(), &done, statuses);
+    if (done) return;
+  }
+}
+void complete(MPI_Request& request) { complete(std::span<MPI_Request>(&request, 1), MPI_STATUSES_IGNORE); }
 
 int checked_count(std::size_t n) {
   if (n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
@@ -142,12 +171,16 @@ std::vector<std::byte> Communicator::exchange(int to, std::span<const std::byte>
   // Sizes first, then the bytes: a receiver cannot know a message's length in advance.
   const int dest = to < 0 ? MPI_PROC_NULL : to, source = from < 0 ? MPI_PROC_NULL : from;
   std::uint64_t n_out = out.size(), n_in = 0;
-  MPI_Sendrecv(&n_out, 1, MPI_UINT64_T, dest, tag, &n_in, 1, MPI_UINT64_T, source, tag, mpi_comm(handle_),
-               MPI_STATUS_IGNORE);
+  const MPI_Comm comm = mpi_comm(handle_);
+  MPI_Request r[2];
+  MPI_Irecv(&n_in, 1, MPI_UINT64_T, source, tag, comm, &r[0]);
+  MPI_Isend(&n_out, 1, MPI_UINT64_T, dest, tag, comm, &r[1]);
+  complete(r, MPI_STATUSES_IGNORE);
   if (source == MPI_PROC_NULL) n_in = 0;
   std::vector<std::byte> in(static_cast<std::size_t>(n_in));
-  MPI_Sendrecv(out.data(), checked_count(out.size()), MPI_BYTE, dest, tag + 1, in.data(), checked_count(in.size()),
-               MPI_BYTE, source, tag + 1, mpi_comm(handle_), MPI_STATUS_IGNORE);
+  MPI_Irecv(in.data(), checked_count(in.size()), MPI_BYTE, source, tag + 1, comm, &r[0]);
+  MPI_Isend(out.data(), checked_count(out.size()), MPI_BYTE, dest, tag + 1, comm, &r[1]);
+  complete(r, MPI_STATUSES_IGNORE);
   return in;
 #else
   (void)tag;
@@ -194,7 +227,7 @@ std::vector<std::vector<std::byte>> Communicator::exchange_known(std::span<const
               &requests.back());
   }
   std::vector<MPI_Status> status(requests.size());
-  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), status.data());
+  complete(requests, status.data());
   for (std::size_t r = 0; r < n_recv; ++r) {
     int got = 0;
     MPI_Get_count(&status[r], MPI_BYTE, &got);
@@ -212,7 +245,9 @@ std::vector<std::byte> Communicator::all_gather_fixed(std::span<const std::byte>
 #ifdef MPDEM_HAVE_MPI
   const int n = checked_count(mine.size());
   std::vector<std::byte> all(mine.size() * static_cast<std::size_t>(size_));
-  MPI_Allgather(mine.data(), n, MPI_BYTE, all.data(), n, MPI_BYTE, mpi_comm(handle_));
+  MPI_Request req = MPI_REQUEST_NULL;
+  MPI_Iallgather(mine.data(), n, MPI_BYTE, all.data(), n, MPI_BYTE, mpi_comm(handle_), &req);
+  complete(req);
   return all;
 #else
   throw std::logic_error("Communicator::all_gather_fixed: built without MPI");
@@ -224,14 +259,18 @@ std::vector<std::vector<std::byte>> Communicator::all_gather(std::span<const std
 #ifdef MPDEM_HAVE_MPI
   const int n = checked_count(mine.size());
   std::vector<int> counts(static_cast<std::size_t>(size_)), displs(static_cast<std::size_t>(size_));
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi_comm(handle_));
+  MPI_Request req = MPI_REQUEST_NULL;
+  MPI_Iallgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi_comm(handle_), &req);
+  complete(req);
   std::size_t total = 0;
   for (int r = 0; r < size_; ++r) {
     displs[static_cast<std::size_t>(r)] = checked_count(total);
     total += static_cast<std::size_t>(counts[static_cast<std::size_t>(r)]);
   }
   std::vector<std::byte> all(total);
-  MPI_Allgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, mpi_comm(handle_));
+  MPI_Iallgatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, mpi_comm(handle_),
+                  &req);
+  complete(req);
   std::vector<std::vector<std::byte>> out(static_cast<std::size_t>(size_));
   for (std::size_t r = 0; r < out.size(); ++r) {
     const auto* b = all.data() + displs[r];
@@ -249,14 +288,18 @@ std::vector<std::vector<std::byte>> Communicator::gather(std::span<const std::by
   const int n = checked_count(mine.size());
   const bool at_root = rank_ == root;
   std::vector<int> counts(at_root ? static_cast<std::size_t>(size_) : 0), displs(counts.size());
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, root, mpi_comm(handle_));
+  MPI_Request req = MPI_REQUEST_NULL;
+  MPI_Igather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, root, mpi_comm(handle_), &req);
+  complete(req);
   std::size_t total = 0;
   for (std::size_t r = 0; r < counts.size(); ++r) {
     displs[r] = checked_count(total);
     total += static_cast<std::size_t>(counts[r]);
   }
   std::vector<std::byte> all(total);
-  MPI_Gatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, root, mpi_comm(handle_));
+  MPI_Igatherv(mine.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, root, mpi_comm(handle_),
+               &req);
+  complete(req);
   std::vector<std::vector<std::byte>> out(counts.size());
   for (std::size_t r = 0; r < out.size(); ++r) {
     const auto* b = all.data() + displs[r];
@@ -273,9 +316,12 @@ void Communicator::broadcast(std::vector<std::byte>& bytes, int root) const {
   if (serial()) return;
 #ifdef MPDEM_HAVE_MPI
   std::uint64_t n = bytes.size();
-  MPI_Bcast(&n, 1, MPI_UINT64_T, root, mpi_comm(handle_));
+  MPI_Request req = MPI_REQUEST_NULL;
+  MPI_Ibcast(&n, 1, MPI_UINT64_T, root, mpi_comm(handle_), &req);
+  complete(req);
   bytes.resize(static_cast<std::size_t>(n));
-  MPI_Bcast(bytes.data(), checked_count(bytes.size()), MPI_BYTE, root, mpi_comm(handle_));
+  MPI_Ibcast(bytes.data(), checked_count(bytes.size()), MPI_BYTE, root, mpi_comm(handle_), &req);
+  complete(req);
 #else
   (void)root;
 #endif
@@ -283,7 +329,10 @@ void Communicator::broadcast(std::vector<std::byte>& bytes, int root) const {
 
 void Communicator::barrier() const {
 #ifdef MPDEM_HAVE_MPI
-  if (!serial()) MPI_Barrier(mpi_comm(handle_));
+  if (serial()) return;
+  MPI_Request req = MPI_REQUEST_NULL;
+  MPI_Ibarrier(mpi_comm(handle_), &req);
+  complete(req);
 #endif
 }
 

@@ -40,7 +40,10 @@ int run_command(const RunArgs& args) {
   opt.output_dir = args.output;
   opt.progress = !args.quiet;
   // A resumed run continues in its own (non-empty) output folder.
-  if (args.resume.empty() && speaks) prepare_output_folder(output_dir_for(scene, opt), args.overwrite);
+  if (speaks) {
+    if (args.resume.empty()) prepare_output_folder(output_dir_for(scene, opt), args.overwrite);
+    else ensure_output_folder(output_dir_for(scene, opt));
+  }
   comm.barrier();  // (a refused folder throws on rank 0 alone: main then stops every rank)
   Simulation sim(std::move(scene), opt);
   if (!args.resume.empty()) sim.resume_from(args.resume);

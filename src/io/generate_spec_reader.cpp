@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "io/input_file.hpp"
+#include "model/derived_limits.hpp"
 #include "io/toml_section.hpp"
 
 namespace mpdem {
@@ -89,8 +90,29 @@ RadiusDistribution read_radius(const TomlSection& g, const toml::table& t) {
       break;
     }
   }
-  if (const std::string p = d.problem(); !p.empty()) s->fail(d.law == RadiusLaw::Discrete ? "fractions" : "min", p);
+  std::string key;
+  if (const std::string p = d.problem(&key); !p.empty()) s->fail(key, p);
   return d;
+}
+
+void check_box_sizes(const TomlSection& g, const Vec3& extent, std::string_view key) {
+  for (int c = 0; c < 3; ++c)
+    if (!std::isfinite(extent[c]))
+      g.fail(key, std::string("the region's extent along ") + "xyz"[c] + " overflows (" + number_text(extent[c]) +
+                      " m); expected a region of finite size");
+  if (const std::string p = usable_problem(extent.x * extent.y * extent.z, "the region's volume", "m^3"); !p.empty())
+    g.fail(key, p + "; expected a finite volume > 0");
+}
+
+void check_cylinder_sizes(const TomlSection& g, const Vec3& axis, double radius, std::string_view axis_key,
+                          std::string_view radius_key) {
+  if (const std::string p = usable_problem(norm2(axis), "the squared axis length", "m^2"); !p.empty())
+    g.fail(axis_key, p + "; expected an axis whose length and its square are finite and > 0");
+  if (const std::string p = usable_problem(radius * radius, "the squared radius", "m^2"); !p.empty())
+    g.fail(radius_key, p + "; expected a radius whose square is finite and > 0");
+  const double volume = 3.14159265358979323846 * radius * radius * std::sqrt(norm2(axis));
+  if (const std::string p = usable_problem(volume, "the cylinder's volume", "m^3"); !p.empty())
+    g.fail(radius_key, p + "; expected a finite volume > 0");
 }
 
 RegionSpec read_box_region(const TomlSection& g) {
@@ -102,17 +124,20 @@ RegionSpec read_box_region(const TomlSection& g) {
     if (!(r.min[c] < r.max[c]))
       g.fail("max", std::string("expected max > min in every component, got ") + "xyz"[c] + ": min " +
                         number_text(r.min[c]) + " >= max " + number_text(r.max[c]));
+  check_box_sizes(g, r.max - r.min, "max");
   return r;
 }
 
 RegionSpec read_cylinder_region(const TomlSection& g) {
   const Vec3 axis = g.require(g.vec3("axis"), "axis");
   if (!(norm(axis) > 0.0)) g.fail("axis", "expected a non-zero vector (base centre -> top centre)");
-  return {.shape = RegionShape::Cylinder,
-          .base = g.require(g.vec3("base"), "base"),
-          .axis = axis,
-          .radius = g.require(g.number("cylinder_radius", kPositive), "cylinder_radius"),
-          .mesh = {}};
+  RegionSpec r{.shape = RegionShape::Cylinder,
+               .base = g.require(g.vec3("base"), "base"),
+               .axis = axis,
+               .radius = g.require(g.number("cylinder_radius", kPositive), "cylinder_radius"),
+               .mesh = {}};
+  check_cylinder_sizes(g, r.axis, r.radius, "axis", "cylinder_radius");
+  return r;
 }
 
 GenerateSpec read_generate_spec(const std::string& file, const toml::table& table, const std::string& path,

@@ -20,6 +20,12 @@ RadiusDistribution read_radius(const TomlSection& g, const toml::table& t);
 RegionSpec read_box_region(const TomlSection& g);
 //   `base`, `axis` (base centre -> top centre), `cylinder_radius` of a cylinder.
 RegionSpec read_cylinder_region(const TomlSection& g);
+// What the run derives from a region's size must be usable (docs/scene.md "Derived limits"):
+// a box's extents finite and its volume finite and > 0 (else fails at `key`); a cylinder's
+// squared axis length (at `axis_key`), squared radius and volume (at `radius_key`) too.
+void check_box_sizes(const TomlSection& g, const Vec3& extent, std::string_view key);
+void check_cylinder_sizes(const TomlSection& g, const Vec3& axis, double radius, std::string_view axis_key,
+                          std::string_view radius_key);
 
 // `path` is the table's dotted key ("particles.generate"); a relative `mesh` file is resolved
 // against `dir` (the scene file's folder) and must exist.

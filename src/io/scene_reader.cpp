@@ -264,8 +264,13 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
       m->get("w1", src.motion.w1);
       m->get("B", src.motion.B);
       m->get("w2", src.motion.w2);
-      if (const auto r = m->table("rotation", {"axis", "origin", "omega", "omega_table"}))
-        src.motion.rotation = read_rotation(*r);
+      const auto r = m->table("rotation", {"axis", "origin", "omega", "omega_table"});
+      if (r) src.motion.rotation = read_rotation(*r);
+      std::string key;
+      if (const std::string why = src.motion.limit_problem(scene.model.params.time.duration, key); !why.empty()) {
+        if (key == "omega") r->fail(r->has("omega") ? "omega" : "omega_table", why);
+        m->fail(key, why);
+      }
     }
     read_activity(s, src.motion);
     s.get("thickness", src.thickness, kNonNegative);
@@ -282,10 +287,15 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     p.domain.bounded = true;
     p.domain.min = s->require(s->vec3("min"), "min");
     p.domain.max = s->require(s->vec3("max"), "max");
-    for (int c = 0; c < 3; ++c)
+    for (int c = 0; c < 3; ++c) {
       if (!(p.domain.min[c] < p.domain.max[c]))
         s->fail("max", std::string("expected max > min in every component, got ") + "xyz"[c] + ": min " +
                            number_text(p.domain.min[c]) + " >= max " + number_text(p.domain.max[c]));
+      // The extent is a periodic axis's period and what the brick grid divides (Derived limits).
+      const std::string what = std::string("the extent max - min along ") + "xyz"[c];
+      if (const std::string why = usable_problem(p.domain.max[c] - p.domain.min[c], what, "m"); !why.empty())
+        s->fail("max", why + "; expected a finite extent > 0");
+    }
     if (const auto e = s->string("on_exit")) {
       if (*e == "remove") p.domain.on_exit = ExitPolicy::Remove;
       else if (*e == "stop") p.domain.on_exit = ExitPolicy::Stop;
@@ -323,6 +333,9 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
                                            "format", "contacts_every", "barrier_loads"})) {
     s->get("dir", p.output.dir);
     if (p.output.dir.empty()) s->fail("dir", "expected a non-empty folder name");
+    for (const auto& part : std::filesystem::path(p.output.dir))  // each a name in the file system
+      if (part.string().size() > 255 || p.output.dir.find('\0') != std::string::npos)
+        s->fail("dir", "expected folder names of at most 255 bytes without NUL characters (a file system's limit)");
     if (const auto name = s->string("format")) {
       if (const auto f = vtk_format_from_name(*name)) p.output.format = *f;
       else s->fail("format", "expected \"ascii\", \"binary\" or \"compressed\", got \"" + *name + "\"");

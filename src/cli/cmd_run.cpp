@@ -40,13 +40,15 @@ int run_command(const RunArgs& args) {
   opt.output_dir = args.output;
   opt.progress = !args.quiet;
   // A resumed run continues in its own (non-empty) output folder.
-  if (speaks) {
-    if (args.resume.empty()) prepare_output_folder(output_dir_for(scene, opt), args.overwrite);
-    else ensure_output_folder(output_dir_for(scene, opt));
-  }
+  const std::filesystem::path dir = output_dir_for(scene, opt);
+  if (args.resume.empty() && speaks) prepare_output_folder(dir, args.overwrite);
   comm.barrier();  // (a refused folder throws on rank 0 alone: main then stops every rank)
   Simulation sim(std::move(scene), opt);
-  if (!args.resume.empty()) sim.resume_from(args.resume);
+  if (!args.resume.empty()) {
+    sim.resume_from(args.resume);
+    if (speaks) ensure_output_folder(dir);  // once the checkpoint is read: a refused one writes nothing
+    comm.barrier();
+  }
   const RunSummary s = sim.run();
   if (!speaks) return 0;
   if (!args.quiet) {

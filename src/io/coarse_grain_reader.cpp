@@ -2,10 +2,15 @@
 
 #include <fmt/core.h>
 
+#include <array>
+#include <cmath>
 #include <string>
+#include <string_view>
 
 #include "analysis/cg_kernel.hpp"
+#include "analysis/coarse_grain.hpp"
 #include "io/input_error.hpp"
+#include "model/derived_limits.hpp"
 
 namespace mpdem {
 
@@ -31,6 +36,20 @@ void check_name(const TomlSection& s, const std::string& name) {
   for (const char ch : name)
     if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f)
       s.fail("name", "expected a name without control characters (it names files)");
+}
+
+// The point spacing along each resolved axis and the length of each averaged one (the sums are
+// divided by it) must be usable; `keys[k]` is the key to blame along axis k.
+void check_extents(const TomlSection& t, const CgGrid& g, const std::array<std::string_view, 3>& keys) {
+  for (int k = 0; k < 3; ++k) {
+    const auto a = static_cast<std::size_t>(k);
+    const bool resolved = g.resolved[a];
+    const double length = (g.max[k] - g.min[k]) / (resolved ? g.cells[a] : 1);  // m
+    const std::string what = std::string(resolved ? "the point spacing (max - min) / cells" : "the averaged length") +
+                             " along " + kAxes[k];
+    if (const std::string p = usable_problem(length, what, "m"); !p.empty())
+      t.fail(keys[a], p + "; expected a finite extent whose spacing is finite and > 0");
+  }
 }
 
 // Points of the entry's grid (resolved axes only), as a double: the product cannot overflow.
@@ -113,6 +132,12 @@ void read_coarse_grain(const TomlSection& root, Model& model) {
     if (!grid && !profile) s.fail("grid", "missing required key (or profile)");
     if (grid) read_grid(*grid, c);
     else read_profile(*profile, model, c);
+    if (grid) check_extents(*grid, c.grid, {"max", "max", "max"});
+    else {
+      std::array<std::string_view, 3> keys{"extent_max", "extent_max", "extent_max"};
+      keys[static_cast<std::size_t>(c.axis)] = "max";
+      check_extents(*profile, c.grid, keys);
+    }
     points += point_count(c.grid);
     if (points > kMaxPoints)
       (grid ? *grid : *profile)
@@ -129,6 +154,12 @@ void read_coarse_grain(const TomlSection& root, Model& model) {
       else s.fail("kernel", "expected \"gaussian\" or \"lucy\", got \"" + *k + "\"");
     }
     c.width = s.require(s.number("width", kPositive), "width");
+    // The kernel's normalisation divides by width^d (d resolved axes): finite and > 0 both ways.
+    const int dims = cg_dims(c.grid);
+    if (const double wd = std::pow(c.width, dims); !usable_positive(wd) || !usable_positive(1.0 / wd))
+      s.fail("width", fmt::format("the kernel's normalisation 1 / width^{} over- or underflows (width^{} = {:g} m^{}); "
+                                  "expected a width between about 1e-100 and 1e100 m",
+                                  dims, dims, wd, dims));
     // Along a periodic resolved axis the kernel reaches through one image either side only.
     const DomainParams& d = model.params.domain;
     const double cutoff = cg_cutoff(c.kernel, c.width);  // m

@@ -62,6 +62,28 @@ TEST(DerivedSizes, CoarseGrainPointsAndNames) {
                  "coarse_grain.name", "control characters");
 }
 
+// A grid or profile whose extent overflows wrote inf coordinates and zero fields (exit 0); so did
+// a kernel width whose normalisation 1 / width^d over- or underflows.
+TEST(DerivedSizes, CoarseGrainExtentsAndWidth) {
+  const std::string cg = "[[coarse_grain]]\nevery = 0.1\n";  // lines 6-7
+  expect_refused(cg + "width = 0.01\ngrid = { min = [-1e308, 0, 0], max = [1e308, 1, 1], cells = [4, 4, 4] }\n", 9,
+                 "coarse_grain.grid.max", "the point spacing (max - min) / cells along x overflows");
+  expect_refused(cg + "width = 0.01\ngrid = { min = [0, 0, 0], max = [1e-320, 1, 1], cells = [4, 4, 4] }\n", 9,
+                 "coarse_grain.grid.max", "along x underflows");
+  expect_refused(cg + "width = 0.01\ngrid = { min = [-1e308, 0, 0], max = [1e308, 1, 1], cells = [4, 4, 4], "
+                      "average_over = [\"x\"] }\n",
+                 9, "coarse_grain.grid.max", "the averaged length along x overflows");
+  expect_refused(cg + "width = 0.01\nprofile = { axis = \"z\", min = -1e308, max = 1e308, bins = 10, extent_min = "
+                      "[0, 0, 0], extent_max = [1, 1, 1] }\n",
+                 9, "coarse_grain.profile.max", "along z overflows");
+  expect_refused(cg + "width = 0.01\nprofile = { axis = \"z\", min = 0, max = 1, bins = 10, extent_min = "
+                      "[-1e308, 0, 0], extent_max = [1e308, 1, 1] }\n",
+                 9, "coarse_grain.profile.extent_max", "the averaged length along x overflows");
+  const std::string grid = "grid = { min = [0, 0, 0], max = [1, 1, 1], cells = [4, 4, 4] }\n";
+  expect_refused(cg + "width = 1e-120\n" + grid, 8, "coarse_grain.width", "normalisation 1 / width^3");
+  expect_refused(cg + "width = 1e200\n" + grid, 8, "coarse_grain.width", "normalisation 1 / width^3");
+}
+
 // An [output] dir whose folder name exceeds a file system's 255 bytes.
 TEST(DerivedSizes, OutputFolderNames) {
   expect_refused("[output]\ndir = \"out/" + kName300 + "\"\n", 7, "output.dir", "at most 255 bytes");

@@ -83,6 +83,11 @@ std::vector<double> draw_radii(const GenerateSpec& spec, double region_volume, R
     return radii;
   }
   const double target = spec.solid_fraction * region_volume;
+  // At least target / (the largest sphere's volume) draws: refused before drawing them.
+  double largest = 0.0;  // m
+  for (const double r : spec.radius.bounding_radii(true)) largest = std::max(largest, r);
+  if (largest > 0.0 && target / sphere_volume(largest) > static_cast<double>(kMaxParticles))
+    fail("the solid fraction needs more than 5e7 particles of this size; check units");
   double sum = 0.0;
   while (sum < target) {
     const double r = spec.radius.sample(rng);

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "io/csv_log.hpp"
 #include "io/csv_table.hpp"
 #include "io/input_error.hpp"
 #include "geometry/triangle_check.hpp"
@@ -106,6 +107,8 @@ void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& so
     const Vec3 p2{t.number(row, c[X2]), t.number(row, c[Y2]), t.number(row, c[Z2])};
     const Vec3 p3{t.number(row, c[X3]), t.number(row, c[Y3]), t.number(row, c[Z3])};
     const std::string& group = t.missing(row, c[GROUP]) ? default_group : t.text(row, c[GROUP]);
+    if (!is_column_name(group))  // the default was checked with the [[barriers]] entry
+      t.fail(row, c[GROUP], "the group name names log columns: expected a name without ',', '\"' or line breaks");
     // A rigid element has no elastic constants of its own: a row's value would be ignored.
     for (const Col k : {YOUNG, POISSON})
       if (source.rigid && !t.missing(row, c[k]))

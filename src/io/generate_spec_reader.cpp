@@ -187,8 +187,7 @@ GenerateSpec read_generate_spec(const std::string& file, const toml::table& tabl
   spec.velocity = g.vec3("velocity");
   g.get("speed", spec.speed, kNonNegative);
   g.get("fixed", spec.fixed);
-  if (const auto m = g.integer("max_attempts", 1, std::numeric_limits<std::int64_t>::max()))
-    spec.max_attempts = static_cast<std::size_t>(*m);
+  if (const auto m = g.integer("max_attempts", 1, kMaxAttempts)) spec.max_attempts = static_cast<std::size_t>(*m);
   return spec;
 }
 

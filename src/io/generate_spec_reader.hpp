@@ -2,6 +2,7 @@
 // Reads a scene's inline generator table, `[[particles]] generate = { ... }` (docs/scene.md
 // "Generated particles"), into a GenerateSpec. Every problem is an InputError naming the file,
 // the line and the dotted key.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -11,6 +12,10 @@
 #include "io/toml_section.hpp"
 
 namespace mpdem {
+
+// Random positions tried per particle, at most: a sphere that finds no room in 1e8 tries (seconds)
+// will not find it in more, and a larger count only turns a jammed packing into a hang.
+inline constexpr std::int64_t kMaxAttempts = 100'000'000;
 
 // The pieces of a generator table that other tables share ([[inlet]], [[sink]]: io/inlet_reader.hpp),
 // g being the table (its known keys already checked) and t its raw TOML:

@@ -9,6 +9,7 @@
 
 #include "generate/region.hpp"
 #include "io/contact_reader.hpp"
+#include "io/csv_log.hpp"
 #include "io/generate_spec_reader.hpp"
 #include "io/input_error.hpp"
 #include "model/derived_limits.hpp"
@@ -144,7 +145,7 @@ void check_derived_limits(const TomlSection& s, const InletSpec& in, const Model
 // `name`, unique among inlets and sinks; `fallback` when absent.
 std::string read_name(const TomlSection& s, const std::string& fallback, const Model& model) {
   std::string name = s.string("name").value_or(fallback);
-  if (name.empty() || name.find_first_of(",\"\r\n") != std::string::npos)
+  if (!is_column_name(name))
     s.fail("name", "expected a non-empty name without ',', '\"' or line breaks (it names log columns)");
   const auto taken = [&](const auto& list) {
     return std::any_of(list.begin(), list.end(), [&](const auto& e) { return e.name == name; });
@@ -179,8 +180,7 @@ InletSpec read_inlet(const TomlSection& s, const toml::table& raw, const Model& 
   s.get("velocity_spread", in.velocity_spread, kNonNegative);
   if (const auto v = s.integer("seed", 0, std::numeric_limits<std::int64_t>::max()))
     in.seed = static_cast<std::uint64_t>(*v);
-  if (const auto m = s.integer("max_attempts", 1, std::numeric_limits<std::int64_t>::max()))
-    in.max_attempts = static_cast<std::size_t>(*m);
+  if (const auto m = s.integer("max_attempts", 1, kMaxAttempts)) in.max_attempts = static_cast<std::size_t>(*m);
   check_derived_limits(s, in, model);
   return in;
 }

@@ -10,6 +10,7 @@
 
 #include "io/barrier_csv.hpp"
 #include "io/contact_reader.hpp"
+#include "io/csv_log.hpp"
 #include "io/generate_spec_reader.hpp"
 #include "io/coarse_grain_reader.hpp"
 #include "io/inlet_reader.hpp"
@@ -255,6 +256,13 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
       src.stl = existing_file(s, "stl", scene.dir);
     }
     s.get("group", src.group);
+    // The group names columns of barrier_groups.csv; without `group` the file's name does.
+    const std::string group = src.group.empty() ? (src.stl.empty() ? src.file : src.stl).stem().string() : src.group;
+    if (!is_column_name(group))
+      s.fail(src.group.empty() ? (src.stl.empty() ? "file" : "stl") : "group",
+             "the barrier group name '" + group + "'" + (src.group.empty() ? " (the file's name)" : "") +
+                 " names log columns: expected a non-empty name without ',', '\"' or line breaks" +
+                 (src.group.empty() ? "; give `group`" : ""));
     s.get("material", src.material);
     if (!src.material.empty()) check_material(s, "material", src.material, scene.model);
     s.get("rigid", src.rigid);

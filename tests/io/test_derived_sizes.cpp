@@ -89,6 +89,35 @@ TEST(DerivedSizes, OutputFolderNames) {
   expect_refused("[output]\ndir = \"out/" + kName300 + "\"\n", 7, "output.dir", "at most 255 bytes");
 }
 
+// A barrier group name with a comma or a quote (given, a CSV row's, or the file's name) passed
+// and the run failed at its first barrier log ("bad column name", no file, line or key).
+TEST(DerivedSizes, GroupNamesThatNameLogColumns) {
+  TempDir d("mpdem_derived_sizes");
+  const std::string tri = "0,0,0,1,0,0,0,1,0\n";
+  d.write("w.csv", "x1,y1,z1,x2,y2,z2,x3,y3,z3\n" + tri);
+  d.write("a,b.csv", "x1,y1,z1,x2,y2,z2,x3,y3,z3\n" + tri);
+  d.write("g.csv", "x1,y1,z1,x2,y2,z2,x3,y3,z3,group\n" + tri.substr(0, tri.size() - 1) + ",x\"y\n");
+  const auto refused = [&](const std::string& body, const std::string& where, const std::string& text) {
+    const fs::path scene = d.write("scene.toml", std::string(kHead) + body);
+    const std::string e = test::error_of([&] { load_scene(scene); });
+    expect_contains(e, {where, text});
+  };
+  refused("[[barriers]]\nfile = \"w.csv\"\ngroup = \"x,\\\"y\"\n", "scene.toml:8: 'barriers.group'",
+          "names log columns");
+  refused("[[barriers]]\nfile = \"a,b.csv\"\n", "scene.toml:7: 'barriers.file'", "give `group`");
+  refused("[[barriers]]\nfile = \"g.csv\"\n", "g.csv:2: 'group'", "names log columns");
+}
+
+// max_attempts beyond reason turned a jammed packing into a hang.
+TEST(DerivedSizes, AttemptsBeyondReason) {
+  expect_refused("[[particles]]\ngenerate = { region = \"box\", min = [0, 0, 0], max = [1, 1, 1], count = 2, "
+                 "radius = 0.001, max_attempts = 1000000000 }\n",
+                 7, "particles.generate.max_attempts", "[1, 100000000]");
+  expect_refused("[[inlet]]\nregion = \"box\"\nmin = [0, 0, 0]\nmax = [0.1, 0.1, 0.1]\nradius = 0.001\n"
+                 "count_rate = 10\nmax_attempts = 1000000000\n",
+                 12, "inlet.max_attempts", "[1, 100000000]");
+}
+
 // A sink cylinder whose axis or radius squares overflow removed nothing; regions of generate,
 // inlets and sinks share the checks (box extents, cylinder squares, volumes).
 TEST(DerivedSizes, RegionExtentsSquaresAndVolumes) {

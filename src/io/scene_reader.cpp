@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <fmt/core.h>
 #include <toml++/toml.h>
 
 #include "io/barrier_csv.hpp"
@@ -57,6 +58,15 @@ void read_time(const TomlSection& root, TimeParams& t) {
     s->fail("dt",
             "expected dt within [dt_min, dt_max] = [" + number_text(t.dt_min) + ", " + number_text(t.dt_max) + "]");
   s->get("adaptive", t.adaptive);
+  // Steps are counted exactly (2^53) and the smallest step is one the run can divide by.
+  const double smallest = t.adaptive ? t.dt_min : t.dt;  // s
+  const char* key = t.adaptive && s->has("dt_min") ? "dt_min" : "dt";
+  if (const std::string why = usable_problem(smallest, t.adaptive ? "dt_min" : "dt", "s"); !why.empty())
+    s->fail(key, why + "; expected a step the run can divide by");
+  if (const double steps = t.duration / smallest; !(steps <= 9007199254740992.0))
+    s->fail(key, "the run would take up to " + fmt::format("{:.3g}", steps) + " steps (time.duration / " +
+                     (t.adaptive ? "dt_min" : "dt") + " = " + number_text(t.duration) + " s / " +
+                     number_text(smallest) + " s); expected at most 2^53 (about 9e15)");
   s->get("desired_iterations", t.desired_iterations, 1);
   s->get("p", t.p, kPositive);
   s->get("max_iterations", t.max_iterations, 1);

@@ -84,6 +84,21 @@ TEST(DerivedSizes, CoarseGrainExtentsAndWidth) {
   expect_refused(cg + "width = 1e200\n" + grid, 8, "coarse_grain.width", "normalisation 1 / width^3");
 }
 
+// A step the run cannot divide by, or more steps than are counted exactly: the run never ended.
+TEST(DerivedSizes, StepCount) {
+  TempDir d("mpdem_derived_sizes");
+  const auto error = [&](const std::string& time) {
+    const fs::path scene = d.write("scene.toml", "[time]\nduration = 1.0\n" + time + "[[material]]\nname = \"g\"\n");
+    return test::error_of([&] { load_scene(scene); });
+  };
+  expect_contains(error("dt = 1e-300\n"), {"scene.toml:3: 'time.dt'", "1e+300 steps", "at most 2^53"});
+  expect_contains(error("dt = 1e-320\ndt_min = 1e-320\n"), {"scene.toml:3: 'time.dt'", "dt underflows"});
+  expect_contains(error("dt = 1e-5\nadaptive = true\ndt_min = 1e-320\n"),
+                  {"scene.toml:5: 'time.dt_min'", "dt_min underflows"});
+  expect_contains(error("dt = 1e-5\nadaptive = true\ndt_min = 1e-17\n"),
+                  {"scene.toml:5: 'time.dt_min'", "1e+17 steps"});
+}
+
 // An [output] dir whose folder name exceeds a file system's 255 bytes.
 TEST(DerivedSizes, OutputFolderNames) {
   expect_refused("[output]\ndir = \"out/" + kName300 + "\"\n", 7, "output.dir", "at most 255 bytes");

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "io/input_file.hpp"
-#include "model/derived_limits.hpp"
+#include "generate/region.hpp"
 #include "io/toml_section.hpp"
 
 namespace mpdem {
@@ -96,23 +96,14 @@ RadiusDistribution read_radius(const TomlSection& g, const toml::table& t) {
 }
 
 void check_box_sizes(const TomlSection& g, const Vec3& extent, std::string_view key) {
-  for (int c = 0; c < 3; ++c)
-    if (!std::isfinite(extent[c]))
-      g.fail(key, std::string("the region's extent along ") + "xyz"[c] + " overflows (" + number_text(extent[c]) +
-                      " m); expected a region of finite size");
-  if (const std::string p = usable_problem(extent.x * extent.y * extent.z, "the region's volume", "m^3"); !p.empty())
-    g.fail(key, p + "; expected a finite volume > 0");
+  if (const std::string p = box_size_problem(extent); !p.empty()) g.fail(key, p);
 }
 
 void check_cylinder_sizes(const TomlSection& g, const Vec3& axis, double radius, std::string_view axis_key,
                           std::string_view radius_key) {
-  if (const std::string p = usable_problem(norm2(axis), "the squared axis length", "m^2"); !p.empty())
-    g.fail(axis_key, p + "; expected an axis whose length and its square are finite and > 0");
-  if (const std::string p = usable_problem(radius * radius, "the squared radius", "m^2"); !p.empty())
-    g.fail(radius_key, p + "; expected a radius whose square is finite and > 0");
-  const double volume = 3.14159265358979323846 * radius * radius * std::sqrt(norm2(axis));
-  if (const std::string p = usable_problem(volume, "the cylinder's volume", "m^3"); !p.empty())
-    g.fail(radius_key, p + "; expected a finite volume > 0");
+  bool axis_at_fault = false;
+  if (const std::string p = cylinder_size_problem(axis, radius, axis_at_fault); !p.empty())
+    g.fail(axis_at_fault ? axis_key : radius_key, p);
 }
 
 RegionSpec read_box_region(const TomlSection& g) {

@@ -97,3 +97,18 @@ TEST(CliInputLimits, DerivedSizesBeyondReason) {
     fs::remove_all(d);
   }
 }
+
+// `mpdem generate` wrote particles at x = inf for a box whose extent overflows, and at NaN for a
+// cylinder whose squared axis does: now exit 2 naming the option, nothing written.
+TEST(CliInputLimits, GenerateRegionSizes) {
+  const fs::path d = fresh_dir("lim_generate");
+  for (const char* args : {"--min -1e308 0 0 --max 1e308 0.01 0.01", "--region cylinder --base 0 0 0 --axis 0 0 1e200 "
+                                                                     "--cylinder-radius 0.01"}) {
+    const CommandResult r = run_mpdem(std::string("generate -o g.csv -n 3 -r 0.001 ") + args, d);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find("overflows"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.err.find("'--max'") != std::string::npos || r.err.find("'--axis'") != std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(d / "g.csv")) << args;
+  }
+  fs::remove_all(d);
+}

@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "cli/bench_command.hpp"
+#include "cli/output_folder.hpp"
 #include "io/input_error.hpp"
 #include "io/lammps_data.hpp"
 #include "io/vtk_xml.hpp"
@@ -126,6 +127,7 @@ int bench_command(const BenchArgs& args) {
   if (std::error_code ec;
       !args.output.empty() && std::filesystem::exists(args.output, ec) && !std::filesystem::is_empty(args.output, ec))
     throw InputError(args.output.string(), 0, "--output", "the bench writes only into a fresh or empty folder");
+  if (!args.output.empty()) ensure_output_folder(args.output);
   omp_set_num_threads(args.threads);
 
   BenchArgs a = args;

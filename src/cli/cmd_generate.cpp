@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "cli/tool_commands.hpp"
+#include "generate/region.hpp"
 #include "io/input_error.hpp"
 #include "generate/generator.hpp"
 
@@ -51,6 +52,9 @@ GenerateSpec to_spec(const GenerateArgs& a) {
     if (a.min.empty() || a.max.empty()) bad("--min", "a box region needs --min and --max");
     s.region.min = vec(a.min, "--min");
     s.region.max = vec(a.max, "--max");
+    const Vec3 e = s.region.max - s.region.min;  // m; max > min is the generator's check
+    if (e.x > 0.0 && e.y > 0.0 && e.z > 0.0)
+      if (const std::string p = box_size_problem(e); !p.empty()) bad("--max", p);
   } else if (a.region == "cylinder") {
     s.region.shape = RegionShape::Cylinder;
     if (a.base.empty() || !(a.cylinder_radius > 0))
@@ -58,6 +62,9 @@ GenerateSpec to_spec(const GenerateArgs& a) {
     s.region.base = vec(a.base, "--base");
     s.region.axis = vec(a.axis, "--axis");
     s.region.radius = a.cylinder_radius;
+    bool axis_at_fault = false;
+    if (const std::string p = cylinder_size_problem(s.region.axis, s.region.radius, axis_at_fault); !p.empty())
+      bad(axis_at_fault ? "--axis" : "--cylinder-radius", p);
   } else if (a.region == "mesh") {
     s.region.shape = RegionShape::Mesh;
     if (a.mesh.empty()) bad("--mesh", "a mesh region needs --mesh FILE (closed surface, .stl or barrier .csv)");

@@ -2,6 +2,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <exception>
+#include <functional>
 
 #include "check/scene_checks.hpp"
 #include "cli/commands.hpp"
@@ -13,6 +15,27 @@
 #include "sim/simulation.hpp"
 
 namespace mpdem::cli {
+
+namespace {
+
+// Runs `f` (a step on the output folder) on rank 0 alone; its refusal stops every rank: rank 0
+// rethrows the InputError (main prints it), the others throw one that main does not print, and
+// all exit 2 (a rank left waiting for the others would hang).
+void on_rank_0(const Communicator& comm, const std::function<void()>& f) {
+  std::exception_ptr refused;
+  if (comm.rank() == 0) {
+    try {
+      f();
+    } catch (const InputError&) {
+      refused = std::current_exception();
+    }
+  }
+  if (!comm.any(refused != nullptr)) return;
+  if (refused) std::rethrow_exception(refused);
+  throw InputError("", 0, "", "the output folder was refused on rank 0");
+}
+
+}  // namespace
 
 int run_command(const RunArgs& args) {
   if (args.threads > 0) omp_set_num_threads(args.threads);
@@ -40,10 +63,13 @@ int run_command(const RunArgs& args) {
   opt.output_dir = args.output;
   opt.progress = !args.quiet;
   // A resumed run continues in its own (non-empty) output folder.
-  if (args.resume.empty() && speaks) prepare_output_folder(output_dir_for(scene, opt), args.overwrite);
-  comm.barrier();  // (a refused folder throws on rank 0 alone: main then stops every rank)
+  const std::filesystem::path dir = output_dir_for(scene, opt);
+  if (args.resume.empty()) on_rank_0(comm, [&] { prepare_output_folder(dir, args.overwrite); });
   Simulation sim(std::move(scene), opt);
-  if (!args.resume.empty()) sim.resume_from(args.resume);
+  if (!args.resume.empty()) {
+    sim.resume_from(args.resume);
+    on_rank_0(comm, [&] { ensure_output_folder(dir); });  // once the checkpoint is read: a refused one writes nothing
+  }
   const RunSummary s = sim.run();
   if (!speaks) return 0;
   if (!args.quiet) {

@@ -10,6 +10,7 @@
 
 #include <fmt/core.h>
 
+#include "cli/output_folder.hpp"
 #include "cli/tool_commands.hpp"
 #include "io/input_error.hpp"
 #include "validate/validation_suite.hpp"
@@ -70,6 +71,7 @@ int validate(const ValidateArgs& a) {
   } catch (const std::invalid_argument& e) {
     throw InputError("mpdem validate", 0, "CASE", e.what());
   }
+  ensure_output_folder(o.output_dir);
   const validate::SuiteResult r = validate::run_suite(o);
   std::size_t passed = 0;
   for (const auto& c : r.cases) passed += c.pass ? 1 : 0;

@@ -4,6 +4,8 @@
 #include <fmt/core.h>
 
 #include <cstdio>
+#include <filesystem>
+#include <new>
 
 #include "cli/bench_command.hpp"
 #include "cli/commands.hpp"
@@ -115,6 +117,11 @@ int dispatch(int argc, char** argv) {
     if (comm.serial()) return fail(1, e.what());
     if (comm.rank() == 0) fmt::print(stderr, "\nerror: {}\n", e.what());
     return 1;
+  } catch (const std::bad_alloc&) {  // no library text: what ran out and what to do
+    return fail(1, "out of memory: the run needs more memory than this machine has; use a smaller scene or "
+                   "fewer coarse-grained points, or run on more nodes");
+  } catch (const std::filesystem::filesystem_error& e) {
+    return fail(1, fmt::format("cannot access '{}': {}", e.path1().string(), e.code().message()));
   } catch (const std::exception& e) {
     return fail(1, e.what());
   }

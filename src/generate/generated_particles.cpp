@@ -13,31 +13,11 @@ namespace mpdem {
 
 namespace {
 
-// The radii bounding what the distribution can draw (an unbounded log-normal tail is checked
-// per particle instead).
-std::vector<double> bounding_radii(const RadiusDistribution& d) {
-  switch (d.law) {
-    case RadiusLaw::Constant: return {d.value};
-    case RadiusLaw::Uniform:
-    case RadiusLaw::Normal: return {d.min, d.max};
-    case RadiusLaw::LogNormal: {
-      std::vector<double> r;
-      for (double b : {d.min, d.max})
-        if (b > 0.0) r.push_back(b);
-      return r;
-    }
-    case RadiusLaw::Discrete: return d.radii;
-  }
-  return {};
-}
-
 // A radius whose mass or time scales over- or underflow with the material
 // (model/derived_limits.hpp); `what` names the radius in the message.
 void check_radius(const GenerateSpec& spec, const Material& m, bool thermal, double r, const std::string& what) {
-  std::string p = mass_problem(r, m.density);
-  if (p.empty()) p = time_scale_problem(r, m.density, m.young, m.poisson);
-  if (p.empty() && thermal) p = thermal_mass_problem(r, m.density, m.heat_capacity);
-  if (!p.empty()) throw InputError(spec.origin, spec.line, "particles.generate.radius", what + ": " + p);
+  if (const std::string p = radius_problem(r, m, thermal); !p.empty())
+    throw InputError(spec.origin, spec.line, "particles.generate.radius", what + ": " + p);
 }
 
 }  // namespace
@@ -48,7 +28,8 @@ void add_generated_particles(const GenerateSpec& spec, const Model& model, int d
   const Material& m = model.materials.at(static_cast<std::size_t>(mat));
   const bool thermal = model.params.analysis.thermal;
   // Before generating: a radius of 1e-300 m would otherwise be placed first, then fail at step 1.
-  for (const double r : bounding_radii(spec.radius)) check_radius(spec, m, thermal, r, "material '" + m.name + "'");
+  for (const double r : spec.radius.bounding_radii(false))
+    check_radius(spec, m, thermal, r, "material '" + m.name + "'");
   std::int64_t next_id = 0;
   for (const std::int64_t pid : out.id) next_id = std::max(next_id, pid + 1);
 

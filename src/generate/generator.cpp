@@ -30,13 +30,11 @@ class PlacementGrid {
     h_ = reach;
     const Vec3 e = hi - lo;
     for (;;) {
-      std::size_t cells = 1;
-      for (int a = 0; a < 3; ++a) {
-        dim_[a] = std::max(1, static_cast<int>(std::ceil(e[a] / h_)));
-        cells *= static_cast<std::size_t>(dim_[a]);
-      }
-      if (cells <= kMaxCells) {
-        head_.assign(cells, -1);
+      double cells = 1.0;  // counted in double: a region far larger than the spheres overflows an int
+      for (int a = 0; a < 3; ++a) cells *= std::max(1.0, std::ceil(e[a] / h_));
+      if (cells <= static_cast<double>(kMaxCells)) {
+        for (int a = 0; a < 3; ++a) dim_[a] = static_cast<int>(std::max(1.0, std::ceil(e[a] / h_)));
+        head_.assign(static_cast<std::size_t>(cells), -1);
         break;
       }
       h_ *= 1.26;  // coarser cells: more spheres per cell, bounded memory
@@ -85,6 +83,11 @@ std::vector<double> draw_radii(const GenerateSpec& spec, double region_volume, R
     return radii;
   }
   const double target = spec.solid_fraction * region_volume;
+  // At least target / (the largest sphere's volume) draws: refused before drawing them.
+  double largest = 0.0;  // m
+  for (const double r : spec.radius.bounding_radii(true)) largest = std::max(largest, r);
+  if (largest > 0.0 && target / sphere_volume(largest) > static_cast<double>(kMaxParticles))
+    fail("the solid fraction needs more than 5e7 particles of this size; check units");
   double sum = 0.0;
   while (sum < target) {
     const double r = spec.radius.sample(rng);

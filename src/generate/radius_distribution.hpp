@@ -22,12 +22,19 @@ struct RadiusDistribution {
   std::vector<double> fractions;  // -, Discrete: weights (normalised internally)
   bool mass_fractions = false;    // Discrete: fractions are of mass (equal density) not number
 
-  // "" when the parameters are usable, else what is wrong (names the keys of docs/tools.md).
-  std::string problem() const;
+  // "" when the parameters are usable, else what is wrong (names the keys of docs/tools.md);
+  // `key`, when given, is set to the key to blame ("std", "min", "radii", ...). Usable includes
+  // what sampling derives from them (a log-normal's spread of ln r, the window in standard
+  // deviations, a mass fraction's number share).
+  std::string problem(std::string* key = nullptr) const;
   // One radius (m). Requires problem() == "".
   double sample(Rng& rng) const;
   // Number probabilities of the discrete radii: fractions, or mass fractions / r^3, normalised.
   std::vector<double> number_fractions() const;
+  // m, the radii bounding what it draws: its bounds (value, min and max, the radii). An unbounded
+  // log-normal side gives none, or with `tails` the radius 8 standard deviations of ln r out
+  // (drawn with a probability below 1e-15).
+  std::vector<double> bounding_radii(bool tails) const;
   // m, the smallest radius it gives (its lower bound; for a log-normal without one, half its
   // mean), for defaults that scale with the particles (the neighbour skin).
   double smallest() const;

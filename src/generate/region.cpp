@@ -8,11 +8,36 @@
 #include "io/barrier_csv.hpp"
 #include "io/input_error.hpp"
 #include "io/stl_reader.hpp"
+#include "io/value_range.hpp"
+#include "model/derived_limits.hpp"
 
 namespace mpdem {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+}
+
+std::string box_size_problem(const Vec3& extent) {
+  for (int c = 0; c < 3; ++c)
+    if (!std::isfinite(extent[c]))
+      return std::string("the region's extent along ") + "xyz"[c] + " overflows (" + number_text(extent[c]) +
+             " m); expected a region of finite size";
+  if (const std::string p = usable_problem(extent.x * extent.y * extent.z, "the region's volume", "m^3"); !p.empty())
+    return p + "; expected a finite volume > 0";
+  return "";
+}
+
+std::string cylinder_size_problem(const Vec3& axis, double radius, bool& axis_at_fault) {
+  axis_at_fault = true;
+  if (const std::string p = usable_problem(norm2(axis), "the squared axis length", "m^2"); !p.empty())
+    return p + "; expected an axis whose length and its square are finite and > 0";
+  axis_at_fault = false;
+  if (const std::string p = usable_problem(radius * radius, "the squared radius", "m^2"); !p.empty())
+    return p + "; expected a radius whose square is finite and > 0";
+  const double volume = kPi * radius * radius * std::sqrt(norm2(axis));
+  if (const std::string p = usable_problem(volume, "the cylinder's volume", "m^3"); !p.empty())
+    return p + "; expected a finite volume > 0";
+  return "";
 }
 
 TriangleMesh read_region_mesh(const std::filesystem::path& file) {
@@ -32,6 +57,7 @@ Region::Region(const RegionSpec& spec, const std::string& origin, std::size_t li
     case RegionShape::Box: {
       for (int a = 0; a < 3; ++a)
         if (!(spec.min[a] < spec.max[a])) fail("max", "expected max > min in every component of the box");
+      if (const std::string p = box_size_problem(spec.max - spec.min); !p.empty()) fail("max", p);
       lo_ = spec.min;
       hi_ = spec.max;
       const Vec3 e = hi_ - lo_;
@@ -42,6 +68,9 @@ Region::Region(const RegionSpec& spec, const std::string& origin, std::size_t li
       height_ = norm(spec.axis);
       if (!(height_ > 0.0)) fail("axis", "expected a non-zero axis vector (base centre -> top centre)");
       if (!(spec.radius > 0.0)) fail("radius", "expected a cylinder radius > 0");
+      bool axis_at_fault = false;
+      if (const std::string p = cylinder_size_problem(spec.axis, spec.radius, axis_at_fault); !p.empty())
+        fail(axis_at_fault ? "axis" : "radius", p);
       w_ = spec.axis / height_;
       // Any unit vector normal to the axis: cross with the coordinate axis least aligned to it.
       const Vec3 helper = std::abs(w_.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};

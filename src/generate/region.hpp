@@ -3,6 +3,7 @@
 // Offers the volume, uniform sampling of sphere centres that keep a clearance from the boundary,
 // and the membership test used to accept them.
 #include <memory>
+#include <string>
 
 #include "core/vec3.hpp"
 #include "generate/generate_spec.hpp"
@@ -35,6 +36,13 @@ class Region {
   double height_ = 0.0;  // m, Cylinder
   std::shared_ptr<const MeshSolid> solid_;
 };
+
+// What is derived from a region's size must be usable (docs/scene.md "Derived limits"); each
+// returns "" when it is, else what over- or underflows, for the caller to locate:
+//   a box's extent along each axis finite, its volume finite and > 0;
+std::string box_size_problem(const Vec3& extent);
+//   a cylinder's squared axis length (then `axis_at_fault`), squared radius and volume finite and > 0.
+std::string cylinder_size_problem(const Vec3& axis, double radius, bool& axis_at_fault);
 
 // The triangles of a closed mesh file (STL by extension ".stl", else barrier CSV).
 TriangleMesh read_region_mesh(const std::filesystem::path& file);

@@ -43,7 +43,7 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
   };
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) fail(path, "cannot create temporary file '" + tmp.string() + "'");
+    if (!out) fail(path, "cannot create temporary file '" + tmp.string() + "' (" + std::strerror(errno) + ")");
     try {
       body(out);
     } catch (...) {

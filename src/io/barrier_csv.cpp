@@ -8,6 +8,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "io/csv_log.hpp"
 #include "io/csv_table.hpp"
 #include "io/input_error.hpp"
 #include "geometry/triangle_check.hpp"
@@ -106,6 +107,8 @@ void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& so
     const Vec3 p2{t.number(row, c[X2]), t.number(row, c[Y2]), t.number(row, c[Z2])};
     const Vec3 p3{t.number(row, c[X3]), t.number(row, c[Y3]), t.number(row, c[Z3])};
     const std::string& group = t.missing(row, c[GROUP]) ? default_group : t.text(row, c[GROUP]);
+    if (!is_column_name(group))  // the default was checked with the [[barriers]] entry
+      t.fail(row, c[GROUP], "the group name names log columns: expected a name without ',', '\"' or line breaks");
     // A rigid element has no elastic constants of its own: a row's value would be ignored.
     for (const Col k : {YOUNG, POISSON})
       if (source.rigid && !t.missing(row, c[k]))
@@ -142,6 +145,16 @@ void read_barrier_csv(const std::filesystem::path& file, const BarrierSource& so
         if (t.missing(row, col)) throw InputError(t.file(), row.line, "", what + " (B of [[barriers]] motion)");
         t.fail(row, col, what);
       }
+    // Over the run (the source's own law was checked by the scene reader): a row's columns.
+    if (std::string key, why = law.limit_problem(model.params.time.duration, key); !why.empty()) {
+      const Col first = key == "a" ? AX : key == "A" ? AAX : key == "B" ? BX : key == "w1" ? W1 : W2;
+      int col = -1;
+      for (const Col k : {first, AX, AAX, BX, W1, W2})
+        for (int j = 0; j < (k == W1 || k == W2 ? 1 : 3) && col < 0; ++j)
+          if (!t.missing(row, c[k + j])) col = c[k + j];
+      if (col < 0) throw InputError(t.file(), row.line, "", why + " ([[barriers]] motion)");
+      t.fail(row, col, why);
+    }
     if (!source.rigid)
       if (const std::string pr = contact_moduli_problem(E, nu); !pr.empty())
         t.fail(row, !t.missing(row, c[YOUNG]) || t.missing(row, c[POISSON]) ? c[YOUNG] : c[POISSON], pr);

@@ -64,7 +64,7 @@ CsvLog::CsvLog(std::filesystem::path file, std::vector<std::string> columns, Ope
     : file_(std::move(file)), columns_(std::move(columns)) {
   if (columns_.empty()) throw std::invalid_argument("CSV log '" + file_.string() + "' has no columns");
   for (const std::string& c : columns_)
-    if (c.empty() || c.find_first_of(",\"\r\n") != std::string::npos)
+    if (!is_column_name(c))
       throw std::invalid_argument("CSV log '" + file_.string() + "': bad column name '" + c + "'");
   const std::string header = header_line(columns_);
   std::string existing;

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <span>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,12 @@ namespace mpdem {
 
 // Appends v to out: an integer when v is integral and |v| < 2^53, else "%.17g" (locale free).
 void append_csv_number(std::string& out, double v);
+
+// A name usable in a CSV header: non-empty, without ',', '"' or line breaks. Names that become
+// log columns (inlets, sinks, barrier groups) are checked with it when the scene is read.
+inline bool is_column_name(std::string_view name) {
+  return !name.empty() && name.find_first_of(",\"\r\n") == std::string_view::npos;
+}
 
 // A time-series log with a fixed header. Rows are buffered and appended as whole lines
 // (io/atomic_file.hpp append_complete_lines) at every flush(), when the buffer grows large,

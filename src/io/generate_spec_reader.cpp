@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "io/input_file.hpp"
+#include "generate/region.hpp"
 #include "io/toml_section.hpp"
 
 namespace mpdem {
@@ -89,8 +90,20 @@ RadiusDistribution read_radius(const TomlSection& g, const toml::table& t) {
       break;
     }
   }
-  if (const std::string p = d.problem(); !p.empty()) s->fail(d.law == RadiusLaw::Discrete ? "fractions" : "min", p);
+  std::string key;
+  if (const std::string p = d.problem(&key); !p.empty()) s->fail(key, p);
   return d;
+}
+
+void check_box_sizes(const TomlSection& g, const Vec3& extent, std::string_view key) {
+  if (const std::string p = box_size_problem(extent); !p.empty()) g.fail(key, p);
+}
+
+void check_cylinder_sizes(const TomlSection& g, const Vec3& axis, double radius, std::string_view axis_key,
+                          std::string_view radius_key) {
+  bool axis_at_fault = false;
+  if (const std::string p = cylinder_size_problem(axis, radius, axis_at_fault); !p.empty())
+    g.fail(axis_at_fault ? axis_key : radius_key, p);
 }
 
 RegionSpec read_box_region(const TomlSection& g) {
@@ -102,17 +115,20 @@ RegionSpec read_box_region(const TomlSection& g) {
     if (!(r.min[c] < r.max[c]))
       g.fail("max", std::string("expected max > min in every component, got ") + "xyz"[c] + ": min " +
                         number_text(r.min[c]) + " >= max " + number_text(r.max[c]));
+  check_box_sizes(g, r.max - r.min, "max");
   return r;
 }
 
 RegionSpec read_cylinder_region(const TomlSection& g) {
   const Vec3 axis = g.require(g.vec3("axis"), "axis");
   if (!(norm(axis) > 0.0)) g.fail("axis", "expected a non-zero vector (base centre -> top centre)");
-  return {.shape = RegionShape::Cylinder,
-          .base = g.require(g.vec3("base"), "base"),
-          .axis = axis,
-          .radius = g.require(g.number("cylinder_radius", kPositive), "cylinder_radius"),
-          .mesh = {}};
+  RegionSpec r{.shape = RegionShape::Cylinder,
+               .base = g.require(g.vec3("base"), "base"),
+               .axis = axis,
+               .radius = g.require(g.number("cylinder_radius", kPositive), "cylinder_radius"),
+               .mesh = {}};
+  check_cylinder_sizes(g, r.axis, r.radius, "axis", "cylinder_radius");
+  return r;
 }
 
 GenerateSpec read_generate_spec(const std::string& file, const toml::table& table, const std::string& path,
@@ -162,8 +178,7 @@ GenerateSpec read_generate_spec(const std::string& file, const toml::table& tabl
   spec.velocity = g.vec3("velocity");
   g.get("speed", spec.speed, kNonNegative);
   g.get("fixed", spec.fixed);
-  if (const auto m = g.integer("max_attempts", 1, std::numeric_limits<std::int64_t>::max()))
-    spec.max_attempts = static_cast<std::size_t>(*m);
+  if (const auto m = g.integer("max_attempts", 1, kMaxAttempts)) spec.max_attempts = static_cast<std::size_t>(*m);
   return spec;
 }
 

@@ -9,8 +9,11 @@
 
 #include "generate/region.hpp"
 #include "io/contact_reader.hpp"
+#include "io/csv_log.hpp"
 #include "io/generate_spec_reader.hpp"
 #include "io/input_error.hpp"
+#include "model/derived_limits.hpp"
+#include "state/particles.hpp"
 
 namespace mpdem {
 
@@ -69,14 +72,17 @@ InsertionVolume read_volume(const TomlSection& s, double r_max) {
     vol.region.base = s.require(s.vec3("centre"), "centre");
     vol.region.radius = s.require(s.number("disc_radius", kPositive), "disc_radius");
     vol.region.axis = unit(s, "direction") * face_depth(s, r_max);
+    check_cylinder_sizes(s, vol.region.axis, vol.region.radius, "depth", "disc_radius");
   } else if (vol.shape == "rect") {
     // The rectangle corner + [0, 1] edge1 + [0, 1] edge2 extruded by depth along its normal, on
     // the side `direction` points to: a box in the frame (edge1, edge2, normal).
     reject_other_shapes(s, vol.shape, {"corner", "edge1", "edge2", "direction", "depth"});
     const Vec3 e1 = s.require(s.vec3("edge1"), "edge1"), e2 = s.require(s.vec3("edge2"), "edge2");
     const double l1 = norm(e1), l2 = norm(e2);
-    if (!(l1 > 0.0) || !std::isfinite(l1)) s.fail("edge1", "expected a non-zero edge vector [x, y, z] (m)");
-    if (!(l2 > 0.0) || !std::isfinite(l2)) s.fail("edge2", "expected a non-zero edge vector [x, y, z] (m)");
+    if (!(l1 > 0.0) || !std::isfinite(l1))
+      s.fail("edge1", "expected a non-zero edge vector [x, y, z] (m) of finite length");
+    if (!(l2 > 0.0) || !std::isfinite(l2))
+      s.fail("edge2", "expected a non-zero edge vector [x, y, z] (m) of finite length");
     if (std::abs(dot(e1, e2)) > 1e-9 * l1 * l2)
       s.fail("edge2", "expected an edge perpendicular to edge1 (a rectangle)");
     Vec3 n = cross(e1, e2) / (l1 * l2);
@@ -90,6 +96,7 @@ InsertionVolume read_volume(const TomlSection& s, double r_max) {
     vol.region.shape = RegionShape::Box;
     vol.region.min = {};
     vol.region.max = {l1, l2, face_depth(s, r_max)};
+    check_box_sizes(s, vol.region.max, "depth");
     if (dot(vol.v, e2) < 0.0) vol.origin += e2;  // the box spans the given rectangle either way
   } else {
     s.fail("region", "expected \"box\", \"cylinder\", \"disc\" or \"rect\", got \"" + vol.shape + "\"");
@@ -97,10 +104,48 @@ InsertionVolume read_volume(const TomlSection& s, double r_max) {
   return vol;
 }
 
+// kg, the mean mass of the particles the distribution draws, from a fixed sample (an estimate).
+double mean_mass(const RadiusDistribution& d, double density) {
+  Rng rng(1);
+  double sum = 0.0;
+  constexpr int kDraws = 1000;
+  for (int k = 0; k < kDraws; ++k) sum += sphere_mass(d.sample(rng), density);
+  return sum / kDraws;
+}
+
+// What the run derives from an inlet's values (docs/scene.md "Derived limits"): the particles it
+// may draw against their material, the count of insertion times, and the particles due at one.
+void check_derived_limits(const TomlSection& s, const InletSpec& in, const Model& model) {
+  const int mat = in.material.empty() ? 0 : model.material_index(in.material);
+  const Material& m = model.materials.at(static_cast<std::size_t>(mat));
+  for (const double r : in.radius.bounding_radii(true))
+    if (const std::string p = radius_problem(r, m, model.params.analysis.thermal); !p.empty())
+      s.fail("radius", "material '" + m.name + "': " + p);
+  const TimeParams& t = model.params.time;
+  const double interval = in.interval_or_default(t.dt);                              // s
+  const double span = std::min(in.end.value_or(t.duration), t.duration) - in.start;  // s
+  constexpr double kMaxInsertionTimes = 9007199254740992.0;  // 2^53: insertion times are counted exactly
+  if (span / interval > kMaxInsertionTimes)
+    s.fail("interval", "the run holds " + number_text(span / interval) +
+                           " insertion times ((end - start) / interval = " + number_text(span) + " s / " +
+                           number_text(interval) +
+                           " s); expected at most 2^53 (about 9e15), so that they are counted exactly");
+  // All the insertion times a step passes are inserted at once (sim/inlets.cpp).
+  constexpr double kMaxBatch = 5e7;  // particles: beyond this a rate is surely a unit mistake (the generator's cap)
+  const double window = std::max(interval, t.dt);  // s
+  const bool by_mass = in.mass_rate > 0.0;
+  const double due = by_mass ? in.mass_rate * window / mean_mass(in.radius, m.density) : in.count_rate * window;
+  if (!(due <= kMaxBatch))
+    s.fail(by_mass ? "mass_rate" : "count_rate",
+           "about " + number_text(due) + " particles are due at one insertion (the rate times max(interval, " +
+               "time.dt), here " + number_text(window) + " s" + (by_mass ? ", at the mean particle mass" : "") +
+               "); expected at most 5e7 (check the units)");
+}
+
 // `name`, unique among inlets and sinks; `fallback` when absent.
 std::string read_name(const TomlSection& s, const std::string& fallback, const Model& model) {
   std::string name = s.string("name").value_or(fallback);
-  if (name.empty() || name.find_first_of(",\"\r\n") != std::string::npos)
+  if (!is_column_name(name))
     s.fail("name", "expected a non-empty name without ',', '\"' or line breaks (it names log columns)");
   const auto taken = [&](const auto& list) {
     return std::any_of(list.begin(), list.end(), [&](const auto& e) { return e.name == name; });
@@ -135,8 +180,8 @@ InletSpec read_inlet(const TomlSection& s, const toml::table& raw, const Model& 
   s.get("velocity_spread", in.velocity_spread, kNonNegative);
   if (const auto v = s.integer("seed", 0, std::numeric_limits<std::int64_t>::max()))
     in.seed = static_cast<std::uint64_t>(*v);
-  if (const auto m = s.integer("max_attempts", 1, std::numeric_limits<std::int64_t>::max()))
-    in.max_attempts = static_cast<std::size_t>(*m);
+  if (const auto m = s.integer("max_attempts", 1, kMaxAttempts)) in.max_attempts = static_cast<std::size_t>(*m);
+  check_derived_limits(s, in, model);
   return in;
 }
 

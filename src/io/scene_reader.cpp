@@ -6,10 +6,13 @@
 #include <fstream>
 #include <sstream>
 
+#include <fmt/core.h>
 #include <toml++/toml.h>
 
 #include "io/barrier_csv.hpp"
+#include "io/barrier_motion_reader.hpp"
 #include "io/contact_reader.hpp"
+#include "io/csv_log.hpp"
 #include "io/generate_spec_reader.hpp"
 #include "io/coarse_grain_reader.hpp"
 #include "io/inlet_reader.hpp"
@@ -55,6 +58,15 @@ void read_time(const TomlSection& root, TimeParams& t) {
     s->fail("dt",
             "expected dt within [dt_min, dt_max] = [" + number_text(t.dt_min) + ", " + number_text(t.dt_max) + "]");
   s->get("adaptive", t.adaptive);
+  // Steps are counted exactly (2^53) and the smallest step is one the run can divide by.
+  const double smallest = t.adaptive ? t.dt_min : t.dt;  // s
+  const char* key = t.adaptive && s->has("dt_min") ? "dt_min" : "dt";
+  if (const std::string why = usable_problem(smallest, t.adaptive ? "dt_min" : "dt", "s"); !why.empty())
+    s->fail(key, why + "; expected a step the run can divide by");
+  if (const double steps = t.duration / smallest; !(steps <= 9007199254740992.0))
+    s->fail(key, "the run would take up to " + fmt::format("{:.3g}", steps) + " steps (time.duration / " +
+                     (t.adaptive ? "dt_min" : "dt") + " = " + number_text(t.duration) + " s / " +
+                     number_text(smallest) + " s); expected at most 2^53 (about 9e15)");
   s->get("desired_iterations", t.desired_iterations, 1);
   s->get("p", t.p, kPositive);
   s->get("max_iterations", t.max_iterations, 1);
@@ -164,57 +176,6 @@ std::filesystem::path existing_file(const TomlSection& s, std::string_view k, co
   return p;
 }
 
-// [[barriers]] motion.rotation: a unit axis, its point, and a constant or tabulated rate.
-RotationLaw read_rotation(const TomlSection& r) {
-  RotationLaw law;
-  const Vec3 axis = r.require(r.vec3("axis"), "axis");
-  const double len = norm(axis);
-  if (!(len > 0.0) || !std::isfinite(len))
-    r.fail("axis", "expected a non-zero axis direction [x, y, z] of finite length, got " + number_text(axis.x) + ", " +
-                       number_text(axis.y) + ", " + number_text(axis.z));
-  law.axis = axis / len;
-  r.get("origin", law.origin);
-  if (r.has("omega") && r.has("omega_table")) r.fail("omega_table", "give either omega or omega_table, not both");
-  if (!r.has("omega") && !r.has("omega_table")) r.fail("omega", "missing required key (give omega or omega_table)");
-  r.get("omega", law.omega);
-  if (const auto tab = r.number_pairs("omega_table")) {
-    for (std::size_t j = 1; j < tab->size(); ++j)
-      if (!((*tab)[j][0] > (*tab)[j - 1][0]))
-        r.fail("omega_table",
-               "expected rows [t, omega] with strictly ascending times t, got t = " + number_text((*tab)[j][0]) +
-                   " s in row " + std::to_string(j + 1) + " after t = " + number_text((*tab)[j - 1][0]) + " s");
-    law.omega_table = *tab;
-  }
-  return law;
-}
-
-// [[barriers]] active = [t_start] or [t_start, t_end] and motion_from, into the source's law.
-void read_activity(const TomlSection& s, MotionLaw& law) {
-  if (const auto w = s.numbers("active", 1, 2)) {
-    const double from = (*w)[0];
-    if (!(from >= 0.0))
-      s.fail("active",
-             "expected [t_start] or [t_start, t_end] with t_start >= 0 (s), got t_start = " + number_text(from));
-    law.active_from = from;
-    if (w->size() == 2) {
-      const double until = (*w)[1];
-      if (!(until > from))
-        s.fail("active", "expected [t_start, t_end] with t_start < t_end (s), got t_start = " + number_text(from) +
-                             ", t_end = " + number_text(until));
-      law.active_until = until;
-    }
-  }
-  if (const auto f = s.string("motion_from")) {
-    if (*f == "start") {
-      law.since = law.active_from;  // 0 without `active`: the same as "zero"
-      if (law.rotation) law.rotation->since = law.since;
-    } else if (*f != "zero") {
-      const std::string want = "expected \"zero\" (the motion law runs on t) or \"start\" (on t - t_start)";
-      s.fail("motion_from", want + ", got \"" + *f + "\"");
-    }
-  }
-}
-
 void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene) {
   std::size_t entry = 0;
   for (const TomlSection& s : root.tables("particles", {"file", "generate", "material", "fixed"})) {
@@ -255,19 +216,17 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
       src.stl = existing_file(s, "stl", scene.dir);
     }
     s.get("group", src.group);
+    // The group names columns of barrier_groups.csv; without `group` the file's name does.
+    const std::string group = src.group.empty() ? (src.stl.empty() ? src.file : src.stl).stem().string() : src.group;
+    if (!is_column_name(group))
+      s.fail(src.group.empty() ? (src.stl.empty() ? "file" : "stl") : "group",
+             "the barrier group name '" + group + "'" + (src.group.empty() ? " (the file's name)" : "") +
+                 " names log columns: expected a non-empty name without ',', '\"' or line breaks" +
+                 (src.group.empty() ? "; give `group`" : ""));
     s.get("material", src.material);
     if (!src.material.empty()) check_material(s, "material", src.material, scene.model);
     s.get("rigid", src.rigid);
-    if (const auto m = s.table("motion", {"a", "A", "w1", "B", "w2", "rotation"})) {
-      m->get("a", src.motion.a);
-      m->get("A", src.motion.A);
-      m->get("w1", src.motion.w1);
-      m->get("B", src.motion.B);
-      m->get("w2", src.motion.w2);
-      if (const auto r = m->table("rotation", {"axis", "origin", "omega", "omega_table"}))
-        src.motion.rotation = read_rotation(*r);
-    }
-    read_activity(s, src.motion);
+    src.motion = read_barrier_motion(s, scene.model.params.time.duration);
     s.get("thickness", src.thickness, kNonNegative);
     src.temperature = s.number("temperature", kNonNegative);
     s.get("scale", src.scale, kPositive);
@@ -282,10 +241,15 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     p.domain.bounded = true;
     p.domain.min = s->require(s->vec3("min"), "min");
     p.domain.max = s->require(s->vec3("max"), "max");
-    for (int c = 0; c < 3; ++c)
+    for (int c = 0; c < 3; ++c) {
       if (!(p.domain.min[c] < p.domain.max[c]))
         s->fail("max", std::string("expected max > min in every component, got ") + "xyz"[c] + ": min " +
                            number_text(p.domain.min[c]) + " >= max " + number_text(p.domain.max[c]));
+      // The extent is a periodic axis's period and what the brick grid divides (Derived limits).
+      const std::string what = std::string("the extent max - min along ") + "xyz"[c];
+      if (const std::string why = usable_problem(p.domain.max[c] - p.domain.min[c], what, "m"); !why.empty())
+        s->fail("max", why + "; expected a finite extent > 0");
+    }
     if (const auto e = s->string("on_exit")) {
       if (*e == "remove") p.domain.on_exit = ExitPolicy::Remove;
       else if (*e == "stop") p.domain.on_exit = ExitPolicy::Stop;
@@ -323,6 +287,9 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
                                            "format", "contacts_every", "barrier_loads"})) {
     s->get("dir", p.output.dir);
     if (p.output.dir.empty()) s->fail("dir", "expected a non-empty folder name");
+    for (const auto& part : std::filesystem::path(p.output.dir))  // each a name in the file system
+      if (part.string().size() > 255 || p.output.dir.find('\0') != std::string::npos)
+        s->fail("dir", "expected folder names of at most 255 bytes without NUL characters (a file system's limit)");
     if (const auto name = s->string("format")) {
       if (const auto f = vtk_format_from_name(*name)) p.output.format = *f;
       else s->fail("format", "expected \"ascii\", \"binary\" or \"compressed\", got \"" + *name + "\"");

@@ -7,10 +7,16 @@
 // file, line and key.
 #include <string>
 
+#include "model/material.hpp"
+
 namespace mpdem {
 
 // Finite, > 0 and not subnormal: a value the run can divide by.
 bool usable_positive(double v);
+
+// "" when v is usable_positive, else "<what> overflows (inf <unit>)", "... underflows (0 m^3)",
+// "... is not a number" or "... is negative".
+std::string usable_problem(double v, const std::string& what, const char* unit);
 
 // The contact moduli of two particles of one material, E* (51) and Mindlin's G*, as the
 // time-step estimate and the contact table compute them, against a rigid barrier too, and the
@@ -29,5 +35,8 @@ std::string time_scale_problem(double radius, double density, double young, doub
 
 // Heat capacity of the particle, m c (the temperature rate divides by it).
 std::string thermal_mass_problem(double radius, double density, double heat_capacity);
+
+// The three above for a particle of `radius` of material `m` (the heat capacity with `thermal`).
+std::string radius_problem(double radius, const Material& m, bool thermal);
 
 }  // namespace mpdem

@@ -40,6 +40,9 @@ struct InletSpec {
   std::uint64_t seed = 1;
   std::size_t max_attempts = 1000;  // random positions tried per particle and insertion time
   std::size_t line = 0;             // line of the [[inlet]] entry in the scene file
+
+  // s, the interval in effect: `interval`, or 100 time steps of `dt` when none is given.
+  double interval_or_default(double dt) const { return interval > 0.0 ? interval : 100.0 * dt; }
 };
 
 struct SinkSpec {

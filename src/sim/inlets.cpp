@@ -22,8 +22,7 @@ namespace {
 static_assert(sizeof(Inlets::State) == 40 && std::is_trivially_copyable_v<Inlets::State>,
               "Inlets::State changed: bump kCheckpointFormat (io/checkpoint_format.hpp) and this size");
 
-constexpr double kIntervalSteps = 100.0;  // default interval: this many time.dt
-constexpr double kTimeSlack = 1e-6;       // -, of the interval: round-off of the summed steps
+constexpr double kTimeSlack = 1e-6;  // -, of the interval: round-off of the summed steps
 
 // SplitMix64's finaliser: nearby inputs (seeds, inlet and insertion indices) give unrelated seeds.
 std::uint64_t mix(std::uint64_t z) {
@@ -71,7 +70,7 @@ Inlets::Inlets(const Model& model, const Particles& p) : model_(model) {
              mat,
              model.materials.at(static_cast<std::size_t>(mat)).density,
              s.end.value_or(prm.time.duration),
-             s.interval > 0.0 ? s.interval : kIntervalSteps * prm.time.dt,
+             s.interval_or_default(prm.time.dt),
              {},
              {}};
     inlet_centre_box(s.volume, 0.0, in.lo, in.hi);

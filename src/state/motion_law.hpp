@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <string>
 
 #include "core/vec3.hpp"
 #include "state/rotation_law.hpp"
@@ -44,6 +45,10 @@ struct MotionLaw {
   bool timed() const { return active_from > 0.0 || active_until < HUGE_VAL; }
   // Whether the element takes part at time t: active_from <= t < active_until.
   bool active_at(double t) const { return t >= active_from && t < active_until; }
+  // "" when the displacement and velocity stay finite over [0, duration] (their bounds per
+  // component |a| T + |A| + |B| and |a| + |A| |w1| + |B| |w2|, the rotation's angle |omega| T), else what
+  // overflows; `key` is set to the term to blame ("a", "A", "B", "w1", "w2", "omega").
+  std::string limit_problem(double duration, std::string& key) const;
 };
 
 }  // namespace mpdem

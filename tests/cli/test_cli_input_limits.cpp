@@ -63,3 +63,52 @@ TEST(CliInputLimits, FolderAsParticleFile) {
   expect_refused(d, "scene.toml:7: 'particles.file'", "is a directory");
   fs::remove_all(d);
 }
+
+// Issue 45 item 2: values each in range whose derived sizes are beyond reason. On main they ran:
+// the grid died with std::bad_alloc at its first sample, the sink removed nothing, the periodic
+// run wrote NaN unwrapped positions (exit 0), the inlet inserted nothing, the log-normal failed
+// at its first draw without file, line or key (exit 1), the long name with a raw "filesystem
+// error". Now `check` and `run` refuse each before step 1: exit 2, file:line:key, nothing written.
+TEST(CliInputLimits, DerivedSizesBeyondReason) {
+  const std::string particles = "[[particles]]\nfile = \"p.csv\"\n";  // lines 6-7
+  const std::string inlet = "[[inlet]]\nregion = \"box\"\nmin = [0, 0, 0]\nmax = [0.1, 0.1, 0.1]\ncount_rate = 100\n";
+  const struct {
+    std::string body, location, text;
+  } cases[] = {
+      {"[[coarse_grain]]\nwidth = 0.01\nevery = 0.0005\n"
+       "grid = { min = [0, 0, 0], max = [1, 1, 1], cells = [1e5, 1e5, 1e5] }\n",
+       "scene.toml:11: 'coarse_grain.grid.cells'", "1e+15 points"},
+      {"[[sink]]\nregion = \"cylinder\"\nbase = [0, 0, 0]\naxis = [0, 0, 1e200]\ncylinder_radius = 0.1\n",
+       "scene.toml:11: 'sink.axis'", "the squared axis length overflows"},
+      {"[domain]\nmin = [-1e308, 0, 0]\nmax = [1e308, 1, 1]\nperiodic = [\"x\"]\n", "scene.toml:10: 'domain.max'",
+       "the extent max - min along x overflows"},
+      {inlet + "radius = 0.001\ninterval = 1e-100\n", "scene.toml:14: 'inlet.interval'", "insertion times"},
+      {inlet + "radius = { distribution = \"lognormal\", mean = 0.001, std = 1e300 }\n",
+       "scene.toml:13: 'inlet.radius.std'", "the log-normal's spread overflows"},
+      {"[[coarse_grain]]\nwidth = 0.01\nevery = 0.0005\nname = \"" + std::string(300, 'a') +
+           "\"\ngrid = { min = [0, 0, 0], max = [1, 1, 1], cells = [2, 2, 2] }\n",
+       "scene.toml:11: 'coarse_grain.name'", "at most 200 bytes"},
+  };
+  for (const auto& c : cases) {
+    const fs::path d = fresh_dir("lim_derived");
+    write_text(d / "p.csv", "id,x,y,z,radius\n1,0.05,0.05,0.05,0.001\n");
+    write_text(d / "scene.toml", std::string(kHead) + particles + c.body);
+    expect_refused(d, c.location, c.text);
+    fs::remove_all(d);
+  }
+}
+
+// `mpdem generate` wrote particles at x = inf for a box whose extent overflows, and at NaN for a
+// cylinder whose squared axis does: now exit 2 naming the option, nothing written.
+TEST(CliInputLimits, GenerateRegionSizes) {
+  const fs::path d = fresh_dir("lim_generate");
+  for (const char* args : {"--min -1e308 0 0 --max 1e308 0.01 0.01", "--region cylinder --base 0 0 0 --axis 0 0 1e200 "
+                                                                     "--cylinder-radius 0.01"}) {
+    const CommandResult r = run_mpdem(std::string("generate -o g.csv -n 3 -r 0.001 ") + args, d);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find("overflows"), std::string::npos) << r.err;
+    EXPECT_TRUE(r.err.find("'--max'") != std::string::npos || r.err.find("'--axis'") != std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(d / "g.csv")) << args;
+  }
+  fs::remove_all(d);
+}

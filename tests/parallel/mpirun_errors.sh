@@ -62,4 +62,14 @@ check collision 1 "particles id 3 and id 4 (on rank $((NP - 1)) of $NP)" "$WORK/
 sed 's/^restitution = 0.5$/restitutoin = 0.5/' "$WORK/collision.toml" > "$WORK/misspelt.toml"
 check misspelt 2 "misspelt.toml:6" "$WORK/misspelt.toml"
 
+# An output folder that cannot be created (a path under a regular file): rank 0 prepares the
+# folder, every rank stops with exit 2 (issue 45 item 5: a raw "filesystem error", exit 1).
+echo x > "$WORK/afile"
+sed 's|^dir = "out"$|dir = "afile/out"|' "$WORK/collision.toml" > "$WORK/unwritable.toml"
+check unwritable 2 "cannot create the output folder" "$WORK/unwritable.toml"
+# A refused folder that rank 0 finds before creating it (not empty): the same (it hung).
+mkdir -p "$WORK/full" && echo x > "$WORK/full/notes.txt"
+sed 's|^dir = "out"$|dir = "full"|' "$WORK/collision.toml" > "$WORK/full.toml"
+check full 2 "the output folder is not empty" "$WORK/full.toml"
+
 exit $fails

@@ -11,6 +11,7 @@
 #include <fmt/core.h>
 
 #include "cli/output_folder.hpp"
+#include "io/output_folder.hpp"
 #include "cli/tool_commands.hpp"
 #include "io/input_error.hpp"
 #include "validate/validation_suite.hpp"

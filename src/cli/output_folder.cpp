@@ -1,16 +1,12 @@
 #include "cli/output_folder.hpp"
 
-#include <unistd.h>
-
 #include <array>
-#include <cerrno>
-#include <cstring>
 #include <string>
 #include <string_view>
-#include <system_error>
 #include <vector>
 
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 
 namespace mpdem::cli {
 
@@ -25,31 +21,7 @@ constexpr std::array<std::string_view, 15> kOutputs{
 // The coarse-grained fields' files: cg_<name>.csv, cg_<name>.pvd and the folder cg_<name>.
 bool coarse_grain_output(const fs::path& p) { return p.filename().string().rfind("cg_", 0) == 0; }
 
-[[noreturn]] void refuse(const fs::path& dir, const std::string& why) {
-  throw InputError(dir.string(), 0, "", why + "; choose another with --output");
-}
-
-// The reason of a failed file system call, with what it means for a folder path.
-std::string reason(const std::error_code& ec) {
-  if (ec == std::errc::not_a_directory) return "a part of the path is a file, not a folder";
-  if (ec == std::errc::read_only_file_system) return "the file system is read-only";
-  return ec.message();
-}
 }  // namespace
-
-void ensure_output_folder(const fs::path& dir) {
-  std::error_code ec;
-  const fs::file_status st = fs::status(dir, ec);
-  if (fs::exists(st) && !fs::is_directory(st)) refuse(dir, "the output folder is a file");
-  if (!fs::exists(st)) {
-    fs::create_directories(dir, ec);
-    if (ec) refuse(dir, "cannot create the output folder (" + reason(ec) + ")");
-  }
-  // Writing and creating files needs both; access() also reports a read-only file system.
-  if (::access(dir.c_str(), W_OK | X_OK) != 0)
-    refuse(dir,
-           "cannot write into the output folder (" + reason(std::error_code(errno, std::generic_category())) + ")");
-}
 
 void prepare_output_folder(const fs::path& dir, bool overwrite) {
   std::error_code ec;

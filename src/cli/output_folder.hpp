@@ -7,12 +7,7 @@
 namespace mpdem::cli {
 
 // Throws InputError when `dir` holds files and overwrite is false. With overwrite, removes the
-// outputs of an earlier run. Then ensure_output_folder.
+// outputs of an earlier run. Then ensure_output_folder (io/output_folder.hpp).
 void prepare_output_folder(const std::filesystem::path& dir, bool overwrite);
-
-// Creates `dir` if needed; throws InputError (one clean message: exit 2) when it is a file,
-// cannot be created (a part of the path is a file, a read-only file system, no permission, a name
-// too long) or cannot be written into.
-void ensure_output_folder(const std::filesystem::path& dir);
 
 }  // namespace mpdem::cli

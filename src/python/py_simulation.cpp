@@ -9,6 +9,7 @@
 
 #include "io/global_log.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 #include "model/derived_limits.hpp"
 #include "model/particle_defaults.hpp"
 #include "parallel/communicator.hpp"
@@ -46,6 +47,8 @@ void use_threads(int threads) {
 PySimulation::PySimulation(Scene&& scene, const SimulationOptions& options)
     : sim_(std::make_unique<Simulation>(std::move(scene), run_options(options))), options_(options) {
   if (!options.resume.empty()) sim_->resume_from(options.resume);
+  // Refused here, at the call, rather than as a raw filesystem error at the first output.
+  if (options.write_output) ensure_output_folder(output_dir(), "choose another with output_dir=");
   last_check_ = wall_seconds();
 }
 

@@ -161,3 +161,17 @@ def test_arrays_of_the_wrong_shape_or_not_numbers_name_their_argument(sim, tmp_p
     refused("radius", lambda: s.particles(at, [1e-3, 1e-3, 1e-3]))
     refused("velocity", lambda: s.particles(at, 1e-3, velocity=[1.0, 2.0]))
     refused("vertices", lambda: s.barriers(np.zeros((2, 3, 2))))
+
+
+@pytest.mark.parametrize("under", ["afile/out", "afile"])
+def test_output_folder_that_cannot_be_made_is_refused_at_the_call(tmp_path, under):
+    """A path under a regular file (or the file itself) is one clean InputError when the Simulation
+    is made, not a raw 'filesystem error' at the first output."""
+    (tmp_path / "afile").write_text("not a folder\n")
+    with pytest.raises(mpdem.InputError) as e:
+        mpdem.Simulation(build_bed(tmp_path), threads=1, output_dir=tmp_path / under)
+    message = str(e.value)
+    assert isinstance(e.value, ValueError)
+    assert "filesystem error" not in message, message
+    assert str(tmp_path / under) in message and "output_dir=" in message, message
+    assert ("a part of the path is a file" in message) or ("the output folder is a file" in message), message

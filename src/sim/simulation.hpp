@@ -131,9 +131,9 @@ class Simulation {
   // others' contact history kept, the rates re-evaluated; exits: domain exits (counted, one
   // progress line each), else a sink's. Collective on several ranks.
   void remove_marked(const std::vector<char>& keep, bool exits);
-  ParticleTotals totals() const;            // the sums over every rank's particles for the global log
-  void log_row(GlobalLogRow row);           // a global log row, with the inlets' and sinks' columns
-  std::string open_system_summary() const;  // the inlets' and sinks' line for stderr ("" = none)
+  ParticleTotals totals() const;                      // the sums over every rank's particles for the global log
+  void log_row(GlobalLogRow row);                     // a global log row, with the inlets' and sinks' columns
+  std::string open_system_summary() const;            // the inlets' and sinks' line for stderr ("" = none)
   void summarise_open_system(RunSummary& sum) const;  // its totals for the end-of-run verdict
   // J, mechanical energy + cumulative dissipation + what removed particles took along, from the
   // scan of the particles.

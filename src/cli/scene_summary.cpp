@@ -10,6 +10,7 @@
 #include "contact/contact_table.hpp"
 #include "physics/barrier_moduli.hpp"
 #include "physics/time_step_estimate.hpp"
+#include "sim/simulation.hpp"
 
 namespace mpdem::cli {
 
@@ -144,9 +145,9 @@ void print_summary(const Scene& scene) {
                rigid == 0 ? "" : (rigid == n ? " (rigid)" : " (" + std::to_string(rigid) + " rigid)"), area);
   }
   print_entries(scene);
-  fmt::print("integrator: {}  phi {}  dt {:.4g} s  duration {:.6g} s  ({:.0f} steps)\n",
+  fmt::print("integrator: {}  phi {}  dt {:.4g} s  duration {:.6g} s  ({} steps)\n",
              prm.time.integrator == Integrator::Verlet ? "verlet" : "trapezoidal", prm.time.phi, prm.time.dt,
-             prm.time.duration, std::ceil(prm.time.duration / prm.time.dt));
+             prm.time.duration, fixed_step_count(prm.time.duration, prm.time.dt));
   const TimeStepAdvice a = time_step_advice(scene);
   fmt::print("time step: {}; {}: particle-particle {:.4g} s", rayleigh_text(a), contact_text(a), a.contact_pp);
   if (a.contact_pb > 0.0) fmt::print(", particle-barrier {:.4g} s", a.contact_pb);

@@ -106,11 +106,20 @@ void Simulation::advance_clock(double h, bool adaptive) {
   time_ = adaptive ? time_ + h : clock_time_ + static_cast<double>(steps_ - clock_step_) * h;
 }
 
-double Simulation::round_off(double end) const {
-  // A few units in the last place of `end`, and never less than a billionth of the step.
+double end_round_off(double end, double dt) {
   const double ulps = std::isfinite(end) ? 8.0 * std::numeric_limits<double>::epsilon() * std::abs(end) : 0.0;
-  return 1e-9 * scene_.model.params.time.dt + ulps;
+  return 1e-9 * dt + ulps;
 }
+
+std::uint64_t fixed_step_count(double duration, double dt) {
+  const double n = std::ceil(duration / dt);
+  if (!(n >= 1.0)) return 0;
+  // ceil may land one above when duration / dt rounds up past a whole number.
+  const bool one_less = (n - 1.0) * dt >= duration - end_round_off(duration, dt);
+  return static_cast<std::uint64_t>(one_less ? n - 1.0 : n);
+}
+
+double Simulation::round_off(double end) const { return end_round_off(end, scene_.model.params.time.dt); }
 
 bool Simulation::reached(double end) const { return time_ >= end - round_off(end); }
 

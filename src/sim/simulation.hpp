@@ -46,6 +46,13 @@ struct RunOptions {
 // Output folder of a run: options.output_dir, else the scene's [output] dir relative to the scene.
 std::filesystem::path output_dir_for(const Scene& scene, const RunOptions& options);
 
+// s, how far short of `end` the time of a run with step `dt` still counts as there (a few units
+// in the last place of `end`, never less than a billionth of the step): Simulation::reached.
+double end_round_off(double end, double dt);
+// The steps of `dt` that a fixed-step run of `duration` takes (the last one whole when it ends
+// within end_round_off of the end, cut otherwise).
+std::uint64_t fixed_step_count(double duration, double dt);
+
 class Simulation {
  public:
   // Owns the scene from here on: its model and state are read and changed through model(),

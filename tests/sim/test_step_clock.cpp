@@ -74,3 +74,18 @@ TEST(StepClock, EndCheckpointResumedWithALongerDurationIsTheUninterruptedRun) {
     }
   }
 }
+
+// The step count mpdem check prints is the one the run takes: 0.2 / 2e-6 = 100000.00000000001
+// in doubles, whose ceil (the summary's count before) is one step more than the run makes.
+TEST(StepClock, FixedStepCountIsTheRunsStepCount) {
+  omp_set_num_threads(1);
+  EXPECT_EQ(fixed_step_count(0.2, 2e-6), 100000u);
+  EXPECT_EQ(fixed_step_count(0.1, kDt), 25000u);
+  EXPECT_EQ(fixed_step_count(0.1 + 0.5 * kDt, kDt), 25001u);  // a last step cut to land on the end
+  EXPECT_EQ(fixed_step_count(0.0, kDt), 0u);
+  for (const double duration : {0.1, 0.0123, 0.1 + 0.5 * kDt}) {
+    Simulation sim(falling_pair(duration), RunOptions{{}, false, false});
+    sim.run();
+    EXPECT_EQ(sim.steps(), fixed_step_count(duration, kDt)) << duration;
+  }
+}

@@ -57,7 +57,7 @@ ImpactSpeed expected_impact_speed(const Scene& scene) {
   std::vector<std::pair<double, double>> tops;  // per inlet: m, top along gravity; m/s, insertion speed
   for (const InletSpec& in : prm.inlets) {
     Vec3 a, c;
-    if (!inlet_centre_box(in.volume, in.radius.smallest(), a, c)) inlet_centre_box(in.volume, 0.0, a, c);
+    smallest_centre_box(in, a, c);
     double top = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 8; ++k) {
       const Vec3 x{k & 1 ? c.x : a.x, k & 2 ? c.y : a.y, k & 4 ? c.z : a.z};

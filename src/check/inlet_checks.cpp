@@ -30,7 +30,7 @@ void check_inlet_in_domain(const Scene& scene, const InletSpec& in, SceneProblem
   const DomainParams& d = scene.model.params.domain;
   if (!d.bounded) return;
   Vec3 lo, hi;  // m, the box of the centres of the smallest particles (they come nearest the faces)
-  if (!inlet_centre_box(in.volume, in.radius.smallest(), lo, hi)) inlet_centre_box(in.volume, 0.0, lo, hi);
+  smallest_centre_box(in, lo, hi);
   bool apart = false, beyond = false;  // no centre / some centres outside the domain
   std::string axes;                    // the axes along which it reaches out
   for (int c = 0; c < 3; ++c) {

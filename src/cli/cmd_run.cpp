@@ -8,10 +8,10 @@
 #include "check/scene_checks.hpp"
 #include "cli/commands.hpp"
 #include "cli/output_folder.hpp"
-#include "io/output_folder.hpp"
 #include "cli/run_paths.hpp"
 #include "cli/scene_summary.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
 #include "parallel/communicator.hpp"
 #include "sim/simulation.hpp"
 

@@ -61,6 +61,10 @@ bool inlet_centre_box(const InsertionVolume& vol, double inset, Vec3& lo, Vec3& 
   return true;
 }
 
+void smallest_centre_box(const InletSpec& in, Vec3& lo, Vec3& hi) {
+  if (!inlet_centre_box(in.volume, in.radius.smallest(), lo, hi)) inlet_centre_box(in.volume, 0.0, lo, hi);
+}
+
 Inlets::Inlets(const Model& model, const Particles& p) : model_(model) {
   const Params& prm = model.params;
   for (const InletSpec& s : prm.inlets) {

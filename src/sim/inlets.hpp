@@ -30,6 +30,9 @@ namespace mpdem {
 // place in `vol` (inset 0: the volume itself); tight for boxes, cylinders and discs. False when
 // no such particle fits.
 bool inlet_centre_box(const InsertionVolume& vol, double inset, Vec3& lo, Vec3& hi);
+// m, the world box of the centres of an inlet's smallest particles (they come nearest its faces);
+// the volume itself when they do not fit. For the checks before the run.
+void smallest_centre_box(const InletSpec& in, Vec3& lo, Vec3& hi);
 
 class Inlets {
  public:

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/particle_csv.hpp"
 #include "temp_input.hpp"
 

@@ -8,7 +8,7 @@
 #include "contact/contact_table.hpp"
 #include "physics/tangential.hpp"
 #include "contact/barrier_contact_store.hpp"
-#include "sim/interactions.hpp"
+#include "contact/eval_request.hpp"
 
 namespace mpdem {
 

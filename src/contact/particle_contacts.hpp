@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "contact/contact_table.hpp"
-#include "sim/interactions.hpp"
+#include "contact/eval_request.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "contact/pair_batch.hpp"
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <cstdint>
 
-#include "sim/state_scan.hpp"
+#include "integrate/state_scan.hpp"
 
 namespace mpdem {
 

@@ -7,7 +7,7 @@
 //   sections until the end of the file, each:
 //     name length (u16), name, payload length (u64), payload, CRC-32 of name and payload (u32)
 //
-// The payloads are BinaryWriter streams (io/binary_stream.hpp), native byte order.
+// The payloads are BinaryWriter streams (core/binary_stream.hpp), native byte order.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/binary_stream.hpp"
+#include "core/binary_stream.hpp"
 
 namespace mpdem {
 

@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace mpdem {
 

@@ -23,7 +23,7 @@ inline bool is_column_name(std::string_view name) {
 }
 
 // A time-series log with a fixed header. Rows are buffered and appended as whole lines
-// (io/atomic_file.hpp append_complete_lines) at every flush(), when the buffer grows large,
+// (core/atomic_file.hpp append_complete_lines) at every flush(), when the buffer grows large,
 // and in the destructor, so a killed run keeps every flushed row intact.
 class CsvLog {
  public:

@@ -9,7 +9,7 @@
 #include <unordered_map>
 
 #include "io/csv_table.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "model/derived_limits.hpp"
 #include "model/material_variants.hpp"
 

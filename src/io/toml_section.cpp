@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "io/closest_name.hpp"
-#include "io/input_error.hpp"
+#include "core/closest_name.hpp"
+#include "core/input_error.hpp"
 
 namespace mpdem {
 

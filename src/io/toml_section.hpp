@@ -16,7 +16,7 @@
 #include <toml++/toml.h>
 
 #include "core/vec3.hpp"
-#include "io/value_range.hpp"
+#include "core/value_range.hpp"
 
 namespace mpdem {
 

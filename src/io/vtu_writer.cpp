@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace mpdem {
 

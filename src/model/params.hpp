@@ -139,7 +139,7 @@ struct DomainParams {
   Vec3 min{}, max{};     // m, axis-aligned box
   ExitPolicy on_exit = ExitPolicy::Stop;
   // Axes (x, y, z) along which the domain is periodic, with period max - min: particles leaving
-  // through those faces come back through the opposite ones (neighbor/periodic_images.hpp).
+  // through those faces come back through the opposite ones (parallel/periodic_images.hpp).
   std::array<bool, 3> periodic{};
   std::size_t periodic_line = 0;  // line of domain.periodic in the scene file, for messages (0 = none)
   bool any_periodic() const { return periodic[0] || periodic[1] || periodic[2]; }

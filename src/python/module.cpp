@@ -10,11 +10,12 @@
 #include <cmath>
 
 #include "check/scene_checks.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "python/barrier_groups.hpp"
 #include "python/particle_arrays.hpp"
 #include "python/py_simulation.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace py = pybind11;
 using namespace mpdem;

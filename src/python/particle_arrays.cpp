@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace mpdem::python {
 

@@ -9,11 +9,11 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "generate/random.hpp"
+#include "core/random.hpp"
 #include "model/particle_defaults.hpp"
 #include "sim/checkpointed_states.hpp"
 #include "sim/insertion_space.hpp"
-#include "sim/state_scan.hpp"
+#include "integrate/state_scan.hpp"
 
 namespace mpdem {
 

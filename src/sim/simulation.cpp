@@ -11,16 +11,16 @@
 #include "integrate/adaptive_step.hpp"
 #include "integrate/integrator_policy.hpp"
 #include "model/material_variants.hpp"
-#include "sim/energy.hpp"
-#include "io/atomic_file.hpp"
-#include "io/output_manager.hpp"
+#include "integrate/energy.hpp"
+#include "core/atomic_file.hpp"
+#include "output/output_manager.hpp"
 #include "contact/particle_contacts.hpp"
-#include "io/progress.hpp"
+#include "output/progress.hpp"
 #include "parallel/gather.hpp"
-#include "io/input_error.hpp"
-#include "sim/analysis_outputs.hpp"
+#include "core/input_error.hpp"
+#include "output/analysis_outputs.hpp"
 #include "sim/inlets.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
 #include "sim/sinks.hpp"
 #include "sim/stop_signal.hpp"
 
@@ -38,6 +38,13 @@ Scene& with_materials_by_index(Scene& scene) {
   resolve_material_variants(scene.model, scene.particles, scene.barriers, scene.file.string());
   return scene;
 }
+// The log's inlet and sink columns, in GlobalLogRow::open_system's order.
+std::vector<std::string> open_system_log_columns(const Params& prm) {
+  std::vector<std::string> c = Inlets::log_columns(prm);
+  for (std::string& s : Sinks::log_columns(prm)) c.push_back(std::move(s));
+  return c;
+}
+
 }  // namespace
 
 Simulation::Simulation(Scene&& scene, RunOptions options)
@@ -234,7 +241,7 @@ std::vector<std::pair<std::string, double>> Simulation::log_values() const {
     Sinks copy = *sinks_;
     copy.log_values(time_, row.open_system);
   }
-  const GlobalLogLayout layout(scene_.model, scene_.barriers);
+  const GlobalLogLayout layout(scene_.model, scene_.barriers, open_system_log_columns(scene_.model.params));
   const std::vector<double> v = layout.values(row, totals(), stats());
   std::vector<std::pair<std::string, double>> out;
   for (std::size_t k = 0; k < v.size(); ++k) out.emplace_back(layout.columns()[k], v[k]);
@@ -267,9 +274,9 @@ void Simulation::start() {
   const Params& prm = scene_.model.params;
   const bool out = options_.write_output;  // on every rank; rank 0 writes, the others their particle pieces
   if (out && root()) {
-    output_ = std::make_unique<OutputManager>(scene_.model, output_dir_for(scene_, options_), scene_.barriers,
-                                              resumed_ ? std::optional<double>(time_) : std::nullopt,
-                                              comm_ ? comm_->size() : 1);
+    output_ = std::make_unique<OutputManager>(
+        scene_.model, output_dir_for(scene_, options_), scene_.barriers, open_system_log_columns(prm),
+        resumed_ ? std::optional<double>(time_) : std::nullopt, comm_ ? comm_->size() : 1);
     if (!resume_output_state_.empty()) {
       BinaryReader r(resume_output_state_.data(), resume_output_state_.size());
       output_->restore(r);

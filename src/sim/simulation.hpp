@@ -14,12 +14,12 @@
 #include "integrate/verlet.hpp"
 #include "io/scene_fingerprint.hpp"
 #include "model/scene.hpp"
-#include "sim/energy.hpp"
+#include "integrate/energy.hpp"
 #include "sim/run_record.hpp"
-#include "sim/state_scan.hpp"
+#include "integrate/state_scan.hpp"
 #include "sim/step_totals.hpp"
 #include "parallel/communicator.hpp"
-#include "sim/interactions.hpp"
+#include "interact/interactions.hpp"
 
 namespace mpdem {
 
@@ -100,7 +100,7 @@ class Simulation {
   // `limit` caps the step (to land exactly on the end time).
   StepReport advance_adaptive(double limit);
   double current_dt() const { return dt_; }
-  // Checkpoints (sim/checkpoint.cpp): write the full state; resume before run() (throws InputError
+  // Checkpoints (sim/simulation_checkpoint.cpp): write the full state; resume before run() (throws InputError
   // for a file that is not a checkpoint of this scene).
   void write_checkpoint(const std::filesystem::path& file);
   void resume_from(const std::filesystem::path& file);

@@ -8,7 +8,7 @@
 
 #include "contact/particle_contacts.hpp"
 #include "parallel/gather.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
 #include "sim/simulation.hpp"
 
 namespace mpdem {

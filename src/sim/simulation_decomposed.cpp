@@ -9,7 +9,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "io/output_manager.hpp"
+#include "output/output_manager.hpp"
 #include "io/pvtu_writer.hpp"
 #include "parallel/brick_grid.hpp"
 #include "parallel/gather.hpp"

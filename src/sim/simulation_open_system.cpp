@@ -9,14 +9,14 @@
 #include <tuple>
 #include <vector>
 
-#include "io/output_manager.hpp"
-#include "io/progress.hpp"
+#include "output/output_manager.hpp"
+#include "output/progress.hpp"
 #include "parallel/gather.hpp"
 #include "sim/inlets.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
 #include "sim/simulation.hpp"
 #include "sim/sinks.hpp"
-#include "sim/state_scan.hpp"
+#include "integrate/state_scan.hpp"
 
 namespace mpdem {
 

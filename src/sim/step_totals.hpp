@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "contact/particle_contacts.hpp"
-#include "sim/interactions.hpp"
-#include "sim/state_scan.hpp"
+#include "interact/interactions.hpp"
+#include "integrate/state_scan.hpp"
 
 namespace mpdem {
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "io/csv_table.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/particle_csv.hpp"
 #include "model/scene.hpp"
 #include "support/temp_dir.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "io/csv_log.hpp"
 #include "state/particles.hpp"
 #include "support/output_folder.hpp"

@@ -13,7 +13,7 @@
 
 #include "io/barrier_csv.hpp"
 #include "io/csv_table.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/particle_csv.hpp"
 #include "support/temp_dir.hpp"
 

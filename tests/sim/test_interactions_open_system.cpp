@@ -1,4 +1,4 @@
-// Interactions in an open system (sim/interactions_open_system.cpp): a removal re-evaluates the
+// Interactions in an open system (interact/interactions_open_system.cpp): a removal re-evaluates the
 // rates only when a removed particle acted on the others.
 #include <gtest/gtest.h>
 

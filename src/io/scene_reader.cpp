@@ -18,7 +18,7 @@
 #include "io/inlet_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/input_file.hpp"
-#include "io/particle_csv.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "io/stl_reader.hpp"
 #include "io/toml_section.hpp"
 #include "io/vtk_xml.hpp"

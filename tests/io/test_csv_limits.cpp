@@ -9,7 +9,7 @@
 
 #include "io/csv_table.hpp"
 #include "io/input_error.hpp"
-#include "io/particle_csv.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "model/scene.hpp"
 #include "support/temp_dir.hpp"
 

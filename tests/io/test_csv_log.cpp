@@ -1,5 +1,5 @@
-// The CSV log and the particle CSV snapshots (io/csv_log.hpp), read back through std::stod: with 17
-// significant digits every double must come back bit for bit (tolerance: exact).
+// The CSV log and the particle CSV snapshots (io/csv_log.hpp, io/particle_csv_writer.hpp), read back through std::stod:
+// with 17 significant digits every double must come back bit for bit (tolerance: exact).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,6 +9,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/csv_log.hpp"
+#include "io/particle_csv_writer.hpp"
 #include "state/particles.hpp"
 #include "support/output_folder.hpp"
 #include "support/sample_particles.hpp"

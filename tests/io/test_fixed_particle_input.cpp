@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "io/csv_log.hpp"
-#include "io/particle_csv.hpp"
+#include "io/particle_csv_writer.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "io/vtu_writer.hpp"
 #include "model/scene.hpp"
 #include "support/run_command.hpp"

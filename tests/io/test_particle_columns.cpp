@@ -3,9 +3,12 @@
 // against the table, row by row. Values compare exactly (the writers print round-trip digits).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -13,6 +16,7 @@
 
 #include "io/particle_csv_reader.hpp"
 #include "io/particle_csv_writer.hpp"
+#include "io/pvtu_writer.hpp"
 #include "io/vtu_writer.hpp"
 #include "state/particle_columns.hpp"
 #include "support/output_folder.hpp"
@@ -121,4 +125,60 @@ TEST(ParticleColumns, EveryParticlesArrayHasOneColumn) {
   p.for_each_array([&](const char*, auto&) { ++arrays; });
   for_each_particle_column([&](const auto&) { ++columns; });
   EXPECT_EQ(columns, arrays);
+}
+
+// The torque row (N m, 3 components, output only) puts the torque sums into the particle CSV
+// (tx, ty, tz after the last column), the particle VTU (array "torque") and the PVTU's declarations,
+// every value exact; a snapshot with it reads back as input (torque skipped, zero until the
+// first evaluation).
+TEST_F(OutputTest, TorqueIsInTheCsvTheVtuAndThePvtu) {
+  const Particles p = sample();  // ids ascending: rows in storage order
+
+  const fs::path csv = dir / "p.csv";
+  write_particles_csv(csv, p, 0.25);
+  const std::vector<std::string> lines = lines_of(slurp(csv));
+  const std::vector<std::string> header = split(lines.at(0), ',');
+  const auto at = [&header](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  ASSERT_LT(at("tz"), header.size());
+  EXPECT_EQ(at("tx"), at("fixed") + 1);  // after the last column: the earlier ones keep their place
+  EXPECT_EQ(at("ty"), at("tx") + 1);
+  EXPECT_EQ(at("tz"), at("ty") + 1);
+  ASSERT_EQ(lines.size(), p.size() + 1);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::vector<std::string> row = split(lines[i + 1], ',');
+    EXPECT_EQ(std::stod(row.at(at("tx"))), p.torque[i].x) << i;
+    EXPECT_EQ(std::stod(row.at(at("ty"))), p.torque[i].y) << i;
+    EXPECT_EQ(std::stod(row.at(at("tz"))), p.torque[i].z) << i;
+  }
+
+  Model m = three_materials();
+  Particles in;
+  read_particle_csv(csv, m, 0, in);
+  ASSERT_EQ(in.size(), p.size());
+  for (std::size_t i = 0; i < in.size(); ++i) EXPECT_EQ(in.torque[i], Vec3{}) << i;
+
+  const fs::path vtu = dir / "p.vtu";
+  write_particles_vtu(vtu, p, 0.25, {VtkFormat::Ascii, {}});
+  const std::string text = slurp(vtu);
+  const std::string decl = R"(<DataArray type="Float64" Name="torque" NumberOfComponents="3")";
+  const std::size_t open = text.find(decl);
+  ASSERT_NE(open, std::string::npos) << text.substr(0, 2000);
+  const std::size_t begin = text.find('>', open) + 1;
+  std::istringstream values(text.substr(begin, text.find("</DataArray>", begin) - begin));
+  std::vector<double> got;
+  for (std::string token; values >> token;) got.push_back(std::stod(token));
+  ASSERT_EQ(got.size(), 3 * p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    EXPECT_EQ(got[3 * i], p.torque[i].x) << i;
+    EXPECT_EQ(got[3 * i + 1], p.torque[i].y) << i;
+    EXPECT_EQ(got[3 * i + 2], p.torque[i].z) << i;
+  }
+
+  fs::create_directories(dir / "particles");
+  write_particles_pvtu(dir, 0, 2);
+  EXPECT_NE(
+      slurp(dir / particle_pvtu_name(0)).find(R"(<PDataArray type="Float64" Name="torque" NumberOfComponents="3"/>)"),
+      std::string::npos);
 }

@@ -12,6 +12,7 @@
 
 #include "core/atomic_file.hpp"
 #include "io/csv_log.hpp"
+#include "io/particle_csv_writer.hpp"
 #include "io/pvd_index.hpp"
 #include "io/pvtu_writer.hpp"
 #include "io/vtu_writer.hpp"

@@ -140,4 +140,5 @@ PYBIND11_MODULE(_core, m) {
           py::arg("name"), py::arg("values"), py::arg("ids") = py::none());
   m.attr("particle_arrays") = python::particle_array_names();
   m.attr("settable_arrays") = python::settable_array_names();
+  m.attr("particle_array_docs") = python::particle_array_docs();
 }

@@ -20,7 +20,7 @@
 #include "scene/inlet_reader.hpp"
 #include "core/input_error.hpp"
 #include "core/input_file.hpp"
-#include "io/particle_csv.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "io/stl_reader.hpp"
 #include "io/toml_section.hpp"
 #include "io/vtk_xml.hpp"

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/input_error.hpp"
-#include "io/particle_csv.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "io/stl_writer.hpp"
 #include "model/scene.hpp"
 #include "generate/generator.hpp"

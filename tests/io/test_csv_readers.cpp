@@ -14,7 +14,7 @@
 #include "io/barrier_csv.hpp"
 #include "io/csv_table.hpp"
 #include "core/input_error.hpp"
-#include "io/particle_csv.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;

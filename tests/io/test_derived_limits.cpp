@@ -9,7 +9,7 @@
 
 #include "io/barrier_csv.hpp"
 #include "core/input_error.hpp"
-#include "io/particle_csv.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "model/derived_limits.hpp"
 #include "model/scene.hpp"
 #include "support/temp_dir.hpp"

@@ -17,7 +17,7 @@
 #include "core/binary_stream.hpp"
 #include "core/crc32.hpp"
 #include "core/input_error.hpp"
-#include "io/particle_csv.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "io/stl_reader.hpp"
 #include "model/scene.hpp"
 #include "sim/simulation.hpp"

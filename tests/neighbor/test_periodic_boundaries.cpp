@@ -18,7 +18,7 @@
 #include <random>
 
 #include "contact/particle_contacts.hpp"
-#include "io/csv_log.hpp"
+#include "io/particle_csv_writer.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "integrate/energy.hpp"
 #include "sim/simulation.hpp"

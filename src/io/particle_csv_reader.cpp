@@ -1,5 +1,5 @@
 // Particle CSV reader (docs/scene.md "Particle CSV").
-#include "io/particle_csv.hpp"
+#include "io/particle_csv_reader.hpp"
 
 #include <algorithm>
 #include <array>
@@ -12,32 +12,66 @@
 #include "core/input_error.hpp"
 #include "model/derived_limits.hpp"
 #include "model/material_variants.hpp"
+#include "state/particle_columns.hpp"
 
 namespace mpdem {
 
 namespace {
 
-// The input columns, then the columns only a particle CSV snapshot has (docs/output.md: time,
-// the force, a periodic run's image counts and unwrapped centre), which are skipped so that a
-// snapshot seeds a new scene as it is.
-constexpr std::size_t kInputColumns = 21;
-constexpr std::array<std::string_view, kInputColumns + 10> kColumns = {
-    "id",           "x",          "y",        "z",       "vx",    "vy",      "vz",     "wx",          "wy",
-    "wz",           "radius",     "material", "density", "young", "poisson", "charge", "temperature", "heat_capacity",
-    "conductivity", "emissivity", "fixed",    "time",    "fx",    "fy",      "fz",     "ix",          "iy",
-    "iz",           "xu",         "yu",       "zu"};
+// The columns the reader knows: the particle column table's input columns (state/particle_columns.hpp),
+// the material constants a row may give for itself, then the columns a particle CSV snapshot
+// writes only as output (docs/output.md: time, the force, a periodic run's image counts and
+// unwrapped centre), which are skipped so that a snapshot seeds a new scene as it is.
+constexpr std::array<std::string_view, 6> kMaterialColumns = {"density",       "young",        "poisson",
+                                                              "heat_capacity", "conductivity", "emissivity"};
 
-// Column indices (-1 when absent), looked up once per file.
+template <class Add>
+constexpr void for_each_known_column(Add&& add) {
+  for_each_particle_column([&](const auto& c) {
+    if (c.csv_role == CsvRole::input)
+      for (std::size_t k = 0; k < c.components; ++k) add(c.csv[k]);
+  });
+  for (std::string_view m : kMaterialColumns) add(m);
+  add(kCsvTime);
+  for_each_particle_column([&](const auto& c) {
+    if (c.csv_role == CsvRole::output || c.csv_role == CsvRole::periodic)
+      for (std::size_t k = 0; k < c.components; ++k) add(c.csv[k]);
+  });
+  for (std::string_view u : kCsvUnwrapped) add(u);
+}
+
+constexpr std::size_t known_column_count() {
+  std::size_t n = 0;
+  for_each_known_column([&n](std::string_view) { ++n; });
+  return n;
+}
+
+constexpr auto known_columns() {
+  std::array<std::string_view, known_column_count()> out{};
+  std::size_t k = 0;
+  for_each_known_column([&](std::string_view name) { out[k++] = name; });
+  return out;
+}
+constexpr auto kColumns = known_columns();
+
+// Column indices (-1 when absent), looked up once per file; the table's columns by their array.
 struct Cols {
   int id, x, y, z, vx, vy, vz, wx, wy, wz, radius, material, density, young, poisson, charge, temperature,
       heat_capacity, conductivity, emissivity, fixed;
   explicit Cols(const CsvTable& t)
-      : id(t.column("id")), x(t.column("x")), y(t.column("y")), z(t.column("z")), vx(t.column("vx")),
-        vy(t.column("vy")), vz(t.column("vz")), wx(t.column("wx")), wy(t.column("wy")), wz(t.column("wz")),
-        radius(t.column("radius")), material(t.column("material")), density(t.column("density")),
-        young(t.column("young")), poisson(t.column("poisson")), charge(t.column("charge")),
-        temperature(t.column("temperature")), heat_capacity(t.column("heat_capacity")),
-        conductivity(t.column("conductivity")), emissivity(t.column("emissivity")), fixed(t.column("fixed")) {}
+      : id(col(t, &Particles::id)), x(col(t, &Particles::x, 0)), y(col(t, &Particles::x, 1)),
+        z(col(t, &Particles::x, 2)), vx(col(t, &Particles::v, 0)), vy(col(t, &Particles::v, 1)),
+        vz(col(t, &Particles::v, 2)), wx(col(t, &Particles::w, 0)), wy(col(t, &Particles::w, 1)),
+        wz(col(t, &Particles::w, 2)), radius(col(t, &Particles::radius)), material(col(t, &Particles::material)),
+        density(t.column("density")), young(t.column("young")), poisson(t.column("poisson")),
+        charge(col(t, &Particles::charge)), temperature(col(t, &Particles::T)),
+        heat_capacity(t.column("heat_capacity")), conductivity(t.column("conductivity")),
+        emissivity(t.column("emissivity")), fixed(col(t, &Particles::fixed)) {}
+
+  template <class T>
+  static int col(const CsvTable& t, std::vector<T> Particles::*array, std::size_t component = 0) {
+    return t.column(csv_name(array, component));
+  }
 };
 
 // The row's material: a name, or an integer index into the scene's [[material]] list.
@@ -101,7 +135,8 @@ double value_or(const CsvTable& t, const CsvRow& row, int col, double fallback) 
 void read_particle_csv(const std::filesystem::path& file, Model& model, int default_material, Particles& out) {
   const CsvTable t = CsvTable::read(file, kColumns.size());
   t.check_known(kColumns);
-  for (std::string_view req : {"x", "y", "z", "radius"}) t.require(req);
+  for (std::size_t k = 0; k < 3; ++k) t.require(csv_name(&Particles::x, k));
+  t.require(csv_name(&Particles::radius, 0));
   if (model.materials.empty())
     throw InputError(t.file(), 0, "", "no [[material]] is defined, so particles have no default properties");
   if (default_material < 0 || default_material >= static_cast<int>(model.materials.size())) default_material = 0;

@@ -5,13 +5,13 @@
 #include "field/near_field_forces.hpp"
 #include "sim/inlets.hpp"
 #include "sim/sinks.hpp"
-#include "sim/state_scan.hpp"
+#include "sim/health_scan.hpp"
 #include "thermal/heat_transfer.hpp"
 
 namespace mpdem {
 
 ParticleTotals particle_totals(const Model& model, const Particles& p) {
-  const StateScan scan = scan_state(p, model.params.fields, DomainParams{});
+  const HealthScan scan = scan_state(p, model.params.fields, DomainParams{});
   return {scan.energy, scan.electric, static_cast<double>(p.size()),
           model.params.analysis.thermal ? thermal_energy(model, p) : 0.0};
 }

@@ -9,7 +9,7 @@
 
 #include "integrate/step_report.hpp"
 #include "model/scene.hpp"
-#include "sim/energy.hpp"
+#include "sim/energy_balance.hpp"
 #include "sim/interactions.hpp"
 
 namespace mpdem {

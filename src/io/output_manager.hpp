@@ -17,7 +17,7 @@
 #include "io/binary_stream.hpp"
 #include "io/global_log.hpp"
 #include "model/scene.hpp"
-#include "sim/energy.hpp"
+#include "sim/energy_balance.hpp"
 #include "sim/interactions.hpp"
 
 namespace mpdem {

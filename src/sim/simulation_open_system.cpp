@@ -16,7 +16,7 @@
 #include "sim/run_error.hpp"
 #include "sim/simulation.hpp"
 #include "sim/sinks.hpp"
-#include "sim/state_scan.hpp"
+#include "sim/health_scan.hpp"
 
 namespace mpdem {
 

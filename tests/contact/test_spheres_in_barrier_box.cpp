@@ -16,7 +16,7 @@
 #include "core/parallel.hpp"
 #include "integrate/integrator_policy.hpp"
 #include "model/material_variants.hpp"
-#include "sim/energy.hpp"
+#include "sim/energy_balance.hpp"
 #include "sim/interactions.hpp"
 #include "sim/simulation.hpp"
 #include "support/barrier_mechanics_scene.hpp"

@@ -20,7 +20,7 @@
 #include "contact/particle_contacts.hpp"
 #include "io/csv_log.hpp"
 #include "neighbor/neighbor_search.hpp"
-#include "sim/energy.hpp"
+#include "sim/energy_balance.hpp"
 #include "sim/simulation.hpp"
 #include "support/dense_granular_scene.hpp"
 #include "support/scene_builder.hpp"

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sim/energy.hpp"
+#include "sim/energy_balance.hpp"
 #include "sim/simulation.hpp"
 #include "support/barrier_mechanics_scene.hpp"
 #include "support/rotating_meshes.hpp"

@@ -1,4 +1,4 @@
-#include "sim/step_totals.hpp"
+#include "sim/step_collective.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -25,9 +25,9 @@ struct Message {
 };
 }  // namespace
 
-StepTotals combine_over_ranks(const Communicator& comm, const StepTotals& mine) {
+StepCollective combine_over_ranks(const Communicator& comm, const StepCollective& mine) {
   Message m{};  // value-initialised: the padding too, so the message's bytes are all defined
-  const StateScan& s = mine.scan;
+  const HealthScan& s = mine.scan;
   const double scan[kScanSums] = {s.energy.kinetic,
                                   s.energy.rotational,
                                   s.energy.potential,
@@ -74,7 +74,7 @@ StepTotals combine_over_ranks(const Communicator& comm, const StepTotals& mine) 
     t.stop = std::max(t.stop, x.stop);
   }
 
-  StepTotals out = mine;
+  StepCollective out = mine;
   out.stats.contacts_pp = static_cast<std::size_t>(t.sum[0]);
   out.stats.contacts_pb = static_cast<std::size_t>(t.sum[1]);
   for (std::size_t k = 0; k < std::size(kRankSummedStats); ++k) out.stats.*kRankSummedStats[k] = t.sum[2 + k];

@@ -1,6 +1,6 @@
-#include "sim/energy.hpp"
+#include "sim/energy_balance.hpp"
 
-#include "sim/state_scan.hpp"
+#include "sim/health_scan.hpp"
 
 namespace mpdem {
 

@@ -1,6 +1,6 @@
 #pragma once
-// One pass over the particles after every step for the run's health checks (design.md,
-// reliability): energies for the energy balance, non-finite states, particles outside the
+// The health scan: one pass over the particles after every step for the run's checks:
+// energies for the energy balance, non-finite states, particles outside the
 // domain. Counting only - the caller looks for the culprits in the rare case there are any.
 // Sums are thread-count independent.
 #include <array>

@@ -156,11 +156,8 @@ StepReport Simulation::advance_adaptive(double limit) {
 }
 
 double Simulation::energy_balance(const HealthScan& s) const {
-  const InteractionStats& st = stats();
   const double inserted = inlets_ ? inlets_->inserted_energy() : 0.0;  // J, what inlets brought in
-  return -inserted + s.energy.kinetic + s.energy.rotational + s.energy.potential + s.electric + st.elastic_energy +
-         st.damping_dissipated + st.friction_dissipated + record_.removed_energy - st.barrier_work - st.fixed_work -
-         st.external_work;
+  return mpdem::energy_balance(s.energy, s.electric, stats(), BalanceScope{false, inserted, record_.removed_energy});
 }
 
 void Simulation::record_state(const HealthScan& s) {

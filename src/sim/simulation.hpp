@@ -100,7 +100,7 @@ class Simulation {
   // `limit` caps the step (to land exactly on the end time).
   StepReport advance_adaptive(double limit);
   double current_dt() const { return dt_; }
-  // Checkpoints (sim/checkpoint.cpp): write the full state; resume before run() (throws InputError
+  // Checkpoints (io/checkpoint.cpp): write the full state; resume before run() (throws InputError
   // for a file that is not a checkpoint of this scene).
   void write_checkpoint(const std::filesystem::path& file);
   void resume_from(const std::filesystem::path& file);

@@ -1,6 +1,6 @@
 #pragma once
 // StepCollective: what the checks after a step read over all ranks (docs/parallel.md) - the
-// interaction statistics, the particle count, the state scan, the deepest overlap - with the
+// interaction statistics, the particle count, the health scan, the deepest overlap - with the
 // stop signal, rank 0's particle snapshot decision and the barrier loads when they wait for it
 // (Interactions::barrier_loads_pending), combined in one collective: each
 // collective makes every rank wait for the slowest, so a step pays for one rather than six.
@@ -18,7 +18,7 @@ namespace mpdem {
 class Communicator;
 
 struct StepCollective {
-  InteractionStats stats;       // the contact counts and kRankSummedStats summed; the rest as given
+  InteractionStats stats;       // the rows summed over the ranks (interaction_stats.hpp) summed; the rest as given
   std::uint64_t particles = 0;  // owned particles, summed
   HealthScan scan;              // summed
   OverlapReport deepest;        // the deepest overlap; rank: the rank that holds it (the lowest on a tie)

@@ -50,6 +50,15 @@ struct MagneticBodyForce {
   Vec3 force(const Particles& p, std::size_t i) const { return magnetic_force(p.charge[i], p.v[i], B); }
 };
 
+// Fixed particles keep their prescribed motion: the drag leaves them alone.
+struct DragBodyForce {
+  static constexpr BodyEnergy kEnergy = BodyEnergy::dissipated;
+  double c;  // N s/m
+  explicit DragBodyForce(const FieldParams& f) : c(f.drag) {}
+  bool on() const { return c > 0.0; }
+  Vec3 force(const Particles& p, std::size_t i) const { return p.fixed[i] ? Vec3{} : drag_force(c, p.v[i]); }
+};
+
 template <class... E>
 class BodyForceList {
  public:
@@ -100,7 +109,7 @@ class BodyForceList {
 };
 
 // The list. Gravity stays first: it starts every force sum.
-using BodyForces = BodyForceList<GravityBodyForce, ElectricBodyForce, MagneticBodyForce>;
+using BodyForces = BodyForceList<GravityBodyForce, ElectricBodyForce, MagneticBodyForce, DragBodyForce>;
 
 // Whether the scene has a body force that dissipates (its work has a log column and a
 // checkpoint section).

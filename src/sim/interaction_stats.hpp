@@ -100,9 +100,9 @@ struct InteractionStats {
 inline constexpr StatInfo kStats[] = {
 #define MPDEM_STAT_ROW(type, member, unit, ranks, cumulative, saved, balance, column, logged, slot) \
   StatInfo{#member,          unit,                                                                  \
-           StatRanks::ranks, cumulative,                                                                               \
-           StatSaved::saved, StatBalance::balance,                                                                     \
-           column,           StatLogged::logged,                                                                       \
+           StatRanks::ranks, cumulative,                                                            \
+           StatSaved::saved, StatBalance::balance,                                                  \
+           column,           StatLogged::logged,                                                    \
            StatSlot::slot},
     MPDEM_INTERACTION_STATS(MPDEM_STAT_ROW)
 #undef MPDEM_STAT_ROW

@@ -11,7 +11,8 @@ import os
 import re
 import sys
 
-# Bottom to top; folders on one line are one layer and must not include each other.
+# Bottom to top; folders on one line are one layer and must not include each other. A subfolder
+# listed here (contact/laws) is a node of its own, apart from its parent.
 LAYERS = [
     ["core"],
     ["geometry"],
@@ -19,6 +20,7 @@ LAYERS = [
     ["state"],
     ["physics"],
     ["model"],
+    ["contact/laws"],
     ["parallel"],
     ["io"],
     ["generate"],
@@ -36,11 +38,20 @@ LAYERS = [
     ["cli"],
 ]
 RANK = {folder: level for level, names in enumerate(LAYERS) for folder in names}
-INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"/]+)/[^"]+"')
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
+
+
+def node(path):
+    """The layer node of a path relative to src/: its listed subfolder, else its top folder."""
+    parts = path.split("/")
+    for k in range(len(parts) - 1, 0, -1):
+        if "/".join(parts[:k]) in RANK:
+            return "/".join(parts[:k])
+    return parts[0]
 
 
 def scan(src):
-    """Yields (folder, file, line number, included folder) for every quoted folder include."""
+    """Yields (node, file, line number, included node) for every quoted folder include."""
     for folder in sorted(os.listdir(src)):
         top = os.path.join(src, folder)
         if not os.path.isdir(top):
@@ -50,11 +61,12 @@ def scan(src):
                 if not name.endswith((".hpp", ".cpp", ".h")):
                     continue
                 path = os.path.join(dirpath, name)
+                own = node(os.path.relpath(path, src).replace(os.sep, "/"))
                 with open(path, encoding="utf-8") as f:
                     for number, text in enumerate(f, 1):
                         m = INCLUDE.match(text)
-                        if m and os.path.isdir(os.path.join(src, m.group(1))):
-                            yield folder, path, number, m.group(1)
+                        if m and "/" in m.group(1) and os.path.isdir(os.path.join(src, m.group(1).split("/")[0])):
+                            yield own, path, number, node(m.group(1))
 
 
 def cycles(edges):

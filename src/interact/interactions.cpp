@@ -10,13 +10,13 @@
 #include "core/deterministic_sum.hpp"
 #include "core/parallel.hpp"
 #include "core/scoped_timer.hpp"
-#include "physics/field_forces.hpp"
 #include "contact/barrier_contacts.hpp"
 #include "thermal/heat_transfer.hpp"
 #include "field/near_field_forces.hpp"
 #include "interact/verlet_drift.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "parallel/gather.hpp"
+#include "interact/body_forces.hpp"
 #include "core/run_error.hpp"
 #include "contact/particle_contacts.hpp"
 
@@ -252,9 +252,10 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     ScopedTimer timer(times_.exchange);
     search_->refresh_ghosts(p);  // periodic images (or other ranks' particles) take their sources' state
   }
+  double field_power = 0.0;  // W, dissipated by the body forces (interact/body_forces.hpp)
   {
     ScopedTimer timer(times_.fields);
-    start_accumulators(p);
+    field_power = start_accumulators(p);
     external_.add_to(p);
   }
   if (near_) {
@@ -318,6 +319,8 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     stats_.external_work += 0.5 * req.dt * (stats_.external_power + pushed);
     stats_.external_power = pushed;
     stats_.spring_energy = pp.spring_after + pb.spring_after;
+    stats_.field_dissipated += 0.5 * req.dt * (stats_.field_power + field_power);
+    stats_.field_power = field_power;
   }
 }
 
@@ -343,23 +346,31 @@ OverlapReport Interactions::max_overlap(const Particles& p, const Barriers& b) c
   return pb.ratio > pp.ratio ? pb : pp;
 }
 
-void Interactions::start_accumulators(Particles& p) const {
-  // One pass: the field forces start the force sums, torque and heat start at zero.
-  // Without electric or magnetic field the charges and velocities are not read, and without heat
-  // transfer the heat flows (zero, never written) are not touched: memory traffic is what a pass
-  // over 10^5 particles costs.
-  const FieldParams& f = model_.params.fields;
-  const bool charged = norm2(f.electric) > 0.0 || norm2(f.magnetic) > 0.0;
+double Interactions::start_accumulators(Particles& p) const {
+  // One pass: the body forces start the force sums, torque and heat start at zero.
+  // Without a field beyond gravity only the masses are read, and without heat transfer the heat
+  // flows (zero, never written) are not touched: memory traffic is what a pass over 10^5
+  // particles costs.
+  const BodyForces forces(model_.params.fields);
   const bool thermal = heat_ != nullptr;
   const std::size_t n = p.size();
+  if (forces.only_first()) {
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-  for (std::size_t i = 0; i < n; ++i) {
-    p.force[i] = gravity_force(p.mass[i], f.gravity);
-    if (charged)
-      p.force[i] += electric_force(p.charge[i], f.electric) + magnetic_force(p.charge[i], p.v[i], f.magnetic);
-    p.torque[i] = Vec3{};
-    if (thermal) p.heat[i] = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      p.force[i] = forces.first_force(p, i);
+      p.torque[i] = Vec3{};
+      if (thermal) p.heat[i] = 0.0;
+    }
+    return 0.0;
   }
+  // W, the dissipative entries' power, summed in fixed blocks (independent of the thread count).
+  return deterministic_block_sums<1>(n, [&](std::size_t lo, std::size_t hi, std::array<double, 1>& lost) {
+    for (std::size_t i = lo; i < hi; ++i) {
+      p.force[i] = forces.force(p, i, lost[0]);
+      p.torque[i] = Vec3{};
+      if (thermal) p.heat[i] = 0.0;
+    }
+  })[0];
 }
 
 }  // namespace mpdem

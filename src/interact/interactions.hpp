@@ -21,50 +21,9 @@
 #include "model/scene.hpp"
 #include "parallel/attached_records.hpp"
 #include "interact/external_loads.hpp"
+#include "interact/interaction_stats.hpp"
 
 namespace mpdem {
-
-// Energy and contact bookkeeping (physics.md section 12).
-struct InteractionStats {
-  std::size_t contacts_pp = 0;       // particle-particle contacts at the last evaluation
-  std::size_t contacts_pb = 0;       // particle-barrier contacts at the last evaluation
-  double elastic_energy = 0.0;       // J, Hertz + tangential springs at the last evaluation
-  double damping_dissipated = 0.0;   // J, cumulative over committed steps
-  double friction_dissipated = 0.0;  // J, cumulative over committed steps (sliding and rolling)
-  double damping_power = 0.0;        // W, normal dashpots, at the last committed evaluation
-  double rolling_power = 0.0;        // W, rolling resistance, at the last committed evaluation
-  double spring_energy = 0.0;        // J, the tangential springs' energy at the last committed evaluation
-  // J, cumulative work the barriers' prescribed motion did on the particles (the trapezoid of the
-  // drive power over committed steps): energy that enters an otherwise closed system.
-  double barrier_work = 0.0;
-  double drive_power = 0.0;  // W, sum of Barriers::drive_power at the last committed evaluation
-  // J, cumulative work the fixed particles' prescribed motion did on the rest (the trapezoid of
-  // fixed_power over committed steps, as barrier_work): what holds them to their constant v and w.
-  double fixed_work = 0.0;
-  double fixed_power = 0.0;  // W, -sum (F.v + T.w) over fixed particles at the last committed evaluation
-  // J, cumulative work of the loads a caller added (ExternalLoads; the trapezoid of
-  // external_power over committed steps, as barrier_work).
-  double external_work = 0.0;
-  double external_power = 0.0;     // W, sum (F.v + T.w) of the added loads at the last committed evaluation
-  std::uint64_t rebuilds = 0;      // neighbour list rebuilds
-  double near_field_energy = 0.0;  // J, potential of the near-field pairs within the cutoff
-  // Thermal bookkeeping (physics.md section 8), cumulative over committed steps with the
-  // integrator's own weighting of the start and end flows, so that
-  //   sum m c T + heat_to_barriers + heat_convected + heat_radiated
-  // stays constant (docs/multiphysics.md).
-  double heat_to_barriers = 0.0;  // J, conducted from the particles into fixed-temperature barriers
-  double heat_convected = 0.0;    // J, given by the particles to the air
-  double heat_radiated = 0.0;     // J, radiated by the particles to the surroundings
-};
-
-// The statistics that are sums over the particles, so over the ranks of a decomposed run (the
-// others, drive_power and barrier_work, come from barrier loads already summed over the ranks).
-inline constexpr double InteractionStats::*kRankSummedStats[] = {
-    &InteractionStats::elastic_energy, &InteractionStats::damping_dissipated, &InteractionStats::friction_dissipated,
-    &InteractionStats::damping_power,  &InteractionStats::rolling_power,      &InteractionStats::spring_energy,
-    &InteractionStats::fixed_work,     &InteractionStats::fixed_power,        &InteractionStats::external_work,
-    &InteractionStats::external_power, &InteractionStats::near_field_energy,  &InteractionStats::heat_to_barriers,
-    &InteractionStats::heat_convected, &InteractionStats::heat_radiated};
 
 // Wall time spent per part of the evaluations (s, cumulative; not checkpointed), for the
 // benchmark's breakdown of where a step goes.
@@ -194,7 +153,8 @@ class Interactions {
   std::uint64_t convection_clamps() const;
 
  private:
-  void start_accumulators(Particles& p) const;  // force = field forces, torque = heat = 0
+  // force = body forces, torque = heat = 0; returns the power the body forces dissipate (W).
+  double start_accumulators(Particles& p) const;
   void commit_heat(const HeatFlows& h, const EvalRequest& req);
   void rebuild(Particles& p, const Barriers& b, bool reorder);
   bool rebuild_due(const Particles& p, const Barriers& b, double dt) const;

@@ -12,36 +12,26 @@
 #include "contact/particle_contacts.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "parallel/gather.hpp"
+#include "interact/body_forces.hpp"
 #include "interact/interactions.hpp"
 
 namespace mpdem {
 
 namespace {
-// The checkpointed statistics, field by field (one list for writing and reading).
+// The statistics of one checkpoint section, in table order (interact/interaction_stats.hpp).
 template <class S, class F>
-void for_each_stat(S& s, F&& f) {
-  f(s.contacts_pp);
-  f(s.contacts_pb);
-  f(s.elastic_energy);
-  f(s.damping_dissipated);
-  f(s.friction_dissipated);
-  f(s.damping_power);
-  f(s.rolling_power);
-  f(s.spring_energy);
-  f(s.barrier_work);
-  f(s.drive_power);
-  f(s.fixed_work);
-  f(s.fixed_power);
-  f(s.external_work);
-  f(s.external_power);
-  f(s.rebuilds);
-  f(s.near_field_energy);
-  f(s.heat_to_barriers);
-  f(s.heat_convected);
-  f(s.heat_radiated);
+void for_each_saved_stat(S& s, StatSaved section, F&& f) {
+  for_each_stat(s, [&](const StatInfo& info, auto& v) {
+    if (info.saved == section) f(v);
+  });
 }
-// A field added to InteractionStats must be added to for_each_stat (and is then a format change).
-static_assert(sizeof(InteractionStats) == 19 * 8, "InteractionStats changed: update for_each_stat");
+// The "interactions" section's layout: 19 values of 8 bytes in table order. Another row there
+// changes the format (bump kCheckpointFormat); new rows go in an optional section instead.
+static_assert([] {
+  std::size_t n = 0;
+  for (const StatInfo& s : kStats) n += s.saved == StatSaved::interactions ? 1 : 0;
+  return n;
+}() == 19);
 // Reads one section with `read(BinaryReader&)`, which must consume it whole.
 template <class F>
 void read_section(CheckpointReader& r, const std::string& name, F&& read) {
@@ -54,13 +44,17 @@ void read_section(CheckpointReader& r, const std::string& name, F&& read) {
 namespace {
 // The interactions' four sections; the lists and history sections from the callers' writers
 // (one layout for one rank and for several ranks' gathered state).
+// The "fields" section only when the scene has a dissipative body force (`fields`).
 template <class N, class P, class B>
-void write_sections(CheckpointWriter& w, const InteractionStats& s, const std::array<double, 3>& out, N&& neighbor,
-                    P&& pairs, B&& barriers) {
+void write_sections(CheckpointWriter& w, const InteractionStats& s, const std::array<double, 3>& out, bool fields,
+                    N&& neighbor, P&& pairs, B&& barriers) {
   w.section("interactions", [&](BinaryWriter& o) {
-    for_each_stat(s, [&](const auto& v) { o.value(v); });
+    for_each_saved_stat(s, StatSaved::interactions, [&](const auto& v) { o.value(v); });
     for (double v : out) o.value(v);
   });
+  if (fields)
+    w.section("fields",
+              [&](BinaryWriter& o) { for_each_saved_stat(s, StatSaved::fields, [&](const auto& v) { o.value(v); }); });
   w.section("neighbor", neighbor);
   w.section("particle_contacts", pairs);
   w.section("barrier_contacts", barriers);
@@ -69,8 +63,9 @@ void write_sections(CheckpointWriter& w, const InteractionStats& s, const std::a
 
 void Interactions::save(CheckpointWriter& w, const Particles& p) const {
   write_sections(
-      w, stats_, {out_barriers_, out_convected_, out_radiated_}, [&](BinaryWriter& o) { search_->save(o); },
-      [&](BinaryWriter& o) { pp_->save(o, p, *search_); }, [&](BinaryWriter& o) { pb_->save(o); });
+      w, stats_, {out_barriers_, out_convected_, out_radiated_}, dissipative_fields(model_.params.fields),
+      [&](BinaryWriter& o) { search_->save(o); }, [&](BinaryWriter& o) { pp_->save(o, p, *search_); },
+      [&](BinaryWriter& o) { pb_->save(o); });
 }
 
 void Interactions::save_gathered(CheckpointWriter& w, const Particles& p, const Particles& all) const {
@@ -97,18 +92,24 @@ void Interactions::save_gathered(CheckpointWriter& w, const Particles& p, const 
     return std::minmax(a.id_first, a.id_second) < std::minmax(b.id_first, b.id_second);
   });
   write_sections(
-      w, s, out, [&](BinaryWriter& o) { search_->save(o, xb_all); }, [&](BinaryWriter& o) { o.vector(pairs); },
+      w, s, out, dissipative_fields(model_.params.fields), [&](BinaryWriter& o) { search_->save(o, xb_all); },
+      [&](BinaryWriter& o) { o.vector(pairs); },
       [&](BinaryWriter& o) { BarrierContacts::save_records(o, barrier, ids, overflows); });
 }
 
 void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b) {
   next_drift_.valid = false;
   read_section(r, "interactions", [&](BinaryReader& in) {
-    for_each_stat(stats_, [&](auto& v) { v = in.value<std::decay_t<decltype(v)>>(); });
+    for_each_saved_stat(stats_, StatSaved::interactions, [&](auto& v) { v = in.value<std::decay_t<decltype(v)>>(); });
     out_barriers_ = in.value<double>();
     out_convected_ = in.value<double>();
     out_radiated_ = in.value<double>();
   });
+  // Written only with a dissipative body force: absent, its statistics start at 0.
+  if (r.has("fields"))
+    read_section(r, "fields", [&](BinaryReader& in) {
+      for_each_saved_stat(stats_, StatSaved::fields, [&](auto& v) { v = in.value<std::decay_t<decltype(v)>>(); });
+    });
   if (!comm_) {
     read_section(r, "neighbor", [&](BinaryReader& in) { search_->restore(in, p, b); });
     read_section(r, "particle_contacts", [&](BinaryReader& in) { pp_->restore(in, p, *search_); });
@@ -118,7 +119,9 @@ void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b)
   // Several ranks: the sums over the particles are held once, by rank 0.
   const bool counts_sums = comm_->rank() == 0;
   if (!counts_sums) {
-    for (auto m : kRankSummedStats) stats_.*m = 0.0;
+    for_each_stat(stats_, [](const StatInfo& info, auto& v) {
+      if (info.ranks == StatRanks::sum) v = 0;
+    });
     out_barriers_ = out_convected_ = out_radiated_ = 0.0;
   }
   // p holds every particle of the checkpoint (written on any rank count): the history is keyed

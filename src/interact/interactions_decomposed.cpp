@@ -124,12 +124,9 @@ InteractionStats Interactions::global_stats() const {
   // Summed over the ranks. drive_power and barrier_work come from the summed loads: already the
   // same on every rank.
   InteractionStats s = stats_;
-  std::vector<double> v{static_cast<double>(s.contacts_pp), static_cast<double>(s.contacts_pb)};
-  for (auto m : kRankSummedStats) v.push_back(s.*m);
+  auto v = rank_summed_values(s);
   comm_->sum(v);
-  s.contacts_pp = static_cast<std::size_t>(v[0]);
-  s.contacts_pb = static_cast<std::size_t>(v[1]);
-  for (std::size_t k = 0; k < std::size(kRankSummedStats); ++k) s.*kRankSummedStats[k] = v[2 + k];
+  set_rank_summed_values(s, v);
   return s;
 }
 

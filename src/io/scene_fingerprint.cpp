@@ -235,6 +235,7 @@ FingerprintPart physics_part(const Params& prm) {
   k.key("thermal.conduction", th.conduction);
   k.key("thermal.convection", th.convection);
   k.key("thermal.radiation", th.radiation);
+  if (prm.fields.drag != 0.0) k.key("fields.drag", prm.fields.drag);  // keeps the others' fingerprints
   std::vector<std::string> labels;
   for (const NearFieldPair& e : nf.pairs) {
     k.part().items.push_back(hash_of(e.material_a, e.material_b, e.a1, e.b1, e.a2, e.b2));

@@ -60,6 +60,7 @@ struct FieldParams {
   Vec3 gravity{0.0, 0.0, -9.81};  // m/s^2
   Vec3 electric{};                // V/m, uniform E
   Vec3 magnetic{};                // T, uniform B
+  double drag = 0.0;              // N s/m, viscous drag -c v on every particle that is not fixed
 };
 
 // Empirical near-field law f = (a1 d^-b1 - a2 d^-b2) n for one material pair (46).

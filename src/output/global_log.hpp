@@ -2,6 +2,7 @@
 // The global log's columns and one row of values (docs/output.md, log.csv): written by the
 // OutputManager and read by the Python module's Simulation.log(), so both name and compute every
 // quantity the same way.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -9,7 +10,7 @@
 
 #include "integrate/step_report.hpp"
 #include "model/scene.hpp"
-#include "integrate/energy.hpp"
+#include "integrate/energy_balance.hpp"
 #include "interact/interactions.hpp"
 
 namespace mpdem {
@@ -48,9 +49,10 @@ class GlobalLogLayout {
 
  private:
   std::vector<std::string> columns_;
-  bool near_field_ = false;  // log the near-field potential (and count it in total_energy)
-  bool driven_ = false;      // log the work of the barriers' prescribed motion (some element moves)
-  bool thermal_ = false;     // log the heat exchanged with the outside and the thermal energy
+  // Which statistics have a column (interact/interaction_stats.hpp: the optional ones only for the
+  // physics the scene turns on), by row of kStats.
+  std::array<bool, kStatCount> logged_{};
+  bool thermal_ = false;  // log the thermal energy (after the heat exchanged with the outside)
 };
 
 }  // namespace mpdem

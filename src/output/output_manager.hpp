@@ -17,7 +17,7 @@
 #include "core/binary_stream.hpp"
 #include "output/global_log.hpp"
 #include "model/scene.hpp"
-#include "integrate/energy.hpp"
+#include "integrate/energy_balance.hpp"
 #include "interact/interactions.hpp"
 
 namespace mpdem {

@@ -91,9 +91,10 @@ void read_analysis_and_fields(const TomlSection& root, Params& p) {
     s->get("thermal", p.analysis.thermal);
   }
   if (const auto s = root.table("gravity", {"vector"})) s->get("vector", p.fields.gravity);
-  if (const auto s = root.table("fields", {"electric", "magnetic"})) {
+  if (const auto s = root.table("fields", {"electric", "magnetic", "drag"})) {
     s->get("electric", p.fields.electric);
     s->get("magnetic", p.fields.magnetic);
+    s->get("drag", p.fields.drag, kNonNegative);
   }
 }
 

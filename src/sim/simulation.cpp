@@ -11,7 +11,7 @@
 #include "integrate/adaptive_step.hpp"
 #include "integrate/integrator_policy.hpp"
 #include "model/material_variants.hpp"
-#include "integrate/energy.hpp"
+#include "integrate/energy_balance.hpp"
 #include "core/atomic_file.hpp"
 #include "output/output_manager.hpp"
 #include "contact/particle_contacts.hpp"
@@ -71,7 +71,7 @@ void Simulation::initialize() {
   ++evaluations_;
   initialized_ = true;
   const Params& prm = scene_.model.params;
-  const StepTotals& t = reduce_step(scan_state(scene_.particles, prm.fields, prm.domain), -1.0);
+  const StepCollective& t = reduce_step(scan_state(scene_.particles, prm.fields, prm.domain), -1.0);
   check_energy(t.scan);  // the reference for the first step
   record_state(t.scan);  // the start of the run's drift
   record_overlap(t.deepest);
@@ -162,15 +162,12 @@ StepReport Simulation::advance_adaptive(double limit) {
   }
 }
 
-double Simulation::energy_balance(const StateScan& s) const {
-  const InteractionStats& st = stats();
+double Simulation::energy_balance(const HealthScan& s) const {
   const double inserted = inlets_ ? inlets_->inserted_energy() : 0.0;  // J, what inlets brought in
-  return -inserted + s.energy.kinetic + s.energy.rotational + s.energy.potential + s.electric + st.elastic_energy +
-         st.damping_dissipated + st.friction_dissipated + record_.removed_energy - st.barrier_work - st.fixed_work -
-         st.external_work;
+  return mpdem::energy_balance(s.energy, s.electric, stats(), BalanceScope{false, inserted, record_.removed_energy});
 }
 
-void Simulation::record_state(const StateScan& s) {
+void Simulation::record_state(const HealthScan& s) {
   const double balance = energy_balance(s);
   const double active = s.energy.kinetic + s.energy.rotational + stats().elastic_energy;
   if (!record_.started) {
@@ -193,8 +190,8 @@ void Simulation::check_state(const StepReport& rep, double h) {
   Particles& p = scene_.particles;
   const Params& prm = scene_.model.params;
   // One pass (or none, when the integrator fused it into its own); culprits searched only if needed.
-  const StepTotals& totals = reduce_step(rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain), h);
-  const StateScan scan = totals.scan;
+  const StepCollective& totals = reduce_step(rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain), h);
+  const HealthScan scan = totals.scan;
   const OverlapReport deepest = totals.deepest;
   if (scan.nonfinite > 0 && comm_) {
     const auto [id, rank] = first_nonfinite();
@@ -353,7 +350,7 @@ void Simulation::step(double end) {
     flush_outputs();
   }
   if (!options_.stop_on_signal) return;
-  if (const int sig = comm_ ? step_totals_.stop : stop_signal()) {
+  if (const int sig = comm_ ? step_collective_.stop : stop_signal()) {
     std::filesystem::path ck;
     if (out) {
       ck = dir / "checkpoint.bin";

@@ -16,7 +16,7 @@
 #include "core/parallel.hpp"
 #include "integrate/integrator_policy.hpp"
 #include "model/material_variants.hpp"
-#include "integrate/energy.hpp"
+#include "integrate/energy_balance.hpp"
 #include "interact/interactions.hpp"
 #include "sim/simulation.hpp"
 #include "support/barrier_mechanics_scene.hpp"

@@ -20,7 +20,7 @@
 #include "contact/particle_contacts.hpp"
 #include "io/particle_csv_writer.hpp"
 #include "neighbor/neighbor_search.hpp"
-#include "integrate/energy.hpp"
+#include "integrate/energy_balance.hpp"
 #include "sim/simulation.hpp"
 #include "support/dense_granular_scene.hpp"
 #include "support/scene_builder.hpp"

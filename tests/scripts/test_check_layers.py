@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """scripts/check_layers.py on scratch trees: clean on a tree that follows the layer order, exit 1
 naming file and line for an include of a higher layer and of the own layer, and for a
-folder-level cycle; exit 2 for a folder the order does not know; clean on the real src/."""
+folder-level cycle, and for a listed subfolder (contact/laws) that includes its parent; exit 2 for a folder the order does not know; clean on the real src/."""
 import os
 import subprocess
 import sys
@@ -52,6 +52,11 @@ unknown = {"gadgets/g.cpp": '#include "core/a.hpp"\n', "core/a.hpp": ""}
 rc, out = run(tree(unknown))
 expect(rc == 2 and "gadgets" in out, "an unknown folder is named", out)
 
+sub = {"contact/laws/l.hpp": '#include "contact/k.hpp"\n', "contact/k.hpp": '#include "contact/laws/l.hpp"\n'}
+rc, out = run(tree(sub))
+expect(rc == 1 and "src/contact/laws/l.hpp:1: contact/laws/ includes contact/, a higher layer" in out,
+       "a listed subfolder is a layer of its own", out)
+
 rc, out = run(ROOT)
 expect(rc == 0, "the repository's src/ is clean", out)
-print("check_layers: 6 cases pass")
+print("check_layers: 7 cases pass")

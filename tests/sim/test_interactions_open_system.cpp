@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "sim/run_record.hpp"
+#include "sim/run_summary.hpp"
 #include "sim/simulation.hpp"
 #include "support/open_system_scenes.hpp"
 #include "support/scene_builder.hpp"

@@ -57,7 +57,7 @@ struct RunSummary {
   bool sinks = false;            // the scene has sinks
   std::size_t sunk = 0;          // particles removed by them
   double inserted_energy = 0.0;  // J, what the inlets' particles brought in
-  double dissipated = 0.0;       // J, damping + friction dissipated over the run
+  double dissipated = 0.0;       // J, dissipated over the run (damping, friction, dissipative body forces)
 };
 
 // What the drift of a run is measured against: closed systems, as energy_drift(RunRecord); open

@@ -1,4 +1,4 @@
-#include "sim/run_record.hpp"
+#include "sim/run_summary.hpp"
 
 #include <fmt/core.h>
 

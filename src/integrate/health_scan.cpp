@@ -1,4 +1,4 @@
-#include "integrate/state_scan.hpp"
+#include "integrate/health_scan.hpp"
 
 #include <array>
 #include <cstdint>
@@ -64,7 +64,7 @@ void scan_range(const Particles& p, std::size_t lo, std::size_t hi, const FieldP
     for (std::size_t l = 0; l < kLanes; ++l) acc[k] += lane[k][l];
 }
 
-StateScan scan_state(const Particles& p, const FieldParams& fields, const DomainParams& domain) {
+HealthScan scan_state(const Particles& p, const FieldParams& fields, const DomainParams& domain) {
   return scan_from_sums(deterministic_block_sums<kScanSums>(
       p.size(), [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums>& acc) {
         scan_range(p, lo, hi, fields, domain, acc);

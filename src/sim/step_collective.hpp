@@ -1,6 +1,6 @@
 #pragma once
-// StepTotals: what the checks after a step read over all ranks (docs/parallel.md) - the
-// interaction statistics, the particle count, the state scan, the deepest overlap - with the
+// StepCollective: what the checks after a step read over all ranks (docs/parallel.md) - the
+// interaction statistics, the particle count, the health scan, the deepest overlap - with the
 // stop signal, rank 0's particle snapshot decision and the barrier loads when they wait for it
 // (Interactions::barrier_loads_pending), combined in one collective: each
 // collective makes every rank wait for the slowest, so a step pays for one rather than six.
@@ -11,16 +11,16 @@
 
 #include "contact/particle_contacts.hpp"
 #include "interact/interactions.hpp"
-#include "integrate/state_scan.hpp"
+#include "integrate/health_scan.hpp"
 
 namespace mpdem {
 
 class Communicator;
 
-struct StepTotals {
-  InteractionStats stats;       // the contact counts and kRankSummedStats summed; the rest as given
+struct StepCollective {
+  InteractionStats stats;       // the rows summed over the ranks (interaction_stats.hpp) summed; the rest as given
   std::uint64_t particles = 0;  // owned particles, summed
-  StateScan scan;               // summed
+  HealthScan scan;              // summed
   OverlapReport deepest;        // the deepest overlap; rank: the rank that holds it (the lowest on a tie)
   int stop = 0;                 // the stop signal received (0: none), the largest of the ranks'
   // The particle snapshots due after the step (OutputManager::particles_due): rank 0's decision.
@@ -32,6 +32,6 @@ struct StepTotals {
 };
 
 // Every rank's totals combined, the same on every rank. Collective.
-StepTotals combine_over_ranks(const Communicator& comm, const StepTotals& mine);
+StepCollective combine_over_ranks(const Communicator& comm, const StepCollective& mine);
 
 }  // namespace mpdem

@@ -1,4 +1,4 @@
-#include "sim/step_totals.hpp"
+#include "sim/step_collective.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -12,7 +12,7 @@
 namespace mpdem {
 
 namespace {
-constexpr std::size_t kStatSums = 2 + std::size(kRankSummedStats);  // the contact counts first
+constexpr std::size_t kStatSums = kRankSummedStatCount;
 constexpr std::size_t kSums = kStatSums + kScanSums;
 
 // One rank's totals as a message of fixed size (every rank's the same: one all-gather).
@@ -25,18 +25,17 @@ struct Message {
 };
 }  // namespace
 
-StepTotals combine_over_ranks(const Communicator& comm, const StepTotals& mine) {
+StepCollective combine_over_ranks(const Communicator& comm, const StepCollective& mine) {
   Message m{};  // value-initialised: the padding too, so the message's bytes are all defined
-  const StateScan& s = mine.scan;
+  const HealthScan& s = mine.scan;
   const double scan[kScanSums] = {s.energy.kinetic,
                                   s.energy.rotational,
                                   s.energy.potential,
                                   s.electric,
                                   static_cast<double>(s.nonfinite),
                                   static_cast<double>(s.outside)};
-  m.sum[0] = static_cast<double>(mine.stats.contacts_pp);
-  m.sum[1] = static_cast<double>(mine.stats.contacts_pb);
-  for (std::size_t k = 0; k < std::size(kRankSummedStats); ++k) m.sum[2 + k] = mine.stats.*kRankSummedStats[k];
+  const auto stats = rank_summed_values(mine.stats);
+  std::copy(stats.begin(), stats.end(), m.sum);
   std::copy(std::begin(scan), std::end(scan), m.sum + kStatSums);
   m.particles = mine.particles;
   m.deepest = mine.deepest;
@@ -74,10 +73,8 @@ StepTotals combine_over_ranks(const Communicator& comm, const StepTotals& mine) 
     t.stop = std::max(t.stop, x.stop);
   }
 
-  StepTotals out = mine;
-  out.stats.contacts_pp = static_cast<std::size_t>(t.sum[0]);
-  out.stats.contacts_pb = static_cast<std::size_t>(t.sum[1]);
-  for (std::size_t k = 0; k < std::size(kRankSummedStats); ++k) out.stats.*kRankSummedStats[k] = t.sum[2 + k];
+  StepCollective out = mine;
+  set_rank_summed_values(out.stats, t.sum);
   const double* sc = t.sum + kStatSums;
   out.scan = {{sc[0], sc[1], sc[2]}, sc[3], static_cast<std::size_t>(sc[4]), static_cast<std::size_t>(sc[5])};
   out.particles = t.particles;

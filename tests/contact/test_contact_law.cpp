@@ -60,9 +60,9 @@ TEST(HertzLaw, EvaluatorEqualsTheSingleLawOracle) {
 // Coulomb cap of the linear law: a spring beyond mu_s k_t... slides at mu_d |f_n| (Cundall-Strack).
 TEST(LinearLaw, TangentialSpringIsCappedAtCoulomb) {
   ContactLawParams params;
-  params.law = ContactLawKind::Linear;
-  params.stiffness_normal = 1e4;
-  params.stiffness_tangential = 3e3;
+  params.law = "linear";
+  params.law_keys["stiffness_normal"] = 1e4;
+  params.law_keys["stiffness_tangential"] = 3e3;
   params.damping_ratio = 0.0;
   params.mu_static = 0.5;
   params.mu_dynamic = 0.4;
@@ -101,8 +101,8 @@ Scene linear_scene(double dt, double e) {
   s.model.params.checks.max_overlap = 0.0;
   test::set_material(s, kRho, 1e7, 0.3);
   for (ContactLawParams* c : {&s.model.params.contact.particle_particle, &s.model.params.contact.particle_barrier}) {
-    c->law = ContactLawKind::Linear;
-    c->stiffness_normal = kK;
+    c->law = "linear";
+    c->law_keys["stiffness_normal"] = kK;
     c->restitution = e;
   }
   return s;

@@ -12,6 +12,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "contact/laws/dmt.hpp"
 #include "contact/laws/hertz.hpp"
 #include "contact/laws/law_interface.hpp"
 #include "contact/laws/linear.hpp"
@@ -19,7 +20,7 @@
 namespace mpdem {
 
 // The first law is the default (law = "hertz", no cohesion).
-using ContactLaws = std::tuple<HertzLaw, LinearLaw>;
+using ContactLaws = std::tuple<HertzLaw, LinearLaw, DmtLaw>;
 
 inline constexpr std::size_t kLawCount = std::tuple_size_v<ContactLaws>;
 

@@ -38,7 +38,7 @@
 
 namespace mpdem {
 
-struct BarrierBatch;  // contacts evaluated together (sim/barrier_batch.hpp)
+struct BarrierBatch;  // contacts evaluated together (contact/barrier_batch.hpp)
 
 class BarrierContacts {
  public:

@@ -19,7 +19,9 @@
 
 namespace mpdem {
 
-inline constexpr std::uint32_t kCheckpointFormat = 12;
+// 13: the scene fingerprint names contact laws by their list names and keys (contact/laws/), so a
+// format-12 file would fail its fingerprint with a misleading "contact laws changed".
+inline constexpr std::uint32_t kCheckpointFormat = 13;
 
 class CheckpointWriter {
  public:

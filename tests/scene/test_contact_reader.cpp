@@ -33,10 +33,10 @@ TEST(ContactReader, LawsAndPairEntries) {
               "tangential_spring = \"incremental\"\ntangential_damping = 0.0\n");
   const Scene s = parse_scene_file(scene);
   const ContactParams& c = s.model.params.contact;
-  EXPECT_EQ(c.particle_particle.law, ContactLawKind::Hertz);
+  EXPECT_EQ(c.particle_particle.law, "hertz");
   EXPECT_EQ(*c.particle_particle.restitution, 0.7);
-  EXPECT_EQ(c.particle_barrier.law, ContactLawKind::Linear);
-  EXPECT_EQ(c.particle_barrier.stiffness_normal, 1e4);
+  EXPECT_EQ(c.particle_barrier.law, "linear");
+  EXPECT_EQ(c.particle_barrier.law_keys.at("stiffness_normal"), 1e4);
   ASSERT_EQ(c.pairs.size(), 2u);
   EXPECT_EQ(c.pairs[0].material_a, "glass");
   EXPECT_EQ(c.pairs[0].material_b, "steel");
@@ -44,8 +44,8 @@ TEST(ContactReader, LawsAndPairEntries) {
   EXPECT_EQ(*c.pairs[0].mu_static, 0.3);
   EXPECT_FALSE(c.pairs[0].restitution.has_value());
   EXPECT_TRUE(c.pairs[1].particle_particle && !c.pairs[1].particle_barrier);
-  EXPECT_EQ(*c.pairs[1].law, ContactLawKind::Linear);
-  EXPECT_EQ(*c.pairs[1].stiffness_tangential, 5e3);
+  EXPECT_EQ(*c.pairs[1].law, "linear");
+  EXPECT_EQ(c.pairs[1].law_keys.at("stiffness_tangential"), 5e3);
   // tangential_damping left out: unset, so the table takes xi_n; given: as written.
   EXPECT_FALSE(c.particle_particle.tangential_damping.has_value());
   EXPECT_EQ(c.particle_particle.tangential_spring, TangentialSpring::Total);

@@ -14,6 +14,7 @@
 #include "support/run_command.hpp"
 #include "support/scene_builder.hpp"
 #include "support/temp_dir.hpp"
+#include "scene/scene_reader.hpp"
 
 using namespace mpdem;
 

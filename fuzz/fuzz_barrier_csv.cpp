@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "io/barrier_csv.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "temp_input.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -30,12 +30,13 @@
 #include <vector>
 
 #include "io/checkpoint_format.hpp"
-#include "io/crc32.hpp"
-#include "io/input_error.hpp"
+#include "core/crc32.hpp"
+#include "core/input_error.hpp"
 #include "model/scene.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
 #include "sim/simulation.hpp"
 #include "temp_input.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace {
 

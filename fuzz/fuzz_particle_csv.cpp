@@ -1,4 +1,4 @@
-// libFuzzer target: the particle CSV reader (src/io/particle_csv.cpp via csv_table.cpp). The
+// libFuzzer target: the particle CSV reader (src/io/particle_csv_reader.cpp via csv_table.cpp). The
 // input is the CSV file, read against a model with two materials ("glass" and "steel", so that
 // names and indices in the `material` column resolve) into particles that already hold one
 // particle with id 0 (so the cross-file duplicate-id path is reached). InputError is expected for
@@ -7,8 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "io/input_error.hpp"
-#include "io/particle_csv.hpp"
+#include "core/input_error.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "temp_input.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,4 +1,4 @@
-// libFuzzer target: the TOML scene reader (src/io/scene_reader.cpp, toml_section.cpp,
+// libFuzzer target: the TOML scene reader (src/scene/scene_reader.cpp, toml_section.cpp,
 // generate_spec_reader.cpp). The input is the scene file. An InputError is the expected outcome
 // for bad input; any other exception, crash, hang or sanitizer report is a finding.
 //
@@ -9,9 +9,10 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "model/scene.hpp"
 #include "temp_input.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace {
 

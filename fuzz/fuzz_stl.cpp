@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/stl_reader.hpp"
 #include "temp_input.hpp"
 

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# Lint: (1) clang-format check of every tracked C++ file under src/ tests/ bench/ fuzz/ (style:
-# .clang-format), (2) clang-tidy over src/ (checks: .clang-tidy), any warning is an error.
-# Exit status 0 when both parts are clean, 1 when either has findings (both always run).
+# Lint: (1) the layers of src/ (scripts/check_layers.py: no #include from a folder to one of a
+# higher layer or its own layer, no folder-level include cycle; docs/architecture.md "Layers"),
+# (2) clang-format check of every tracked C++ file under src/ tests/ bench/ fuzz/ (style:
+# .clang-format), (3) clang-tidy over src/ (checks: .clang-tidy), any warning is an error.
+# Exit status 0 when every part is clean, 1 when one has findings (all always run).
 #
-# Usage: scripts/lint.sh [--fix] [format|tidy]
+# Usage: scripts/lint.sh [--fix] [layers|format|tidy]
 #   --fix   rewrite the files in place with clang-format instead of checking them (clang-tidy
 #           still only reports; it changes nothing)
-#   format  run only the clang-format part; tidy: only the clang-tidy part (default: both)
+#   layers, format, tidy  run only those parts (default: all three)
 # Environment: CLANG_FORMAT, CLANG_TIDY (default clang-format, clang-tidy; Debian 12: version 14),
 #   LINT_JOBS (parallel clang-tidy processes, default nproc).
 # clang-tidy reads build-lint/compile_commands.json, from a configure-only build (nothing is
@@ -24,12 +26,12 @@ parts=()
 for arg in "$@"; do
   case "$arg" in
     --fix) fix=1 ;;
-    format | tidy) parts+=("$arg") ;;
-    -h | --help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) echo "lint.sh: unknown argument '$arg' (usage: scripts/lint.sh [--fix] [format|tidy])" >&2; exit 2 ;;
+    layers | format | tidy) parts+=("$arg") ;;
+    -h | --help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "lint.sh: unknown argument '$arg' (usage: scripts/lint.sh [--fix] [layers|format|tidy])" >&2; exit 2 ;;
   esac
 done
-[ ${#parts[@]} -gt 0 ] || parts=(format tidy)
+[ ${#parts[@]} -gt 0 ] || parts=(layers format tidy)
 bash "$ROOT/scripts/install-deps.sh" >/dev/null
 
 need() {
@@ -124,6 +126,7 @@ print("\n".join(sorted({e["file"] for e in json.load(open(sys.argv[2])) if e["fi
 status=0
 for part in "${parts[@]}"; do
   case "$part" in
+    layers) need python3; python3 "$ROOT/scripts/check_layers.py" "$ROOT" || status=1 ;;
     format) format_check || status=1 ;;
     tidy) tidy_check || status=1 ;;
   esac

@@ -72,24 +72,10 @@ def _array_property(name, doc):
     return property(get, put if settable else None, doc=doc)
 
 
-for _name, _doc in (
-    ("id", "(N,) int64, the particles' ids, ascending"),
-    ("position", "(N, 3) m, centres"),
-    ("velocity", "(N, 3) m/s"),
-    ("angular_velocity", "(N, 3) rad/s"),
-    ("orientation", "(N, 4) unit quaternion (w, x, y, z), body to world"),
-    ("force", "(N, 3) N, total force of the last evaluation"),
-    ("torque", "(N, 3) N m, total torque about the centre of the last evaluation"),
-    ("radius", "(N,) m"),
-    ("mass", "(N,) kg"),
-    ("inertia", "(N,) kg m^2"),
-    ("temperature", "(N,) K"),
-    ("charge", "(N,) C"),
-    ("heat", "(N,) W, heat flow into the particle of the last evaluation"),
-    ("material", "(N,) int32, index into the scene's materials"),
-    ("fixed", "(N,) uint8, 1: prescribed motion"),
-    ("image", "(N, 3) int32, periodic image counters (unwrapped = position + image * period)"),
-):
+# The attributes are the engine's particle column table (src/state/particle_columns.hpp): name,
+# shape, unit and whether it can be assigned.
+for _name in _core.particle_arrays:
+    _doc = _core.particle_array_docs[_name]
     setattr(Particles, _name, _array_property(_name, _doc))
 
 

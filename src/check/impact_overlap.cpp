@@ -86,10 +86,10 @@ struct RadiusRange {
   std::size_t count = 0;
 };
 
-// Peak overlap of one impact: the law's Hertz modulus or linear stiffness, effective mass m (kg)
-// and radius r (m) of the pair.
+// Peak overlap of one impact by the pair's law (contact/laws/), from the materials' effective
+// modulus E* (Pa), effective mass m (kg) and radius r (m) of the pair.
 double peak_overlap(const PairLaw& law, double E_star, double m, double r, double v) {
-  return law.law == ContactLawKind::Linear ? linear_peak_overlap(m, law.cn, v) : hertz_peak_overlap(m, E_star, r, v);
+  return with_law(law.law, [&]<class Law>(std::type_identity<Law>) { return Law::peak_overlap(law, E_star, m, r, v); });
 }
 
 }  // namespace
@@ -176,9 +176,14 @@ void check_impact_overlaps(const Scene& scene, SceneProblems& out) {
                                  : (est.a == est.b
                                         ? fmt::format("two particles of material '{}'", ma.name)
                                         : fmt::format("particles of materials '{}' and '{}'", ma.name, mb.name));
-    const bool hertz = est.law == ContactLawKind::Hertz;
-    // Hertz: delta ~ E*^(-2/5); linear: delta ~ k^(-1/2).
-    const double stiffer = std::pow(est.ratio / limit, hertz ? 2.5 : 2.0);
+    // The law's estimate, its stiffness key and how the overlap falls with it (Hertz: delta ~
+    // E*^(-2/5); linear: delta ~ k^(-1/2)).
+    std::string_view spring, stiffness_key;
+    double exponent = 0.0;
+    with_law(est.law, [&]<class Law>(std::type_identity<Law>) {
+      spring = Law::kSpringName, stiffness_key = Law::kStiffnessKey, exponent = Law::kOverlapExponent;
+    });
+    const double stiffer = std::pow(est.ratio / limit, exponent);
     SceneProblem pr;
     pr.severity = Severity::Warning;
     pr.file = scene.file.string();
@@ -188,8 +193,8 @@ void check_impact_overlaps(const Scene& scene, SceneProblems& out) {
         "estimate without damping, an upper bound), more than checks.max_overlap = {:.3g}%: the run may stop with an "
         "overlap error. Use a stiffer material ({} x {:.3g} reaches the limit), a lower impact speed, or raise "
         "checks.max_overlap above {:.3g}.",
-        speed.speed, speed.origin(), pair, est.overlap, 100.0 * est.ratio, est.barrier ? "" : "smaller ",
-        hertz ? "Hertz" : "linear spring", 100.0 * limit, hertz ? "young" : "stiffness_normal", stiffer, est.ratio);
+        speed.speed, speed.origin(), pair, est.overlap, 100.0 * est.ratio, est.barrier ? "" : "smaller ", spring,
+        100.0 * limit, stiffness_key, stiffer, est.ratio);
     out.push_back(std::move(pr));
   }
   if (over > kListedIds) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/laws/law_interface.hpp"
 #include "model/params.hpp"
 #include "model/scene.hpp"
 
@@ -34,7 +35,7 @@ ImpactSpeed expected_impact_speed(const Scene& scene);
 struct ImpactEstimate {
   int a = -1, b = -1;    // material indices (b: the barrier element's material when `barrier`)
   bool barrier = false;  // particle-barrier impact
-  ContactLawKind law = ContactLawKind::Hertz;
+  LawId law = 0;         // the pair's law (contact/laws/law_list.hpp)
   double overlap = 0.0;  // m, peak overlap
   double radius = 0.0;   // m, the (smaller) radius it is relative to
   double ratio = 0.0;    // -, overlap / radius, as checks.max_overlap measures it

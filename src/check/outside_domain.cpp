@@ -6,7 +6,7 @@
 
 #include "check/scene_checks.hpp"
 #include "check/source_lookup.hpp"
-#include "sim/state_scan.hpp"
+#include "integrate/health_scan.hpp"
 
 namespace mpdem {
 

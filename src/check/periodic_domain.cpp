@@ -9,8 +9,8 @@
 #include "check/scene_checks.hpp"
 #include "check/source_lookup.hpp"
 #include "field/near_field_forces.hpp"
-#include "neighbor/periodic_images.hpp"
-#include "sim/interactions.hpp"
+#include "parallel/periodic_images.hpp"
+#include "interact/interactions.hpp"
 
 namespace mpdem {
 

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/vec3.hpp"
-#include "generate/generate_spec.hpp"
+#include "model/generate_spec.hpp"
 #include "generate/region.hpp"
 
 namespace mpdem {

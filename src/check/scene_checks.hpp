@@ -5,6 +5,7 @@
 // certainly stop the run refuse it, the others warn).
 #include "check/scene_problem.hpp"
 #include "model/scene.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace mpdem {
 

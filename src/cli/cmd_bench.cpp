@@ -15,7 +15,7 @@
 #include "cli/bench_command.hpp"
 #include "cli/output_folder.hpp"
 #include "io/output_folder.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/lammps_data.hpp"
 #include "io/vtk_xml.hpp"
 #include "neighbor/neighbor_search.hpp"

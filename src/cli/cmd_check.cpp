@@ -5,6 +5,7 @@
 #include "check/scene_checks.hpp"
 #include "cli/commands.hpp"
 #include "cli/scene_summary.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace mpdem::cli {
 

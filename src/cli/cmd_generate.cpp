@@ -8,7 +8,7 @@
 
 #include "cli/tool_commands.hpp"
 #include "generate/region.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "generate/generator.hpp"
 
 namespace mpdem::cli {

@@ -7,7 +7,7 @@
 #include <fmt/core.h>
 
 #include "cli/tool_commands.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "tools/mesh_builder.hpp"
 #include "tools/mesh_output.hpp"
 

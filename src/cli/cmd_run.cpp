@@ -10,10 +10,11 @@
 #include "cli/output_folder.hpp"
 #include "cli/run_paths.hpp"
 #include "cli/scene_summary.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/output_folder.hpp"
 #include "parallel/communicator.hpp"
 #include "sim/simulation.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace mpdem::cli {
 

@@ -13,7 +13,7 @@
 #include "cli/output_folder.hpp"
 #include "io/output_folder.hpp"
 #include "cli/tool_commands.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "validate/validation_suite.hpp"
 
 namespace mpdem::cli {

@@ -14,9 +14,9 @@
 #include "cli/plot_command.hpp"
 #include "cli/run_paths.hpp"
 #include "cli/tool_commands.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "parallel/communicator.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
 
 namespace {
 

@@ -3,7 +3,7 @@
 // that spin long while they wait take the core from a partner that another process has already
 // delayed; on a shared machine that made 2 threads slower than 1 (docs/benchmark.md "Shared
 // machines"). Threads that sleep at once pay a wake-up at every parallel region, which on a
-// virtual machine cost a flowing silo 60 % at 2 threads. A short spin (GOMP_SPINCOUNT=1000, about
+// virtual machine is expensive (docs/benchmark.md). A short spin (GOMP_SPINCOUNT=1000, about
 // a microsecond) serves both. GNU OpenMP reads its environment once, when the program is loaded,
 // before main; so when the user has set neither OMP_WAIT_POLICY nor GOMP_SPINCOUNT, mpdem sets
 // GOMP_SPINCOUNT=1000 and re-executes itself once (/proc/self/exe, same arguments, same process

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/output_folder.hpp"
 
 namespace mpdem::cli {

@@ -1,7 +1,7 @@
 #pragma once
 // The command line's numbers and paths: the --threads range, and the command that resumes an
 // interrupted run (printed on SIGINT/SIGTERM, to be pasted into a shell as it is). A folder given
-// as the scene or checkpoint is reported by their readers (io/input_file.hpp).
+// as the scene or checkpoint is reported by their readers (core/input_file.hpp).
 #include <filesystem>
 #include <string>
 #include <string_view>

@@ -55,39 +55,42 @@ TimeStepAdvice time_step_advice(const Scene& scene) {
   ContactTable table;  // the laws the run's kernels will use
   table.build(scene.model);
   // One sphere of radius r (m) and mass (kg) of material k: its contact times with an equal
-  // sphere and with the barriers, by the law of each pair, and its Rayleigh time if a Hertz law
-  // (the only one that uses the material's E) acts on it.
+  // sphere and with the barriers, by the law of each pair, and its Rayleigh time if an elastic
+  // law (Law::kElastic: one that uses the material's E) acts on it.
   bool any = false;
   const auto take = [&](double r, double mass, std::size_t k) {
     any = true;
     const Material& m = scene.model.materials[k];
     bool hertz = false;
+    // Each law's own contact time (contact/laws/): an elastic law (Hertz-like) at the reference
+    // speed with the materials' modulus, a law of constant stiffness at any speed.
     const PairLaw& law = table.particle_pair(k, k);
-    if (law.law == ContactLawKind::Linear) {
-      a.linear = true;
-      pp = std::min(pp, linear_contact_time(0.5 * mass, law.cn));
-    } else {
-      hertz = true;
-      const double Epp = effective_modulus(m.young, m.poisson, m.young, m.poisson);
-      pp = std::min(pp, hertz_contact_time(0.5 * mass, Epp, 0.5 * r, a.reference_speed));
-    }
-    if (stiffest_barrier > 0.0) {
-      bool barrier_hertz = barrier_materials.empty();
-      for (const int bm : barrier_materials) {
-        const PairLaw& bl = table.barrier_pair(k, static_cast<std::size_t>(bm));
-        if (bl.law == ContactLawKind::Linear) {
-          a.linear = true;
-          pb = std::min(pb, linear_contact_time(mass, bl.cn));
-        } else {
-          barrier_hertz = true;
-        }
-      }
-      if (barrier_hertz) {
-        // A rigid barrier (E = +inf) is the stiffest; E* is then the particle's E/(1 - nu^2).
+    with_law(law.law, [&]<class Law>(std::type_identity<Law>) {
+      if constexpr (Law::kElastic) {
         hertz = true;
-        const double Epb = barrier_effective_modulus(m.young, m.poisson, stiffest_barrier, stiffest_nu);
-        pb = std::min(pb, hertz_contact_time(mass, Epb, r, a.reference_speed));
+        const double Epp = effective_modulus(m.young, m.poisson, m.young, m.poisson);
+        pp = std::min(pp, Law::contact_time(law, Epp, 0.5 * mass, 0.5 * r, a.reference_speed));
+      } else {
+        a.linear = true;
+        pp = std::min(pp, Law::contact_time(law, 0.0, 0.5 * mass, 0.5 * r, a.reference_speed));
       }
+    });
+    if (stiffest_barrier > 0.0) {
+      // A rigid barrier (E = +inf) is the stiffest; E* is then the particle's E/(1 - nu^2).
+      const double Epb = barrier_effective_modulus(m.young, m.poisson, stiffest_barrier, stiffest_nu);
+      const auto barrier_time = [&](const PairLaw& bl) {
+        with_law(bl.law, [&]<class Law>(std::type_identity<Law>) {
+          if constexpr (Law::kElastic) {
+            hertz = true;
+            pb = std::min(pb, Law::contact_time(bl, Epb, mass, r, a.reference_speed));
+          } else {
+            a.linear = true;
+            pb = std::min(pb, Law::contact_time(bl, 0.0, mass, r, a.reference_speed));
+          }
+        });
+      };
+      if (barrier_materials.empty()) barrier_time(PairLaw{});  // the default law
+      for (const int bm : barrier_materials) barrier_time(table.barrier_pair(k, static_cast<std::size_t>(bm)));
     }
     if (hertz) {
       a.hertz = true;

@@ -8,11 +8,11 @@
 namespace mpdem::cli {
 
 struct TimeStepAdvice {
-  double rayleigh = 0.0;         // s, smallest Rayleigh time over the particles under a Hertz law (0: none)
-  double contact_pp = 0.0;       // s, shortest particle-particle contact (0 without particles)
-  double contact_pb = 0.0;       // s, shortest particle-barrier contact (0 without barriers)
-  bool hertz = false;            // some contact uses the Hertz law: its time at the reference speed
-  bool linear = false;           // some contact uses the linear law: pi sqrt(m*/k_n), any speed
+  double rayleigh = 0.0;    // s, smallest Rayleigh time over the particles under a Hertz law (0: none)
+  double contact_pp = 0.0;  // s, shortest particle-particle contact (0 without particles)
+  double contact_pb = 0.0;  // s, shortest particle-barrier contact (0 without barriers)
+  bool hertz = false;   // some contact uses an elastic (Hertz-like, Law::kElastic) law: its time at the reference speed
+  bool linear = false;  // some contact uses a law of constant stiffness (linear): pi sqrt(m*/k_n), any speed
   double reference_speed = 0.0;  // m/s, max(expected impact speed, 1 m/s)
   ImpactSpeed impact;            // the expected impact speed and what sets it
   double recommended = 0.0;      // s, min(0.2 rayleigh, contact / 50)

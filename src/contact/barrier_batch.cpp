@@ -21,7 +21,7 @@ void pad(BarrierBatch& b) {
     b.s0x[t] = b.s0x[l], b.s0y[t] = b.s0y[l], b.s0z[t] = b.s0z[l];
     b.vt0x[t] = b.vt0x[l], b.vt0y[t] = b.vt0y[l], b.vt0z[t] = b.vt0z[l];
     b.set_law(t, b.law_of(l));
-    b.r[t] = b.r[l], b.m[t] = b.m[l];
+    b.r_star[t] = b.r_star[l], b.m_star[t] = b.m_star[l];
   }
 }
 
@@ -32,8 +32,8 @@ void contact_law_lanes(const EvalRequest& req, BarrierBatch& b) {
     ContactState c;
     c.normal = {b.nx[t], b.ny[t], b.nz[t]};
     c.overlap = b.overlap[t];
-    c.r_star = b.r[t];
-    c.m_star = b.m[t];
+    c.r_star = b.r_star[t];
+    c.m_star = b.m_star[t];
     const Vec3 rP = -c.r_star * c.normal;
     const Vec3 vrel = contact_relative_velocity_barrier({b.vx[t], b.vy[t], b.vz[t]}, {b.wx[t], b.wy[t], b.wz[t]}, rP,
                                                         {b.ux[t], b.uy[t], b.uz[t]});
@@ -49,12 +49,12 @@ void contact_law_lanes(const EvalRequest& req, BarrierBatch& b) {
     b.tx[t] = arm.x, b.ty[t] = arm.y, b.tz[t] = arm.z;
     b.sx[t] = r.spring.x, b.sy[t] = r.spring.y, b.sz[t] = r.spring.z;
     b.vtx[t] = c.vt.x, b.vty[t] = c.vt.y, b.vtz[t] = c.vt.z;
-    b.fn[t] = r.fn_limit;
+    b.fn_load[t] = r.fn_limit;
     b.energy[t] = r.energy;
     b.damping[t] = r.damping;
-    b.eb[t] = r.spring_energy_before;
-    b.ea[t] = r.spring_energy;
-    b.tl[t] = r.tangential_loss;
+    b.spring_energy_before[t] = r.spring_energy_before;
+    b.spring_energy_after[t] = r.spring_energy;
+    b.tangential_loss[t] = r.tangential_loss;
     b.slip[t] = r.slipped ? 1 : 0;
   }
 }
@@ -62,11 +62,9 @@ void contact_law_lanes(const EvalRequest& req, BarrierBatch& b) {
 }  // namespace
 
 // Lane by lane (vectorised; the laws are branch-free).
-void barrier_contact_law(LawMix mix, const EvalRequest& req, BarrierBatch& b) {
+void barrier_contact_law(LawSet laws, const EvalRequest& req, BarrierBatch& b) {
   pad(b);
-  if (mix == LawMix::Hertz) contact_law_lanes<HertzLaw>(req, b);
-  else if (mix == LawMix::Linear) contact_law_lanes<LinearLaw>(req, b);
-  else contact_law_lanes<MixedLaw>(req, b);
+  with_laws(laws, [&]<class Law>(std::type_identity<Law>) { contact_law_lanes<Law>(req, b); });
 }
 
 }  // namespace mpdem

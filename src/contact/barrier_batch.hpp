@@ -1,6 +1,6 @@
 #pragma once
-// BarrierBatch: particle-barrier contacts evaluated together (sim/barrier_contacts.cpp) - the
-// batch's structure of arrays and the Hertz-Mindlin law over it.
+// BarrierBatch: particle-barrier contacts evaluated together (contact/barrier_contacts.cpp) - the
+// batch's structure of arrays and the contact law over it.
 #include <cstddef>
 #include <cstdint>
 
@@ -8,7 +8,7 @@
 #include "contact/contact_table.hpp"
 #include "physics/tangential.hpp"
 #include "contact/barrier_contact_store.hpp"
-#include "sim/interactions.hpp"
+#include "contact/eval_request.hpp"
 
 namespace mpdem {
 
@@ -39,23 +39,22 @@ struct BarrierBatch {
   double ux[kContacts], uy[kContacts], uz[kContacts];        // m/s, barrier velocity
   double s0x[kContacts], s0y[kContacts], s0z[kContacts];     // m, stored spring (zero: none)
   double vt0x[kContacts], vt0y[kContacts], vt0z[kContacts];  // m/s, stored tangential velocity
-  // the pair's law (contact_table.hpp's PairLaw, by field)
-  ContactLawKind law[kContacts];
-  TangentialSpring form[kContacts];
-  double cn[kContacts], ct[kContacts], sr[kContacts];                                     // PairLaw::cn, ct, shear_root
-  double xin[kContacts], xit[kContacts], mus[kContacts], mud[kContacts], mur[kContacts];  // -
-  double r[kContacts], m[kContacts];                                                      // m, kg: r* = R, m* = m
+  // the pair's law (PairLaw, contact/laws/law_list.hpp)
+  LawId law[kContacts];
+  TangentialSpring spring_form[kContacts];
+  double coefficients[kCoefficients][kContacts];  // PairLaw::c by slot, units by slot
+  double r_star[kContacts], m_star[kContacts];    // m, kg: r* = R, m* = m
   // --- the law's results (contact_law)
   double fx[kContacts], fy[kContacts], fz[kContacts];     // N, force on the particle
   double tx[kContacts], ty[kContacts], tz[kContacts];     // N m, r_P x f_t
   double sx[kContacts], sy[kContacts], sz[kContacts];     // m, spring for the next step
   double vtx[kContacts], vty[kContacts], vtz[kContacts];  // m/s, tangential velocity
-  double fn[kContacts];                                   // N, positive part of the net normal force
+  double fn_load[kContacts];                              // N, max(fn + adhesion, 0) (rolling resistance)
   double energy[kContacts];                               // J, elastic energy
   double damping[kContacts];                              // W, normal dashpot power
-  double eb[kContacts];                                   // J, stored spring at this step's stiffness
-  double ea[kContacts];                                   // J, the new spring's energy
-  double tl[kContacts];                                   // J, tangential loss (ContactResult)
+  double spring_energy_before[kContacts];                 // J, stored spring at this step's stiffness
+  double spring_energy_after[kContacts];                  // J, the new spring's energy
+  double tangential_loss[kContacts];                      // J, tangential loss (ContactResult)
   std::int64_t slip[kContacts];                           // 1 when sliding (8 bytes, like SlipDecision)
 
   // Room for one more particle with all its contacts.
@@ -64,16 +63,20 @@ struct BarrierBatch {
   std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }
 
   void set_law(std::size_t t, const PairLaw& c) {
-    law[t] = c.law, form[t] = c.spring, cn[t] = c.cn, ct[t] = c.ct, sr[t] = c.shear_root;
-    xin[t] = c.xi_n, xit[t] = c.xi_t, mus[t] = c.mu_s, mud[t] = c.mu_d, mur[t] = c.mu_r;
+    law[t] = c.law, spring_form[t] = c.spring;
+    for (std::size_t s = 0; s < kCoefficients; ++s) coefficients[s][t] = c.c[s];
   }
   PairLaw law_of(std::size_t t) const {
-    return {law[t], cn[t], ct[t], sr[t], xin[t], xit[t], mus[t], mud[t], mur[t], form[t]};
+    PairLaw c;
+    c.law = law[t], c.spring = spring_form[t];
+    for (std::size_t s = 0; s < kCoefficients; ++s) c.c[s] = coefficients[s][t];
+    return c;
   }
 };
 
 // The contact law (contact_law.hpp; physics.md sections 5-7, 13) of every contact of the batch
-// (count >= 1), for the laws the table holds: fills the results from the inputs, lane by lane.
-void barrier_contact_law(LawMix mix, const EvalRequest& req, BarrierBatch& b);
+// (count >= 1), for the laws the table holds (ContactTable::barrier_laws): fills the results from the inputs, lane by
+// lane.
+void barrier_contact_law(LawSet laws, const EvalRequest& req, BarrierBatch& b);
 
 }  // namespace mpdem

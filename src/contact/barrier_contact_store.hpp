@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "core/vec3.hpp"
-#include "io/binary_stream.hpp"
+#include "core/binary_stream.hpp"
 #include "neighbor/barrier_broadphase.hpp"
 
 namespace mpdem {

@@ -247,7 +247,7 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
     batch.s0x[t] = s0.x, batch.s0y[t] = s0.y, batch.s0z[t] = s0.z;
     batch.vt0x[t] = vt0.x, batch.vt0y[t] = vt0.y, batch.vt0z[t] = vt0.z;
     batch.set_law(t, law);
-    batch.r[t] = r, batch.m[t] = m;
+    batch.r_star[t] = r, batch.m_star[t] = m;
   }
   batch.k[batch.particles] = static_cast<std::uint32_t>(k);
   batch.end[batch.particles] = static_cast<std::uint32_t>(batch.count);
@@ -257,7 +257,7 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
 void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch,
                             BarrierSums& acc) {
   if (batch.particles == 0) return;
-  if (batch.count > 0) barrier_contact_law(table_.barrier_mix(), req, batch);
+  if (batch.count > 0) barrier_contact_law(table_.barrier_laws(), req, batch);
   // In particle order, each particle's contacts in order: the original per-particle sums.
   const bool rolling = table_.any_rolling();
   const double dt = req.dt;
@@ -276,11 +276,12 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
     for (std::size_t c = 0; t < batch.end[q]; ++t, ++c) {
       const BarrierSlot* hist = batch.hist[t];
       const Vec3 w{batch.wx[t], batch.wy[t], batch.wz[t]};
-      // Against the rotation of the step start, like particle pairs (sim/particle_contacts.cpp).
+      // Against the rotation of the step start, like particle pairs (contact/particle_contacts.cpp).
       Vec3 roll{};
       if (rolling) {
         const Vec3 wr0 = req.iteration > 0 ? (hist ? hist->wr0 : Vec3{}) : w;
-        roll = rolling_resistance_torque(wr0, batch.mur[t], batch.r[t], batch.fn[t], p.inertia[i], dt);
+        roll = rolling_resistance_torque(wr0, batch.coefficients[kMuR][t], batch.r_star[t], batch.fn_load[t],
+                                         p.inertia[i], dt);
       }
       const Vec3 f{batch.fx[t], batch.fy[t], batch.fz[t]};
       force += f;
@@ -310,10 +311,10 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
       sum1 += batch.energy[t];
       sum2 += batch.damping[t];
       sum3 -= dot(roll, w);
-      sum5 += slipped ? 0.0 : batch.tl[t];  // selected values, not a selected address (register sums)
-      sum6 += slipped ? batch.tl[t] : 0.0;
-      sum7 += batch.eb[t];
-      sum8 += batch.ea[t];
+      sum5 += slipped ? 0.0 : batch.tangential_loss[t];  // selected values, not a selected address (register sums)
+      sum6 += slipped ? batch.tangential_loss[t] : 0.0;
+      sum7 += batch.spring_energy_before[t];
+      sum8 += batch.spring_energy_after[t];
     }
     p.force[i] += force;
     p.torque[i] += torque;

@@ -31,14 +31,14 @@
 #include "contact/contact_table.hpp"
 #include "contact/barrier_contact_store.hpp"
 #include "parallel/attached_records.hpp"
-#include "sim/interactions.hpp"
+#include "contact/eval_request.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "contact/particle_contacts.hpp"
 #include "state/barrier_topology.hpp"
 
 namespace mpdem {
 
-struct BarrierBatch;  // contacts evaluated together (sim/barrier_batch.hpp)
+struct BarrierBatch;  // contacts evaluated together (contact/barrier_batch.hpp)
 
 class BarrierContacts {
  public:
@@ -69,7 +69,7 @@ class BarrierContacts {
   void clear_overflows() { overflows_ = 0; }
   std::size_t memory_bytes() const { return store_.bytes(); }  // B, held by the contact records
   // The contact records: after a committed evaluation, committed(k) and loads(k) hold its
-  // contacts, load_used(k) of them (sim/contact_list.cpp reads them).
+  // contacts, load_used(k) of them (output/contact_list.cpp reads them).
   const BarrierContactStore& store() const { return store_; }
 
  private:

@@ -1,70 +1,21 @@
 #pragma once
-// The contact laws, each written once (physics.md sections 5, 6 and 13), and the one evaluation
-// of a contact that the particle-pair and particle-barrier kernels and the tests all call.
+// The one evaluation of a contact that the particle-pair and particle-barrier kernels and the
+// tests all call, for any law of contact/laws/law_list.hpp.
 //
-// A law is a type with one function, `stiffness`, giving the overlap-dependent normal stiffness,
-// elastic force, tangential stiffness and stored normal energy from the pair's constants
-// (PairLaw, contact/contact_table.hpp), and a flag saying whether the net normal force is clamped
-// at zero. Everything else of a contact (damping from the calibrated ratio, the projected spring,
-// Coulomb stick-slip, energy and the damping/friction split) is common and lives in
-// evaluate_contact<Law>. The kernels are templates over the law, so no law is dispatched per
-// contact; MixedLaw serves a scene whose table mixes laws (both evaluated, one selected per lane).
-// Everything is branch-free (selects), so that the kernels' loops over batches vectorise.
+// A law (contact/laws/<law>.hpp) gives the overlap-dependent normal stiffness, elastic force,
+// tangential stiffness and stored normal energy from the pair's constants (PairLaw). Everything
+// else of a contact (damping from the calibrated ratio, the projected spring, Coulomb stick-slip,
+// energy and the damping/friction split) is common and lives here. The kernels are templates over
+// the law, so no law is dispatched per contact; MixedLaw serves a table that mixes laws (all
+// evaluated, one selected per lane). Everything is branch-free (selects), so that the kernels'
+// loops over batches vectorise.
 #include <cmath>
 
-#include "contact/contact_table.hpp"
+#include "contact/laws/law_list.hpp"
 #include "core/vec3.hpp"
 #include "physics/tangential.hpp"
 
 namespace mpdem {
-
-struct Stiffness {
-  double k_n = 0.0;     // N/m, normal stiffness dF/d(delta)
-  double f_el = 0.0;    // N, elastic normal force
-  double k_t = 0.0;     // N/m, tangential stiffness
-  double energy = 0.0;  // J, elastic energy of the normal spring
-  bool clamp = true;    // the net normal force is clamped at zero (never attractive)
-};
-
-// Hertz-Mindlin (physics.md sections 5-6): with root = sqrt(r* delta),
-// k_n = 2 E* root, f_el = 4/3 E* sqrt(r*) delta^(3/2) = 2/3 k_n delta (49), k_t = 8 G* root (65),
-// energy 8/15 E* sqrt(r*) delta^(5/2) = 2/5 f_el delta (section 12). c.cn = 2 E*, c.ct = 8 G*.
-struct HertzLaw {
-  static Stiffness stiffness(const PairLaw& c, double r_star, double overlap) {
-    Stiffness s;
-    const double root = std::sqrt(r_star * overlap);  // m
-    s.k_n = c.cn * root;
-    s.f_el = (2.0 / 3.0) * s.k_n * overlap;
-    s.k_t = c.ct * root;
-    s.energy = 0.4 * s.f_el * overlap;
-    return s;
-  }
-};
-
-// Linear spring-dashpot with a Coulomb-capped tangential spring (Cundall-Strack; physics.md
-// section 13): k_n = c.cn, k_t = c.ct constant, f_el = k_n delta, energy 1/2 k_n delta^2. Not
-// clamped: the restitution and contact time of the damped linear oscillator then hold exactly.
-struct LinearLaw {
-  static Stiffness stiffness(const PairLaw& c, double /*r_star*/, double overlap) {
-    Stiffness s;
-    s.k_n = c.cn;
-    s.f_el = s.k_n * overlap;
-    s.k_t = c.ct;
-    s.energy = 0.5 * s.f_el * overlap;
-    s.clamp = false;
-    return s;
-  }
-};
-
-// Either law, chosen per pair by c.law (a select, not a branch).
-struct MixedLaw {
-  static Stiffness stiffness(const PairLaw& c, double r_star, double overlap) {
-    const Stiffness h = HertzLaw::stiffness(c, r_star, overlap);
-    const Stiffness l = LinearLaw::stiffness(c, r_star, overlap);
-    const bool lin = c.law == ContactLawKind::Linear;
-    return {lin ? l.k_n : h.k_n, lin ? l.f_el : h.f_el, lin ? l.k_t : h.k_t, lin ? l.energy : h.energy, !lin};
-  }
-};
 
 // One contact as the kernel's geometry gives it.
 struct ContactState {
@@ -80,8 +31,8 @@ struct ContactState {
 };
 
 struct ContactResult {
-  double fn = 0.0;        // N, net normal force along n, >= 0 where the law clamps
-  double fn_limit = 0.0;  // N, max(fn, 0): what Coulomb's limit and rolling resistance scale with
+  double fn = 0.0;        // N, net normal force along n, >= -adhesion where the law clamps
+  double fn_limit = 0.0;  // N, max(fn + adhesion, 0): what Coulomb's limit and rolling resistance scale with
   Vec3 ft;                // N, tangential force
   Vec3 spring;            // m (N: incremental form, k_t s), spring for the next step
   bool slipped = false;
@@ -102,7 +53,7 @@ struct ContactResult {
 // The normal half of a contact: what the tangential half and the sums need of it.
 struct NormalContact {
   double fn = 0.0;        // N, net normal force (ContactResult::fn)
-  double fn_limit = 0.0;  // N, max(fn, 0)
+  double fn_limit = 0.0;  // N, max(fn + adhesion, 0)
   double k_t = 0.0;       // N/m, tangential stiffness
   double d_t = 0.0;       // N s/m, tangential damping
   double energy = 0.0;    // J, elastic energy of the normal spring
@@ -110,21 +61,31 @@ struct NormalContact {
 };
 
 // Damping d_n = 2 xi_n sqrt(m* k_n) (50) and d_t = 2 xi_t sqrt(m* k_t) (67), which shares the
-// root: sqrt(m* k_t) = sqrt(m* k_n) sqrt(k_t / k_n), and k_t / k_n is constant for both laws
-// (c.shear_root). The net normal force f = f_el - d_n rate (49); the power removed
+// root: sqrt(m* k_t) = sqrt(m* k_n) sqrt(k_t / k_n), and k_t / k_n is constant for every law
+// (shear_root). The net normal force f = f_el - d_n rate (49); the power removed
 // (f_el - f_n) rate (tests/support/hertz_oracle.hpp's damped_normal_force explains the clamped case).
+// An adhesive law (Law::kAdhesion) clamps at the pull-off instead of zero: the dashpot never makes
+// the force more attractive than -adhesion, and Coulomb's limit and rolling resistance scale with
+// the load pressing the surfaces together, fn + adhesion (the adhesion acts as an extra load).
 template <class Law>
 inline NormalContact normal_contact(const PairLaw& c, double r_star, double m_star, double overlap,
                                     double normal_rate) {
   NormalContact out;
   const Stiffness k = Law::stiffness(c, r_star, overlap);
   const double mass_root = std::sqrt(m_star * k.k_n);  // sqrt(kg N/m)
-  const double d_n = 2.0 * c.xi_n * mass_root;
-  out.d_t = 2.0 * c.xi_t * mass_root * c.shear_root;
+  const double d_n = 2.0 * c.c[kXiN] * mass_root;
+  out.d_t = 2.0 * c.c[kXiT] * mass_root * c.c[kShearRoot];
   const double f = k.f_el - d_n * normal_rate;
-  out.fn = (k.clamp & (f < 0.0)) ? 0.0 : f;
+  if constexpr (Law::kAdhesion) {
+    const double floor = 0.0 - k.adhesion;  // +0 without adhesion, as the clamp at zero gives
+    out.fn = (k.clamp & (f < floor)) ? floor : f;
+    const double load = out.fn + k.adhesion;
+    out.fn_limit = load > 0.0 ? load : 0.0;
+  } else {
+    out.fn = (k.clamp & (f < 0.0)) ? 0.0 : f;
+    out.fn_limit = out.fn > 0.0 ? out.fn : 0.0;
+  }
   out.damping = (k.f_el - out.fn) * normal_rate;
-  out.fn_limit = out.fn > 0.0 ? out.fn : 0.0;
   out.k_t = k.k_t;
   out.energy = k.energy;
   return out;
@@ -168,7 +129,7 @@ inline ContactResult tangential_contact(double mu_s, double mu_d, TangentialSpri
 // loops over a batch (fewer live values per loop); everything else calls this.
 template <class Law>
 inline ContactResult evaluate_contact(const PairLaw& c, const ContactState& s) {
-  return tangential_contact(c.mu_s, c.mu_d, c.spring,
+  return tangential_contact(c.c[kMuS], c.c[kMuD], c.spring,
                             normal_contact<Law>(c, s.r_star, s.m_star, s.overlap, s.normal_rate), s.spring, s.normal,
                             s.increment, s.vt, s.decide);
 }

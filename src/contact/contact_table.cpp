@@ -1,6 +1,9 @@
 #include "contact/contact_table.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include "physics/barrier_moduli.hpp"
 #include "physics/hertz.hpp"
@@ -26,6 +29,8 @@ ContactLawParams pair_params(const Model& model, const ContactLawParams& default
                        (named(a, e.material_b) && named(b, e.material_a));
     if (!match) continue;
     if (e.law) p.law = *e.law;
+    if (e.cohesion) p.cohesion = *e.cohesion;
+    for (const auto& [key, value] : e.law_keys) p.law_keys.insert_or_assign(key, value);
     if (e.tangential_spring) p.tangential_spring = *e.tangential_spring;
     if (e.restitution || e.damping_ratio) {
       p.restitution = e.restitution;
@@ -35,53 +40,53 @@ ContactLawParams pair_params(const Model& model, const ContactLawParams& default
     if (e.mu_dynamic) p.mu_dynamic = *e.mu_dynamic;
     if (e.mu_rolling) p.mu_rolling = *e.mu_rolling;
     if (e.tangential_damping) p.tangential_damping = e.tangential_damping;
-    if (e.stiffness_normal) p.stiffness_normal = *e.stiffness_normal;
-    if (e.stiffness_tangential) p.stiffness_tangential = *e.stiffness_tangential;
   }
   return p;
 }
 
-LawMix mix_of(const std::vector<PairLaw>& laws) {
-  bool hertz = false, linear = false;
-  for (const PairLaw& l : laws) (l.law == ContactLawKind::Linear ? linear : hertz) = true;
-  return hertz && linear ? LawMix::Mixed : (linear ? LawMix::Linear : LawMix::Hertz);
+LawSet laws_of(const std::vector<PairLaw>& laws) {
+  LawSet set = 0;
+  for (const PairLaw& l : laws) set |= LawSet{1} << l.law;
+  return set;
 }
 
 }  // namespace
 
 PairLaw resolve_pair_law(const ContactLawParams& p, double E_star, double G_star) {
   PairLaw l;
-  l.law = p.law;
-  const bool linear = p.law == ContactLawKind::Linear;
-  if (linear) {
-    l.cn = p.stiffness_normal;
-    l.ct = p.stiffness_tangential.value_or(2.0 / 7.0 * p.stiffness_normal);
-  } else {
-    l.cn = 2.0 * E_star;
-    l.ct = 8.0 * G_star;
-  }
-  l.shear_root = l.cn > 0.0 ? std::sqrt(l.ct / l.cn) : 0.0;
-  // Restitution -> damping ratio: the Hertz calibration (section 5 Departure), or for the linear
-  // law the exact (55), whose oscillator it was derived for.
-  if (p.damping_ratio) l.xi_n = *p.damping_ratio;
-  else if (p.restitution)
-    l.xi_n = linear ? thesis_damping_ratio(*p.restitution) : damping_ratio_for_restitution(*p.restitution);
+  l.law = find_law(p.law, p.cohesion);
+  if (l.law < 0)
+    throw std::invalid_argument("no contact law has law = \"" + p.law + "\" and cohesion = \"" + p.cohesion + "\"");
+  l.spring = p.tangential_spring;
+  // The law's own slots, and its calibration of the damping ratio from the restitution.
+  double xi_n = 0.0;
+  with_law(l.law, [&]<class Law>(std::type_identity<Law>) {
+    const auto own = Law::coefficients(LawInputs{E_star, G_star, &p});
+    std::copy(own.begin(), own.end(), l.c.begin() + kLawSlots);
+    if (p.damping_ratio) xi_n = *p.damping_ratio;
+    else if (p.restitution) xi_n = Law::damping_ratio(*p.restitution);
+  });
+  const double k_n = l.c[kLawSlots], k_t = l.c[kLawSlots + 1];  // the law's normal and tangential constants
   // Without its own ratio the tangential dashpot takes the normal one: undamped, a contact that
   // starts with e < 1 sticks at first touch (the normal dashpot dominates the still tiny
   // spring force there) and the tangential impulse falls short of Coulomb's mu J_n.
-  l.xi_t = p.tangential_damping.value_or(l.xi_n);
-  l.mu_s = p.mu_static;
-  l.mu_d = p.mu_dynamic;
-  l.mu_r = p.mu_rolling;
-  l.spring = p.tangential_spring;
+  const std::array<double, kLawSlots> common{
+      k_n > 0.0 ? std::sqrt(k_t / k_n) : 0.0,  // kShearRoot
+      xi_n,                                    // kXiN
+      p.tangential_damping.value_or(xi_n),     // kXiT
+      p.mu_static,                             // kMuS
+      p.mu_dynamic,                            // kMuD
+      p.mu_rolling,                            // kMuR
+  };
+  std::copy(common.begin(), common.end(), l.c.begin());
   return l;
 }
 
 void ContactTable::build(const Model& model) {
   const std::vector<Material>& mats = model.materials;
   n_ = mats.size();
-  pp_.resize(n_ * n_);
-  pb_.resize(n_ * n_);
+  particle_pairs_.resize(n_ * n_);
+  barrier_pairs_.resize(n_ * n_);
   rolling_ = false;
   for (std::size_t a = 0; a < n_; ++a) {
     const Material& ma = mats[a];
@@ -96,18 +101,19 @@ void ContactTable::build(const Model& model) {
       const double sb = (2.0 - mb.poisson) / shear_modulus(mb.young, mb.poisson);
       const bool pp_used = !rigid_a && !is_rigid(mb);
       // Particle pairs: E* = 1 / (sum of the members' compliances) (51), G* likewise.
-      pp_[a * n_ + b] = resolve_pair_law(pair_params(model, model.params.contact.particle_particle, a, b, true),
-                                         pp_used ? 1.0 / (ca + cb) : 0.0, pp_used ? 1.0 / (sa + sb) : 0.0);
+      particle_pairs_[a * n_ + b] = resolve_pair_law(
+          pair_params(model, model.params.contact.particle_particle, a, b, true), pp_used ? 1.0 / (ca + cb) : 0.0,
+          pp_used ? 1.0 / (sa + sb) : 0.0);
       // A particle against the half-space of the barrier's material, or a rigid barrier (section 7).
-      pb_[a * n_ + b] = resolve_pair_law(
+      barrier_pairs_[a * n_ + b] = resolve_pair_law(
           pair_params(model, model.params.contact.particle_barrier, a, b, false),
           rigid_a ? 0.0 : barrier_effective_modulus(ma.young, ma.poisson, mb.young, mb.poisson),
           rigid_a ? 0.0 : barrier_effective_shear_modulus(ma.young, ma.poisson, mb.young, mb.poisson));
-      rolling_ = rolling_ || pp_[a * n_ + b].mu_r > 0.0 || pb_[a * n_ + b].mu_r > 0.0;
+      rolling_ = rolling_ || particle_pairs_[a * n_ + b].mu_r() > 0.0 || barrier_pairs_[a * n_ + b].mu_r() > 0.0;
     }
   }
-  pp_mix_ = mix_of(pp_);
-  pb_mix_ = mix_of(pb_);
+  particle_laws_ = laws_of(particle_pairs_);
+  barrier_laws_ = laws_of(barrier_pairs_);
 }
 
 }  // namespace mpdem

@@ -28,7 +28,7 @@ constexpr std::size_t kAhead = 32;  // slots ahead to prefetch
 // compiler emulates the gathers element by element, which is slower than plain loads.
 // Several materials (!kUniform): each pair's law from the table, by the members' materials.
 template <bool kUniform>
-MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
+MPDEM_SCALAR_LOOPS void gather_members(const PairPass& pass, Batch& b) {
   // Lanes past count repeat the last candidate (run() is called with count >= 1).
   for (std::size_t t = b.count; t < b.lanes(); ++t) {
     const std::size_t l = b.count - 1;
@@ -37,34 +37,36 @@ MPDEM_SCALAR_LOOPS void gather_members(const PairPass& q, Batch& b) {
   }
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const std::size_t i = b.i[t], j = b.j[t];
-    const ContactTerms& ti = q.terms[i];
-    const ContactTerms& tj = q.terms[j];
+    const ContactTerms& ti = pass.terms[i];
+    const ContactTerms& tj = pass.terms[j];
     const double ri = ti.radius, rj = tj.radius;
-    const Vec3 dv = q.v[i] - q.v[j], ws = ri * q.w[i] + rj * q.w[j];  // (x_i - x_j, R_i + R_j: pass 0)
+    const Vec3 dv = pass.v[i] - pass.v[j], ws = ri * pass.w[i] + rj * pass.w[j];  // (x_i - x_j, R_i + R_j: pass 0)
     b.dvx[t] = dv.x, b.dvy[t] = dv.y, b.dvz[t] = dv.z;
     b.wsx[t] = ws.x, b.wsy[t] = ws.y, b.wsz[t] = ws.z;
     if constexpr (!kUniform) {
-      const PairLaw& c = q.laws[static_cast<std::size_t>(q.material[i]) * q.materials + q.material[j]];
-      b.law[t] = c.law, b.form[t] = c.spring, b.cn[t] = c.cn, b.ct[t] = c.ct, b.sr[t] = c.shear_root;
-      b.xin[t] = c.xi_n, b.xit[t] = c.xi_t, b.mus[t] = c.mu_s, b.mud[t] = c.mu_d, b.mur[t] = c.mu_r;
+      const PairLaw& c = pass.laws[static_cast<std::size_t>(pass.material[i]) * pass.materials + pass.material[j]];
+      b.law[t] = c.law, b.spring_form[t] = c.spring;
+      for (std::size_t s = 0; s < kCoefficients; ++s) b.coefficients[s][t] = c.c[s];
     }
-    b.rr[t] = ri * rj;
-    b.sm[t] = ti.inv_mass + tj.inv_mass;
+    b.radius_product[t] = ri * rj;
+    b.inverse_mass_sum[t] = ti.inv_mass + tj.inv_mass;
   }
 }
 
 // Stage 2a: each slot's stored spring and (kStepStart: the trapezoidal rule) its step-start
 // tangential velocity and imposed stick/slip decision (indexed loads, scalar like gather_members).
 template <bool kStepStart>
-MPDEM_SCALAR_LOOPS void gather_history(const PairPass& q, Batch& b) {
+MPDEM_SCALAR_LOOPS void gather_history(const PairPass& pass, Batch& b) {
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const std::size_t k = b.slot[t];
-    const Vec3 s0 = q.spring[k];
+    const Vec3 s0 = pass.spring[k];
     b.s0x[t] = s0.x, b.s0y[t] = s0.y, b.s0z[t] = s0.z;
     if constexpr (kStepStart) {
-      const Vec3 v0 = q.vt0[k];
+      const Vec3 v0 = pass.vt0[k];
       b.v0x[t] = v0.x, b.v0y[t] = v0.y, b.v0z[t] = v0.z;
-      b.decide[t] = q.iteration < 2 ? SlipDecision::Free : q.slipped[k] ? SlipDecision::Slip : SlipDecision::Stick;
+      b.decide[t] = pass.iteration < 2 ? SlipDecision::Free
+                    : pass.slipped[k]  ? SlipDecision::Slip
+                                       : SlipDecision::Stick;
     }
   }
 }
@@ -73,9 +75,9 @@ MPDEM_SCALAR_LOOPS void gather_history(const PairPass& q, Batch& b) {
 // contact_law.hpp), over contiguous arrays (vectorised; an apart candidate, overlap 0, gets finite
 // values that apply() skips). One loop: the intermediate values stay in registers.
 template <bool kUniform, class Law>
-void geometry_normal(const PairPass& q, Batch& b) {
-  gather_members<kUniform>(q, b);
-  const PairLaw u = q.uniform_law;
+void geometry_normal(const PairPass& pass, Batch& b) {
+  gather_members<kUniform>(pass, b);
+  const PairLaw u = pass.uniform_law;
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const Vec3 d{b.dx[t], b.dy[t], b.dz[t]};
     const double dist = std::sqrt(norm2(d));
@@ -85,32 +87,31 @@ void geometry_normal(const PairPass& q, Batch& b) {
     const double inv = 1.0 / (dist > 0.0 ? dist : 1.0);
     const Vec3 nrm = dist > 0.0 ? d * inv : Vec3{0.0, 0.0, 1.0};
     // r* = R_i R_j / (R_i + R_j) (52) and m* = 1 / sm (53) from one division.
-    const double inv_rm = 1.0 / (b.reach[t] * b.sm[t]);
-    const double r = b.rr[t] * b.sm[t] * inv_rm, m = b.reach[t] * inv_rm;
+    const double inv_rm = 1.0 / (b.reach[t] * b.inverse_mass_sum[t]);
+    const double r = b.radius_product[t] * b.inverse_mass_sum[t] * inv_rm, m = b.reach[t] * inv_rm;
     // (61) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
     const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
     const double vn = dot(vrel, nrm);
     const Vec3 vt = vrel - vn * nrm;  // (60)
-    const PairLaw law = kUniform ? u : PairLaw{b.law[t], b.cn[t],  b.ct[t],  b.sr[t],  b.xin[t],
-                                               b.xit[t], b.mus[t], b.mud[t], b.mur[t], b.form[t]};
-    const NormalContact n = normal_contact<Law>(law, r, m, overlap, vn);
+    const NormalContact n = normal_contact<Law>(kUniform ? u : b.pair_law(t), r, m, overlap, vn);
     b.overlap[t] = overlap;
     b.nx[t] = nrm.x, b.ny[t] = nrm.y, b.nz[t] = nrm.z;
     b.vtx[t] = vt.x, b.vty[t] = vt.y, b.vtz[t] = vt.z;
-    b.r[t] = r;
-    b.fnet[t] = n.fn, b.fn[t] = n.fn_limit, b.kt[t] = n.k_t, b.dtc[t] = n.d_t, b.en[t] = n.energy;
-    b.pn[t] = n.damping;
+    b.r_star[t] = r;
+    b.fn_net[t] = n.fn, b.fn_load[t] = n.fn_limit;
+    b.tangential_stiffness[t] = n.k_t, b.tangential_damping[t] = n.d_t;
+    b.normal_energy[t] = n.energy, b.normal_damping[t] = n.damping;
   }
 }
 
 // Stage 2: the tangential half of the law (tangential_contact) with the spring increment (64)
 // (Verlet: phi = 1), and the contact's force, torque arm and energy terms (vectorised).
 template <bool kUniform, bool kStepStart>
-void tangential_stage(const PairPass& q, Batch& b) {
-  gather_history<kStepStart>(q, b);
-  const double dt = q.dt, phi = q.phi, dt_phi = q.dt * q.phi;
-  const double mu_s_u = q.uniform_law.mu_s, mu_d_u = q.uniform_law.mu_d;
-  const TangentialSpring form_u = q.uniform_law.spring;
+void tangential_stage(const PairPass& pass, Batch& b) {
+  gather_history<kStepStart>(pass, b);
+  const double dt = pass.dt, phi = pass.phi, dt_phi = pass.dt * pass.phi;
+  const double mu_s_u = pass.uniform_law.mu_s(), mu_d_u = pass.uniform_law.mu_d();
+  const TangentialSpring form_u = pass.uniform_law.spring;
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const Vec3 nrm = b.normal(t), vt = b.vt(t);
     Vec3 increment;
@@ -122,11 +123,12 @@ void tangential_stage(const PairPass& q, Batch& b) {
       increment = dt_phi * vt;
     }
     NormalContact n;
-    n.fn = b.fnet[t], n.fn_limit = b.fn[t], n.k_t = b.kt[t], n.d_t = b.dtc[t], n.energy = b.en[t];
-    n.damping = b.pn[t];
-    const ContactResult r = tangential_contact(kUniform ? mu_s_u : b.mus[t], kUniform ? mu_d_u : b.mud[t],
-                                               kUniform ? form_u : b.form[t], n, {b.s0x[t], b.s0y[t], b.s0z[t]}, nrm,
-                                               increment, vt, decide);
+    n.fn = b.fn_net[t], n.fn_limit = b.fn_load[t];
+    n.k_t = b.tangential_stiffness[t], n.d_t = b.tangential_damping[t];
+    n.energy = b.normal_energy[t], n.damping = b.normal_damping[t];
+    const ContactResult r = tangential_contact(
+        kUniform ? mu_s_u : b.coefficients[kMuS][t], kUniform ? mu_d_u : b.coefficients[kMuD][t],
+        kUniform ? form_u : b.spring_form[t], n, {b.s0x[t], b.s0y[t], b.s0z[t]}, nrm, increment, vt, decide);
     b.sx[t] = r.spring.x, b.sy[t] = r.spring.y, b.sz[t] = r.spring.z;
     b.slip[t] = r.slipped ? 1 : 0;
     const Vec3 f = r.fn * nrm + r.ft;
@@ -135,44 +137,45 @@ void tangential_stage(const PairPass& q, Batch& b) {
     b.ax[t] = arm.x, b.ay[t] = arm.y, b.az[t] = arm.z;
     b.energy[t] = r.energy;
     b.damping[t] = r.damping;
-    b.eb[t] = r.spring_energy_before;
-    b.ea[t] = r.spring_energy;
-    b.tl[t] = r.tangential_loss;
+    b.spring_energy_before[t] = r.spring_energy_before;
+    b.spring_energy_after[t] = r.spring_energy;
+    b.tangential_loss[t] = r.tangential_loss;
   }
 }
 
 // Stage 3: history, rolling resistance (71), the forces and the sums, in slot order.
-// The sums and the arrays' addresses are local: kept in out and q, every store to a particle
+// The sums and the arrays' addresses are local: kept in out and pass, every store to a particle
 // would make the compiler reload them, and each contact's sums would wait for the previous
 // contact's store (a store-to-load chain through memory).
 template <bool kUniform>
-void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
-  const bool rolling = q.rolling, commit = q.commit, first_iteration = q.iteration == 1;
-  const double uniform_mu_r = q.uniform_law.mu_r;
-  const Vec3* const w = q.w;
-  const ContactTerms* const terms = q.terms;
-  Vec3* const force = q.force;
-  Vec3* const torque = q.torque;
-  Vec3* const cross_force = q.cross_force;
-  Vec3* const cross_torque = q.cross_torque;
-  Vec3* const spring = q.spring;
-  Vec3* const vt0 = q.vt0;
-  Vec3* const wr0 = q.wr0;
+void apply(const PairPass& pass, const Batch& b, PairBlockSums& out) {
+  const bool rolling = pass.rolling, commit = pass.commit, first_iteration = pass.iteration == 1;
+  const double uniform_mu_r = pass.uniform_law.mu_r();
+  const Vec3* const w = pass.w;
+  const ContactTerms* const terms = pass.terms;
+  Vec3* const force = pass.force;
+  Vec3* const torque = pass.torque;
+  Vec3* const cross_force = pass.cross_force;
+  Vec3* const cross_torque = pass.cross_torque;
+  Vec3* const spring = pass.spring;
+  Vec3* const vt0 = pass.vt0;
+  Vec3* const wr0 = pass.wr0;
   PairBlockSums s = out;
   for (std::size_t t = 0; t < b.count; ++t) {
     const std::size_t i = b.i[t], j = b.j[t], k = b.slot[t];
     if (!(b.overlap[t] > 0.0)) {  // a candidate within the margin but apart: forget its history
-      if (commit) forget_history(q, k);
+      if (commit) forget_history(pass, k);
       continue;
     }
-    if (first_iteration) q.slipped[k] = static_cast<std::uint8_t>(b.slip[t]);
+    if (first_iteration) pass.slipped[k] = static_cast<std::uint8_t>(b.slip[t]);
     // Rolling resistance against the relative rotation of the step start (the state itself
     // outside the iteration): constant during the iteration (docs/integrators.md).
     Vec3 roll{}, wrel{};
     if (rolling || wr0) wrel = w[i] - w[j];
     if (rolling)
-      roll = rolling_resistance_torque(q.iteration > 0 ? wr0[k] : wrel, kUniform ? uniform_mu_r : b.mur[t], b.r[t],
-                                       b.fn[t], rolling_inertia_pair(q.inertia[i], q.inertia[j]), q.dt);
+      roll = rolling_resistance_torque(pass.iteration > 0 ? wr0[k] : wrel,
+                                       kUniform ? uniform_mu_r : b.coefficients[kMuR][t], b.r_star[t], b.fn_load[t],
+                                       rolling_inertia_pair(pass.inertia[i], pass.inertia[j]), pass.dt);
     if (commit) {
       spring[k] = {b.sx[t], b.sy[t], b.sz[t]};
       if (vt0) vt0[k] = b.vt(t);
@@ -183,8 +186,7 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
     const double ri = terms[i].radius, rj = terms[j].radius;
     force[i] += f;
     torque[i] += roll - ri * arm;
-    // j's share: to j itself, or (cross pair, j in a later block) to the zeroed cross buffer
-    // (about 9 % of the contacts on the 100k bed, with blocks of 4096 particles).
+    // j's share: to j itself, or (cross pair, j in a later block) to the zeroed cross buffer.
     const bool internal = b.cross[t] == kInternal;
     Vec3* fj = (internal ? force : cross_force) + (internal ? j : b.cross[t]);
     Vec3* tj = (internal ? torque : cross_torque) + (internal ? j : b.cross[t]);
@@ -196,68 +198,67 @@ void apply(const PairPass& q, const Batch& b, PairBlockSums& out) {
     s.rolling_power -= dot(roll, wrel);
     // Selected values, not a selected address: that would keep the sums in memory.
     const bool slid = b.slip[t] != 0;
-    s.sliding_loss += slid ? b.tl[t] : 0.0;
-    s.sticking_loss += slid ? 0.0 : b.tl[t];
-    s.spring_before += b.eb[t];
-    s.spring_after += b.ea[t];
+    s.sliding_loss += slid ? b.tangential_loss[t] : 0.0;
+    s.sticking_loss += slid ? 0.0 : b.tangential_loss[t];
+    s.spring_before += b.spring_energy_before[t];
+    s.spring_after += b.spring_energy_after[t];
     // Divide only for a contact deeper than the deepest so far.
     const double rmin = std::min(ri, rj);
-    if (b.overlap[t] > s.deepest.ratio * rmin) s.deepest = {b.overlap[t] / rmin, q.id[i], q.id[j]};
+    if (b.overlap[t] > s.deepest.ratio * rmin) s.deepest = {b.overlap[t] / rmin, pass.id[i], pass.id[j]};
   }
   out = s;
 }
 
 // Recording (PairPass::record): each touching slot's contact, from the batch's results, in a loop
 // of its own so that apply's loop is the same with recording off.
-void record_batch(const PairPass& q, const Batch& b) {
+void record_batch(const PairPass& pass, const Batch& b) {
   for (std::size_t t = 0; t < b.count; ++t)
     if (b.overlap[t] > 0.0)
-      q.record[b.slot[t]] = {Vec3{b.fx[t], b.fy[t], b.fz[t]}, b.normal(t), b.overlap[t], b.fnet[t],
-                             static_cast<std::uint32_t>(b.slip[t])};
+      pass.record[b.slot[t]] = {Vec3{b.fx[t], b.fy[t], b.fz[t]}, b.normal(t), b.overlap[t], b.fn_net[t],
+                                static_cast<std::uint32_t>(b.slip[t])};
 }
 
 template <bool kUniform, class Law, bool kStepStart>
-void run(const PairPass& q, Batch& b, PairBlockSums& out) {
-  geometry_normal<kUniform, Law>(q, b);
-  tangential_stage<kUniform, kStepStart>(q, b);
-  apply<kUniform>(q, b, out);
-  if (q.record) record_batch(q, b);
+void run(const PairPass& pass, Batch& b, PairBlockSums& out) {
+  geometry_normal<kUniform, Law>(pass, b);
+  tangential_stage<kUniform, kStepStart>(pass, b);
+  apply<kUniform>(pass, b, out);
+  if (pass.record) record_batch(pass, b);
   b.count = 0;
 }
 
 template <bool kUniform, class Law, bool kStepStart>
-PairBlockSums evaluate_block(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t cross_first,
+PairBlockSums evaluate_block(const PairPass& pass, std::size_t lo, std::size_t hi, std::size_t cross_first,
                              std::size_t cross_last) {
   PairBlockSums out;
   Batch b;
   const auto end = static_cast<std::uint32_t>(hi);  // [lo, hi) is one whole block: j >= hi is a cross pair
   // Cross shares default to zero (contacts add to them).
-  std::fill(q.cross_force + cross_first, q.cross_force + cross_last, Vec3{});
-  std::fill(q.cross_torque + cross_first, q.cross_torque + cross_last, Vec3{});
+  std::fill(pass.cross_force + cross_first, pass.cross_force + cross_last, Vec3{});
+  std::fill(pass.cross_torque + cross_first, pass.cross_torque + cross_last, Vec3{});
   std::uint32_t c = static_cast<std::uint32_t>(cross_first);  // next cross index
   // The block's slots in groups, in slot order; a batch runs when the next group might not fit.
-  const std::size_t k1 = q.off[hi];
-  for (std::size_t k = q.off[lo]; k < k1; k += kGroup) {
-    // The neighbours' data are indirect loads the hardware cannot foresee: fetch them ahead
-    // (about 13% of the pair time on the 100k bed).
-    for (std::size_t a = k + kAhead; a < std::min(k + kAhead + kGroup, q.pairs); ++a) {
-      const std::uint32_t ja = q.idx[a];
-      __builtin_prefetch(&q.x[ja]);
-      __builtin_prefetch(&q.v[ja]);
-      __builtin_prefetch(&q.w[ja]);
-      __builtin_prefetch(&q.terms[ja]);
+  const std::size_t k1 = pass.off[hi];
+  for (std::size_t k = pass.off[lo]; k < k1; k += kGroup) {
+    // The neighbours' data are indirect loads the hardware cannot foresee: fetch them ahead.
+    for (std::size_t a = k + kAhead; a < std::min(k + kAhead + kGroup, pass.pairs); ++a) {
+      const std::uint32_t ja = pass.idx[a];
+      __builtin_prefetch(&pass.x[ja]);
+      __builtin_prefetch(&pass.v[ja]);
+      __builtin_prefetch(&pass.w[ja]);
+      __builtin_prefetch(&pass.terms[ja]);
     }
     // The slots' springs (read for every slot at a commit) are a sequential stream the hardware
-    // prefetcher does not keep ahead of (about 10% of the pair time on the 100k bed).
+    // prefetcher does not keep ahead of.
     // So are the slots' first members (the prefetch loop above reads the second ones).
-    if (k + kAhead + kGroup <= q.pairs) {
-      const char* sp = reinterpret_cast<const char*>(q.spring + k + kAhead);
+    if (k + kAhead + kGroup <= pass.pairs) {
+      const char* sp = reinterpret_cast<const char*>(pass.spring + k + kAhead);
       __builtin_prefetch(sp);
       __builtin_prefetch(sp + 64);
       __builtin_prefetch(sp + 128);
-      __builtin_prefetch(q.first + k + kAhead);
+      __builtin_prefetch(pass.first + k + kAhead);
       if constexpr (kStepStart) {  // and so is the trapezoidal rule's step-start tangential velocity
-        const char* vp = reinterpret_cast<const char*>(q.vt0 + k + kAhead);
+        const char* vp = reinterpret_cast<const char*>(pass.vt0 + k + kAhead);
         __builtin_prefetch(vp);
         __builtin_prefetch(vp + 64);
         __builtin_prefetch(vp + 128);
@@ -265,51 +266,49 @@ PairBlockSums evaluate_block(const PairPass& q, std::size_t lo, std::size_t hi, 
     }
     // The first members' data and sums too (their index rises slowly: one group covers them).
     if (k + kAhead / 2 < k1) {
-      const std::uint32_t ia = q.first[k + kAhead / 2];
-      __builtin_prefetch(&q.x[ia]);
-      __builtin_prefetch(&q.v[ia]);
-      __builtin_prefetch(&q.w[ia]);
-      __builtin_prefetch(&q.terms[ia]);
-      __builtin_prefetch(&q.force[ia], 1);
-      __builtin_prefetch(&q.torque[ia], 1);
+      const std::uint32_t ia = pass.first[k + kAhead / 2];
+      __builtin_prefetch(&pass.x[ia]);
+      __builtin_prefetch(&pass.v[ia]);
+      __builtin_prefetch(&pass.w[ia]);
+      __builtin_prefetch(&pass.terms[ia]);
+      __builtin_prefetch(&pass.force[ia], 1);
+      __builtin_prefetch(&pass.torque[ia], 1);
     }
-    if (k + 4 * kAhead < q.pairs) __builtin_prefetch(q.idx + k + 4 * kAhead);
+    if (k + 4 * kAhead < pass.pairs) __builtin_prefetch(pass.idx + k + 4 * kAhead);
     const std::size_t cnt = std::min(kGroup, k1 - k);
 #if MPDEM_VECTOR_SELECT
-    if (q.vector_select) select_vector(q, b, k, cnt, end, c);
-    else select_scalar(q, b, k, cnt, end, c);
+    if (pass.vector_select) select_vector(pass, b, k, cnt, end, c);
+    else select_scalar(pass, b, k, cnt, end, c);
 #else
-    select_scalar(q, b, k, cnt, end, c);
+    select_scalar(pass, b, k, cnt, end, c);
 #endif
-    if (b.count + kGroup > kBatch) run<kUniform, Law, kStepStart>(q, b, out);
+    if (b.count + kGroup > kBatch) run<kUniform, Law, kStepStart>(pass, b, out);
   }
-  if (b.count > 0) run<kUniform, Law, kStepStart>(q, b, out);
+  if (b.count > 0) run<kUniform, Law, kStepStart>(pass, b, out);
   return out;
 }
 
 // One instantiation per law mix, material count (one or several) and integrator history. One
 // material has one law: no mix then.
 template <class Law>
-PairBlockSums block_for_law(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t c0, std::size_t c1) {
-  const bool step_start = q.vt0 != nullptr;
+PairBlockSums block_for_law(const PairPass& pass, std::size_t lo, std::size_t hi, std::size_t c0, std::size_t c1) {
+  const bool step_start = pass.vt0 != nullptr;
   if constexpr (!std::is_same_v<Law, MixedLaw>) {
-    if (q.uniform)
-      return step_start ? evaluate_block<true, Law, true>(q, lo, hi, c0, c1)
-                        : evaluate_block<true, Law, false>(q, lo, hi, c0, c1);
+    if (pass.uniform)
+      return step_start ? evaluate_block<true, Law, true>(pass, lo, hi, c0, c1)
+                        : evaluate_block<true, Law, false>(pass, lo, hi, c0, c1);
   }
-  return step_start ? evaluate_block<false, Law, true>(q, lo, hi, c0, c1)
-                    : evaluate_block<false, Law, false>(q, lo, hi, c0, c1);
+  return step_start ? evaluate_block<false, Law, true>(pass, lo, hi, c0, c1)
+                    : evaluate_block<false, Law, false>(pass, lo, hi, c0, c1);
 }
 
 }  // namespace
 
-PairBlockSums contact_block(const PairPass& q, std::size_t lo, std::size_t hi, std::size_t cross_first,
+PairBlockSums contact_block(const PairPass& pass, std::size_t lo, std::size_t hi, std::size_t cross_first,
                             std::size_t cross_last) {
-  if (q.uniform || q.mix != LawMix::Mixed)
-    return q.uniform_law.law == ContactLawKind::Linear || (!q.uniform && q.mix == LawMix::Linear)
-               ? block_for_law<LinearLaw>(q, lo, hi, cross_first, cross_last)
-               : block_for_law<HertzLaw>(q, lo, hi, cross_first, cross_last);
-  return block_for_law<MixedLaw>(q, lo, hi, cross_first, cross_last);
+  return with_laws(
+      pass.uniform ? LawSet{1} << pass.uniform_law.law : pass.laws_used,
+      [&]<class Law>(std::type_identity<Law>) { return block_for_law<Law>(pass, lo, hi, cross_first, cross_last); });
 }
 
 }  // namespace mpdem

@@ -68,10 +68,10 @@ struct PairPass {
   std::size_t materials = 0;              // rows of laws
   bool uniform = false;                   // every particle has one material: uniform_law for all pairs
   PairLaw uniform_law;
-  LawMix mix = LawMix::Hertz;  // the laws the table holds
-  bool rolling = false;        // some pair has rolling resistance
-  double dt = 0.0;             // s
-  double phi = 1.0;            // -
+  LawSet laws_used = 0;  // the laws the table holds (ContactTable::particle_laws)
+  bool rolling = false;  // some pair has rolling resistance
+  double dt = 0.0;       // s
+  double phi = 1.0;      // -
   int iteration = 0;
   bool commit = false;
   std::size_t n = 0;                        // particles

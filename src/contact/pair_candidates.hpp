@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "contact/laws/law_list.hpp"
 #include "contact/pair_batch.hpp"
 #include "physics/tangential.hpp"
 
@@ -38,22 +39,24 @@ struct Batch {
   double dvx[kBatch], dvy[kBatch], dvz[kBatch];  // m/s, v_i - v_j
   double wsx[kBatch], wsy[kBatch], wsz[kBatch];  // m/s, R_i w_i + R_j w_j
   double reach[kBatch];                          // m, R_i + R_j
-  double rr[kBatch], sm[kBatch];                 // m^2, 1/kg: R_i R_j, 1/m_i + 1/m_j
+  double radius_product[kBatch];                 // m^2, R_i R_j
+  double inverse_mass_sum[kBatch];               // 1/kg, 1/m_i + 1/m_j
   // The pair's law (several materials only; one material: PairPass::uniform_law).
-  ContactLawKind law[kBatch];
-  TangentialSpring form[kBatch];
-  double cn[kBatch], ct[kBatch], sr[kBatch];                               // PairLaw::cn, ct, shear_root
-  double xin[kBatch], xit[kBatch], mus[kBatch], mud[kBatch], mur[kBatch];  // -, damping, friction
+  LawId law[kBatch];
+  TangentialSpring spring_form[kBatch];
+  double coefficients[kCoefficients][kBatch];  // PairLaw::c by slot (contact/laws/), units by slot
   // Stage 1: geometry and kinematics.
   double overlap[kBatch];                        // m, 0 when apart
   double nx[kBatch], ny[kBatch], nz[kBatch];     // -, n_ij, from j to i
   double vtx[kBatch], vty[kBatch], vtz[kBatch];  // m/s, tangential relative velocity (60)
-  double r[kBatch];                              // m, r* (52)
+  double r_star[kBatch];                         // m, r* (52)
   // Stage 1: the normal half of the law.
-  double fn[kBatch];               // N, positive part of the net normal force (rolling resistance)
-  double fnet[kBatch];             // N, net normal force
-  double kt[kBatch], dtc[kBatch];  // N/m, N s/m: tangential stiffness and damping
-  double en[kBatch], pn[kBatch];   // J, W: normal spring energy, normal damping power
+  double fn_load[kBatch];               // N, max(fn_net + adhesion, 0): Coulomb's limit and rolling scale with it
+  double fn_net[kBatch];                // N, net normal force
+  double tangential_stiffness[kBatch];  // N/m, k_t
+  double tangential_damping[kBatch];    // N s/m, d_t
+  double normal_energy[kBatch];         // J, normal spring energy
+  double normal_damping[kBatch];        // W, normal dashpot power
   // Stage 2a: history.
   double s0x[kBatch], s0y[kBatch], s0z[kBatch];  // m, stored spring
   double v0x[kBatch], v0y[kBatch], v0z[kBatch];  // m/s, step-start tangential velocity (kStepStart)
@@ -66,21 +69,29 @@ struct Batch {
   double ax[kBatch], ay[kBatch], az[kBatch];  // N, n x f_t
   double energy[kBatch];                      // J, elastic energy of the contact
   double damping[kBatch];                     // W, normal dashpot power
-  double eb[kBatch];                          // J, stored spring at this step's stiffness
-  double ea[kBatch];                          // J, the new spring's energy
-  double tl[kBatch];                          // J, tangential loss of the step (ContactResult)
+  double spring_energy_before[kBatch];        // J, stored spring at this step's stiffness
+  double spring_energy_after[kBatch];         // J, the new spring's energy
+  double tangential_loss[kBatch];             // J, tangential loss of the step (ContactResult)
   // The vector stages run over whole vectors: the lanes past count repeat the last candidate
   // (gather_members, gather_history), so they compute finite values nobody reads.
   std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }
+  // Lane t's law, slot by slot (several materials).
+  PairLaw pair_law(std::size_t t) const {
+    PairLaw l;
+    l.law = law[t];
+    l.spring = spring_form[t];
+    for (std::size_t s = 0; s < kCoefficients; ++s) l.c[s] = coefficients[s][t];
+    return l;
+  }
   Vec3 normal(std::size_t t) const { return {nx[t], ny[t], nz[t]}; }
   Vec3 vt(std::size_t t) const { return {vtx[t], vty[t], vtz[t]}; }
 };
 
 // A commit forgets the history of slot k, whose pair is apart.
-inline void forget_history(const PairPass& q, std::size_t k) {
-  q.spring[k] = Vec3{};
-  if (q.vt0) q.vt0[k] = Vec3{};
-  if (q.wr0) q.wr0[k] = Vec3{};
+inline void forget_history(const PairPass& pass, std::size_t k) {
+  pass.spring[k] = Vec3{};
+  if (pass.vt0) pass.vt0[k] = Vec3{};
+  if (pass.wr0) pass.wr0[k] = Vec3{};
 }
 
 // Pass 0: selects the candidates among slots [k, k + cnt) of one block (cnt <= kGroup) into
@@ -88,15 +99,15 @@ inline void forget_history(const PairPass& q, std::size_t k) {
 // reach up to a relative margin that leaves the exact decision (overlap > 0) to stage 1; a
 // commit forgets the history of the other slots. Every slot is written, the count advances only
 // for a candidate (no data-dependent branch).
-inline void select_scalar(const PairPass& q, Batch& b, std::size_t k, std::size_t cnt, std::uint32_t end,
+inline void select_scalar(const PairPass& pass, Batch& b, std::size_t k, std::size_t cnt, std::uint32_t end,
                           std::uint32_t& c) {
   for (const std::size_t stop = k + cnt; k < stop; ++k) {
-    const std::uint32_t i = q.first[k], j = q.idx[k];
+    const std::uint32_t i = pass.first[k], j = pass.idx[k];
     const bool internal = j < end;
     const std::uint32_t cross = internal ? kInternal : c;
     c += internal ? 0u : 1u;
-    const double reach = q.terms[i].radius + q.terms[j].radius;
-    const Vec3 d = q.x[i] - q.x[j];
+    const double reach = pass.terms[i].radius + pass.terms[j].radius;
+    const Vec3 d = pass.x[i] - pass.x[j];
     const bool cand = norm2(d) <= reach * reach * kCandidateReach;
     const std::size_t t = b.count;
     b.i[t] = i;
@@ -106,11 +117,11 @@ inline void select_scalar(const PairPass& q, Batch& b, std::size_t k, std::size_
     b.dx[t] = d.x, b.dy[t] = d.y, b.dz[t] = d.z;  // kept for stage 1
     b.reach[t] = reach;
     b.count += cand;
-    if (q.commit) {
+    if (pass.commit) {
       // Only a contact that just opened has history to forget (rare): store only then.
-      const Vec3& s0 = q.spring[k];
-      const bool held = (s0.x != 0.0) | (s0.y != 0.0) | (s0.z != 0.0) | (q.vt0 != nullptr) | (q.wr0 != nullptr);
-      if (!cand & held) forget_history(q, k);
+      const Vec3& s0 = pass.spring[k];
+      const bool held = (s0.x != 0.0) | (s0.y != 0.0) | (s0.z != 0.0) | (pass.vt0 != nullptr) | (pass.wr0 != nullptr);
+      if (!cand & held) forget_history(pass, k);
     }
   }
 }
@@ -118,15 +129,15 @@ inline void select_scalar(const PairPass& q, Batch& b, std::size_t k, std::size_
 #if MPDEM_VECTOR_SELECT
 // The same selection, bit for bit, 8 slots at once: gathers of the members' centres and radii,
 // the candidates compressed into the batch, the cross numbers by expansion.
-inline void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_t cnt, std::uint32_t end,
+inline void select_vector(const PairPass& pass, Batch& b, std::size_t k, std::size_t cnt, std::uint32_t end,
                           std::uint32_t& c) {
   const __mmask8 lanes = static_cast<__mmask8>((1u << cnt) - 1u);
   const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-  const __m256i iv = _mm256_maskz_loadu_epi32(lanes, q.first + k);
-  const __m256i jv = _mm256_maskz_loadu_epi32(lanes, q.idx + k);
+  const __m256i iv = _mm256_maskz_loadu_epi32(lanes, pass.first + k);
+  const __m256i jv = _mm256_maskz_loadu_epi32(lanes, pass.idx + k);
   const __m256i i3 = _mm256_add_epi32(iv, _mm256_add_epi32(iv, iv));  // Vec3 = 3 doubles
   const __m256i j3 = _mm256_add_epi32(jv, _mm256_add_epi32(jv, jv));
-  const double* xb = &q.x[0].x;
+  const double* xb = &pass.x[0].x;
   const __m512d zero = _mm512_setzero_pd();
   const __m512d dx = _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, lanes, i3, xb, 8),
                                    _mm512_mask_i32gather_pd(zero, lanes, j3, xb, 8));
@@ -134,7 +145,7 @@ inline void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_
                                    _mm512_mask_i32gather_pd(zero, lanes, j3, xb + 1, 8));
   const __m512d dz = _mm512_sub_pd(_mm512_mask_i32gather_pd(zero, lanes, i3, xb + 2, 8),
                                    _mm512_mask_i32gather_pd(zero, lanes, j3, xb + 2, 8));
-  const double* rb = &q.terms[0].radius;  // ContactTerms = 2 doubles
+  const double* rb = &pass.terms[0].radius;  // ContactTerms = 2 doubles
   const __m512d reach = _mm512_add_pd(_mm512_mask_i32gather_pd(zero, lanes, _mm256_slli_epi32(iv, 1), rb, 8),
                                       _mm512_mask_i32gather_pd(zero, lanes, _mm256_slli_epi32(jv, 1), rb, 8));
   // norm2(d) <= reach^2 kCandidateReach in the scalar order of operations.
@@ -159,11 +170,11 @@ inline void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_
   _mm512_storeu_pd(b.dz + t, _mm512_maskz_compress_pd(cand, dz));
   _mm512_storeu_pd(b.reach + t, _mm512_maskz_compress_pd(cand, reach));
   b.count += static_cast<std::size_t>(std::popcount(static_cast<unsigned>(cand)));
-  if (!q.commit) return;
+  if (!pass.commit) return;
   // Slots apart that hold history: any non-zero spring component (vt0 / wr0: every slot apart).
   unsigned held = lanes;
-  if (!q.vt0 && !q.wr0) {
-    const double* sp = &q.spring[k].x;
+  if (!pass.vt0 && !pass.wr0) {
+    const double* sp = &pass.spring[k].x;
     const unsigned m24 = (1u << (3 * cnt)) - 1u;  // 3 doubles per slot
     const auto nonzero = [&](int part) {
       const __m512d s = _mm512_maskz_loadu_pd(static_cast<__mmask8>(m24 >> (8 * part)), sp + 8 * part);
@@ -173,7 +184,7 @@ inline void select_vector(const PairPass& q, Batch& b, std::size_t k, std::size_
     held = _pext_u32(bits | (bits >> 1) | (bits >> 2), 0x249249u);  // bit 3s of each slot s
   }
   for (unsigned stale = held & lanes & ~static_cast<unsigned>(cand); stale != 0; stale &= stale - 1)
-    forget_history(q, k + static_cast<std::size_t>(std::countr_zero(stale)));
+    forget_history(pass, k + static_cast<std::size_t>(std::countr_zero(stale)));
 }
 #endif
 

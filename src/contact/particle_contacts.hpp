@@ -5,13 +5,13 @@
 // Each pair slot k of the list holds the committed spring s [m] (the trapezoidal rule also the
 // tangential velocity at the start of the step vt0 [m/s]); only a commit evaluation updates them,
 // in place. Forces are added block by block in slot order (neighbor/pair_blocks.hpp,
-// sim/pair_batch.hpp), so totals do not depend on the thread count and f_ji = -f_ij exactly.
+// contact/pair_batch.hpp), so totals do not depend on the thread count and f_ji = -f_ij exactly.
 #include <type_traits>
 #include <cstdint>
 #include <vector>
 
 #include "contact/contact_table.hpp"
-#include "sim/interactions.hpp"
+#include "contact/eval_request.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "contact/pair_batch.hpp"
 
@@ -101,7 +101,7 @@ class ParticleContacts {
   // For tests: choose the scalar candidate selection even when the AVX-512 one is built in.
   void use_vector_select(bool on) { vector_select_ = on; }
 
-  using Terms = ContactTerms;  // per-particle values of the kernel, sim/pair_batch.hpp
+  using Terms = ContactTerms;  // per-particle values of the kernel, contact/pair_batch.hpp
 
  private:
   void ensure_history(std::size_t pairs);   // sized for the list; table_ must be current (rolling)

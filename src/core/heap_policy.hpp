@@ -5,8 +5,8 @@
 // when freed; below it, from the heap, where a freed block's pages stay resident for reuse. Its
 // default threshold grows to the size of the largest mapped block freed (up to 32 MiB), so after
 // the first rebuild every list, grid and spring array comes from the heap, and the holes a rebuild
-// leaves there raise the peak resident memory by 20-30 % of the live data. Mappings of their own
-// cost a page fault per fresh page instead (~10 us on a VM): worth it for a rebuild that comes
+// leaves there raise the peak resident memory (docs/benchmark.md). Mappings of their own
+// cost a page fault per fresh page instead: worth it for a rebuild that comes
 // rarely (a settled bed: every few hundred steps), not for one every few dozen steps (a flow),
 // where the heap's reuse is faster.
 #include <cstddef>

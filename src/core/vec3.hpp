@@ -50,7 +50,7 @@ constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
 }
 constexpr double norm2(const Vec3& a) { return dot(a, a); }
 inline double norm(const Vec3& a) { return std::sqrt(norm2(a)); }
-// & rather than &&: no branch, so loops calling it vectorise (sim/state_scan.cpp).
+// & rather than &&: no branch, so loops calling it vectorise (integrate/health_scan.cpp).
 inline bool isfinite(const Vec3& a) { return std::isfinite(a.x) & std::isfinite(a.y) & std::isfinite(a.z); }
 
 }  // namespace mpdem

@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "generate/generator.hpp"
 
 namespace mpdem {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "generate/generator.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "model/derived_limits.hpp"
 #include "model/particle_defaults.hpp"
 

@@ -2,7 +2,7 @@
 // Particles generated from a scene's `[[particles]] generate = {...}` entry, appended to the
 // scene's particle arrays with their material's properties.
 #include "model/scene.hpp"
-#include "generate/generate_spec.hpp"
+#include "model/generate_spec.hpp"
 
 namespace mpdem {
 

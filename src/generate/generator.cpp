@@ -7,8 +7,8 @@
 #include <functional>
 #include <stdexcept>
 
-#include "io/input_error.hpp"
-#include "io/value_range.hpp"
+#include "core/input_error.hpp"
+#include "core/value_range.hpp"
 #include "generate/region.hpp"
 
 namespace mpdem {

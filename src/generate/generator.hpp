@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/vec3.hpp"
-#include "generate/generate_spec.hpp"
+#include "model/generate_spec.hpp"
 
 namespace mpdem {
 

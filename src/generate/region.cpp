@@ -6,9 +6,9 @@
 #include <stdexcept>
 
 #include "io/barrier_csv.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/stl_reader.hpp"
-#include "io/value_range.hpp"
+#include "core/value_range.hpp"
 #include "model/derived_limits.hpp"
 
 namespace mpdem {

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "core/vec3.hpp"
-#include "generate/generate_spec.hpp"
+#include "model/generate_spec.hpp"
 #include "geometry/mesh_solid.hpp"
-#include "generate/random.hpp"
+#include "core/random.hpp"
 
 namespace mpdem {
 

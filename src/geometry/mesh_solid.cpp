@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "physics/triangle_closest_point.hpp"
+#include "geometry/triangle_closest_point.hpp"
 
 namespace mpdem {
 

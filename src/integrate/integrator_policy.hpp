@@ -1,6 +1,6 @@
 #pragma once
 // The step policy of the integrator a scene's [time] section selects.
-#include "integrate/step_policy.hpp"
+#include "interact/step_policy.hpp"
 #include "integrate/trapezoidal.hpp"
 #include "integrate/verlet.hpp"
 #include "model/params.hpp"

@@ -4,7 +4,7 @@
 #include <array>
 #include <cstdint>
 
-#include "sim/state_scan.hpp"
+#include "integrate/health_scan.hpp"
 
 namespace mpdem {
 
@@ -25,7 +25,7 @@ struct StepReport {
   std::int64_t worst_particle = -1;  // id of the particle with the largest last change there
   // The health scan of the end state, when the integrator fused it into its last pass.
   bool scanned = false;
-  StateScan scan;
+  HealthScan scan;
 };
 
 }  // namespace mpdem

@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "integrate/rate_history.hpp"
-#include "integrate/step_policy.hpp"
+#include "interact/step_policy.hpp"
 #include "integrate/step_report.hpp"
 #include "model/params.hpp"
 #include "model/scene.hpp"
 #include "parallel/communicator.hpp"
-#include "sim/interactions.hpp"
+#include "interact/interactions.hpp"
 
 namespace mpdem {
 

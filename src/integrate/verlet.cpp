@@ -5,7 +5,7 @@
 
 #include "core/deterministic_sum.hpp"
 #include "core/parallel.hpp"
-#include "integrate/verlet_drift.hpp"
+#include "interact/verlet_drift.hpp"
 
 namespace mpdem {
 
@@ -86,7 +86,7 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
       p.T[i] += dt * p.heat[i] / (p.mass[i] * model_.materials[static_cast<std::size_t>(p.material[i])].heat_capacity);
   }
   f.evaluate(p, b, EvalRequest{t + dt, dt, policy().phi, true});
-  // Second kick, with the health scan of the end state (sim/state_scan.hpp) and the next step's
+  // Second kick, with the health scan of the end state (integrate/health_scan.hpp) and the next step's
   // neighbour-list check (the drift of a step of the same length) in the same pass.
   const FieldParams& fields = params_.fields;
   const DomainParams& domain = params_.domain;

@@ -5,11 +5,11 @@
 // Temperature is advanced with explicit Euler.
 #include <vector>
 
-#include "integrate/step_policy.hpp"
+#include "interact/step_policy.hpp"
 #include "integrate/step_report.hpp"
 #include "model/params.hpp"
 #include "model/scene.hpp"
-#include "sim/interactions.hpp"
+#include "interact/interactions.hpp"
 
 namespace mpdem {
 

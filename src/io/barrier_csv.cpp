@@ -10,7 +10,7 @@
 
 #include "io/csv_log.hpp"
 #include "io/csv_table.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "geometry/triangle_check.hpp"
 #include "model/derived_limits.hpp"
 

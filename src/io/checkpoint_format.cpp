@@ -3,7 +3,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "io/crc32.hpp"
+#include "core/crc32.hpp"
 
 namespace mpdem {
 

@@ -7,7 +7,7 @@
 //   sections until the end of the file, each:
 //     name length (u16), name, payload length (u64), payload, CRC-32 of name and payload (u32)
 //
-// The payloads are BinaryWriter streams (io/binary_stream.hpp), native byte order.
+// The payloads are BinaryWriter streams (core/binary_stream.hpp), native byte order.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -15,11 +15,13 @@
 #include <utility>
 #include <vector>
 
-#include "io/binary_stream.hpp"
+#include "core/binary_stream.hpp"
 
 namespace mpdem {
 
-inline constexpr std::uint32_t kCheckpointFormat = 12;
+// 13: the scene fingerprint names contact laws by their list names and keys (contact/laws/), so a
+// format-12 file would fail its fingerprint with a misleading "contact laws changed".
+inline constexpr std::uint32_t kCheckpointFormat = 13;
 
 class CheckpointWriter {
  public:

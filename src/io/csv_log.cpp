@@ -1,18 +1,16 @@
 #include "io/csv_log.hpp"
 
-#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <iterator>
-#include <numeric>
 #include <ostream>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace mpdem {
 
@@ -102,70 +100,6 @@ void CsvLog::flush() {
   if (buffer_.empty()) return;
   append_complete_lines(file_, buffer_);
   buffer_.clear();
-}
-
-namespace {
-// Storage indices in ascending id order: a snapshot's rows are in the same order whatever the
-// engine's storage order (it reorders at rebuilds) and however many ranks gathered them.
-std::vector<std::size_t> ascending_ids(const Particles& p) {
-  std::vector<std::size_t> order(p.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  const auto by_id = [&p](std::size_t a, std::size_t b) { return p.id[a] < p.id[b]; };
-  if (!std::is_sorted(order.begin(), order.end(), by_id)) std::sort(order.begin(), order.end(), by_id);
-  return order;
-}
-}  // namespace
-
-void write_particles_csv(const std::filesystem::path& file, const Particles& p, double time, const Vec3& period) {
-  const bool periodic = period.x > 0.0 || period.y > 0.0 || period.z > 0.0;
-  write_file_atomically(
-      file,
-      [&](std::ostream& os) {
-        std::string line = "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed";
-        line += periodic ? ",ix,iy,iz,xu,yu,zu\n" : "\n";
-        auto num = [&line](double v) {
-          append_csv_number(line, v);
-          line += ',';
-        };
-        auto vec = [&num](const Vec3& v) {
-          num(v.x);
-          num(v.y);
-          num(v.z);
-        };
-        for (const std::size_t i : ascending_ids(p)) {
-          num(time);
-          // Ids are printed as integers directly: a double would round ids beyond 2^53.
-          char buf[24];
-          line.append(buf, std::to_chars(buf, buf + sizeof buf, p.id[i]).ptr);
-          line += ',';
-          vec(p.x[i]);
-          vec(p.v[i]);
-          vec(p.w[i]);
-          num(p.radius[i]);
-          line.append(buf, std::to_chars(buf, buf + sizeof buf, p.material[i]).ptr);
-          line += ',';
-          num(p.T[i]);
-          num(p.charge[i]);
-          vec(p.force[i]);
-          line += p.fixed[i] ? '1' : '0';  // 1: prescribed motion (a rough base, a driven plate)
-          line += ',';
-          if (periodic) {
-            const auto& im = p.image[i];
-            for (int c = 0; c < 3; ++c) {
-              line.append(buf, std::to_chars(buf, buf + sizeof buf, im[static_cast<std::size_t>(c)]).ptr);
-              line += ',';
-            }
-            vec(p.x[i] + Vec3{im[0] * period.x, im[1] * period.y, im[2] * period.z});  // m, unwrapped
-          }
-          line.back() = '\n';
-          if (line.size() >= kFlushBytes) {
-            os << line;
-            line.clear();
-          }
-        }
-        os << line;
-      },
-      Durability::kill);
 }
 
 }  // namespace mpdem

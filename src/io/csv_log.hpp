@@ -1,5 +1,6 @@
 #pragma once
-// CSV output for analysis: row-by-row logs (time series) and whole-file particle snapshots.
+// CSV logs for analysis: time series written row by row (the particle snapshots are
+// io/particle_csv_writer.hpp).
 // Numbers carry 17 significant digits so they round-trip exactly; integral values below 2^53
 // print as integers (step counts, ids, contact counts read naturally).
 #include <cstddef>
@@ -8,8 +9,6 @@
 #include <string_view>
 #include <string>
 #include <vector>
-
-#include "state/particles.hpp"
 
 namespace mpdem {
 
@@ -23,7 +22,7 @@ inline bool is_column_name(std::string_view name) {
 }
 
 // A time-series log with a fixed header. Rows are buffered and appended as whole lines
-// (io/atomic_file.hpp append_complete_lines) at every flush(), when the buffer grows large,
+// (core/atomic_file.hpp append_complete_lines) at every flush(), when the buffer grows large,
 // and in the destructor, so a killed run keeps every flushed row intact.
 class CsvLog {
  public:
@@ -53,14 +52,5 @@ class CsvLog {
   std::vector<std::string> columns_;
   std::string buffer_;
 };
-
-// Writes all particles at one time as a complete CSV file, atomically, one row per particle in
-// ascending id order (whatever their storage order). Columns:
-// time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed
-// (s, -, m, m/s, rad/s, m, -, K, C, N, -).
-// period [m]: the domain's period along its periodic axes, 0 along the others; with any periodic
-// axis the rows add the image counts ix, iy, iz and the unwrapped centre xu, yu, zu (m).
-void write_particles_csv(const std::filesystem::path& file, const Particles& particles, double time,
-                         const Vec3& period = {});
 
 }  // namespace mpdem

@@ -5,9 +5,9 @@
 #include <fstream>
 #include <limits>
 
-#include "io/closest_name.hpp"
-#include "io/input_error.hpp"
-#include "io/input_file.hpp"
+#include "core/closest_name.hpp"
+#include "core/input_error.hpp"
+#include "core/input_file.hpp"
 
 namespace mpdem {
 

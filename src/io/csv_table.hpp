@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/value_range.hpp"
+#include "core/value_range.hpp"
 
 namespace mpdem {
 

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <unordered_set>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace mpdem {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <system_error>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace mpdem {
 

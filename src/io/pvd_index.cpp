@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace mpdem {
 

@@ -5,7 +5,7 @@
 #include <ostream>
 #include <vector>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "io/vtu_writer.hpp"
 
 namespace mpdem {

@@ -4,7 +4,7 @@
 // (K = its rank: its owned particles in id order, in the layout of the one-rank VTU), and rank 0
 // the index particles/particles_NNNNNN.pvtu (a PUnstructuredGrid declaring the pieces' arrays and
 // listing the N pieces), which particles.pvd lists. Files are written atomically
-// (io/atomic_file.hpp).
+// (core/atomic_file.hpp).
 #include <cstdint>
 #include <filesystem>
 #include <string>

@@ -49,6 +49,13 @@ class Hash {
     add(v.has_value());
     if (v) add(*v);
   }
+  void add(const LawKeyValues& m) {
+    add(std::uint64_t{m.size()});
+    for (const auto& [k, v] : m) {
+      add(k);
+      add(v);
+    }
+  }
   template <class E>
   requires std::is_enum_v<E>
   void add(E e) { add(static_cast<std::int64_t>(e)); }
@@ -186,14 +193,17 @@ FingerprintPart domain_part(const DomainParams& d) {
 void law_keys(KeyedPart& k, const std::string& kind, const ContactLawParams& c) {
   const std::string s = "contact." + kind + ".";
   k.key(s + "law", c.law);
+  k.key(s + "cohesion", c.cohesion);
+  // The law's own keys as one item, labelled by the keys given ("stiffness_normal/stiffness_tangential").
+  std::string given;
+  for (const auto& [name, value] : c.law_keys) given += (given.empty() ? "" : "/") + name;
+  k.key(s + (given.empty() ? "law keys" : given), c.law_keys);
   k.key(s + "restitution", c.restitution);
   k.key(s + "damping_ratio", c.damping_ratio);
   k.key(s + "mu_static", c.mu_static);
   k.key(s + "mu_dynamic", c.mu_dynamic);
   k.key(s + "mu_rolling", c.mu_rolling);
   k.key(s + "tangential_damping", c.tangential_damping);
-  k.key(s + "stiffness_normal", c.stiffness_normal);
-  k.key(s + "stiffness_tangential", c.stiffness_tangential);
   k.key(s + "tangential_spring", c.tangential_spring);
 }
 
@@ -204,9 +214,8 @@ FingerprintPart contact_part(const ContactParams& c) {
   std::vector<std::string> labels;
   for (const ContactPairParams& e : c.pairs) {
     k.part().items.push_back(hash_of(e.material_a, e.material_b, e.particle_particle, e.particle_barrier, e.law,
-                                     e.restitution, e.damping_ratio, e.mu_static, e.mu_dynamic, e.mu_rolling,
-                                     e.tangential_damping, e.stiffness_normal, e.stiffness_tangential,
-                                     e.tangential_spring));
+                                     e.cohesion, e.law_keys, e.restitution, e.damping_ratio, e.mu_static, e.mu_dynamic,
+                                     e.mu_rolling, e.tangential_damping, e.tangential_spring));
     labels.push_back("[[contact.pair]] '" + e.material_a + "'-'" + e.material_b + "'");
   }
   return k.finish("[[contact.pair]] entries", std::move(labels));
@@ -235,6 +244,7 @@ FingerprintPart physics_part(const Params& prm) {
   k.key("thermal.conduction", th.conduction);
   k.key("thermal.convection", th.convection);
   k.key("thermal.radiation", th.radiation);
+  if (prm.fields.drag != 0.0) k.key("fields.drag", prm.fields.drag);  // keeps the others' fingerprints
   std::vector<std::string> labels;
   for (const NearFieldPair& e : nf.pairs) {
     k.part().items.push_back(hash_of(e.material_a, e.material_b, e.a1, e.b1, e.a2, e.b2));

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "io/binary_stream.hpp"
+#include "core/binary_stream.hpp"
 #include "model/scene.hpp"
 
 namespace mpdem {

@@ -15,9 +15,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "io/input_error.hpp"
-#include "io/input_file.hpp"
-#include "io/value_range.hpp"
+#include "core/input_error.hpp"
+#include "core/input_file.hpp"
+#include "core/value_range.hpp"
 #include "geometry/mesh_transform.hpp"
 #include "geometry/triangle_check.hpp"
 

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace mpdem {
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "io/closest_name.hpp"
-#include "io/input_error.hpp"
+#include "core/closest_name.hpp"
+#include "core/input_error.hpp"
 
 namespace mpdem {
 
@@ -25,6 +25,10 @@ std::string type_name(const toml::node& n) {
 
 TomlSection::TomlSection(const std::string& file, const toml::table& table, std::string path,
                          std::initializer_list<std::string_view> known)
+    : TomlSection(file, table, std::move(path), std::span<const std::string_view>(known.begin(), known.size())) {}
+
+TomlSection::TomlSection(const std::string& file, const toml::table& table, std::string path,
+                         std::span<const std::string_view> known)
     : file_(&file), table_(&table), path_(std::move(path)) {
   for (auto&& [k, v] : table) {
     bool ok = false;
@@ -192,6 +196,10 @@ std::optional<std::vector<std::array<double, 2>>> TomlSection::number_pairs(std:
 }
 
 std::optional<TomlSection> TomlSection::table(std::string_view k, std::initializer_list<std::string_view> known) const {
+  return table(k, std::span<const std::string_view>(known.begin(), known.size()));
+}
+
+std::optional<TomlSection> TomlSection::table(std::string_view k, std::span<const std::string_view> known) const {
   const toml::node* n = node(k);
   if (!n) return std::nullopt;
   const auto* t = n->as_table();
@@ -200,6 +208,10 @@ std::optional<TomlSection> TomlSection::table(std::string_view k, std::initializ
 }
 
 std::vector<TomlSection> TomlSection::tables(std::string_view k, std::initializer_list<std::string_view> known) const {
+  return tables(k, std::span<const std::string_view>(known.begin(), known.size()));
+}
+
+std::vector<TomlSection> TomlSection::tables(std::string_view k, std::span<const std::string_view> known) const {
   std::vector<TomlSection> out;
   const toml::node* n = node(k);
   if (!n) return out;

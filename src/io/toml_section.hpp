@@ -10,13 +10,14 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <span>
 #include <string_view>
 #include <vector>
 
 #include <toml++/toml.h>
 
 #include "core/vec3.hpp"
-#include "io/value_range.hpp"
+#include "core/value_range.hpp"
 
 namespace mpdem {
 
@@ -25,6 +26,8 @@ class TomlSection {
   // `path` is the dotted name of the table ("" for the root, "contact.particle_particle").
   TomlSection(const std::string& file, const toml::table& table, std::string path,
               std::initializer_list<std::string_view> known);
+  TomlSection(const std::string& file, const toml::table& table, std::string path,
+              std::span<const std::string_view> known);
 
   const std::string& file() const { return *file_; }
   std::size_t line() const;                   // line of the table itself
@@ -50,8 +53,10 @@ class TomlSection {
   std::optional<std::vector<std::array<double, 2>>> number_pairs(std::string_view k) const;
   // Sub-table (standard or inline); "expected a table" when k holds anything else.
   std::optional<TomlSection> table(std::string_view k, std::initializer_list<std::string_view> known) const;
+  std::optional<TomlSection> table(std::string_view k, std::span<const std::string_view> known) const;
   // Array of tables ([[k]]); "expected an array of tables [[k]]" otherwise. Empty when absent.
   std::vector<TomlSection> tables(std::string_view k, std::initializer_list<std::string_view> known) const;
+  std::vector<TomlSection> tables(std::string_view k, std::span<const std::string_view> known) const;
 
   // Assign-if-present forms, so a default stays in place when the key is absent.
   void get(std::string_view k, double& out, Range r = kAnyValue) const;

@@ -8,9 +8,11 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
+#include "state/particle_columns.hpp"
 
 namespace mpdem {
 
@@ -54,32 +56,56 @@ void close_unstructured_piece(VtkXmlDocument& d) {
 
 namespace {
 
-// The particle point arrays; write_particles_vtu writes each by its index here, in this order.
-enum ParticleArray : std::size_t {
-  kId,
-  kRadius,
-  kMaterial,
-  kFixed,
-  kVelocity,
-  kAngularVelocity,
-  kForce,
-  kTemperature,
-  kCharge,
-  kOrientation,
-  kParticleArrayCount
-};
-constexpr std::array<VtuArray, kParticleArrayCount> kParticleArrays{{
-    {"id", "Int64", 0},                  // -
-    {"radius", "Float64", 0},            // m
-    {"material", "Int32", 0},            // index into the scene's materials
-    {"fixed", "UInt8", 0},               // 1: prescribed motion
-    {"velocity", "Float64", 3},          // m/s
-    {"angular_velocity", "Float64", 3},  // rad/s
-    {"force", "Float64", 3},             // N
-    {"temperature", "Float64", 0},       // K
-    {"charge", "Float64", 0},            // C
-    {"orientation", "Float64", 4},       // unit quaternion (w, x, y, z), body -> world
-}};
+// The VTK type of an array's scalars; nullptr for a type the VTU does not write.
+template <class T>
+constexpr const char* vtk_type() {
+  if constexpr (std::is_same_v<T, std::int64_t>) return "Int64";
+  else if constexpr (std::is_same_v<T, std::int32_t>) return "Int32";
+  else if constexpr (std::is_same_v<T, std::uint8_t>) return "UInt8";
+  else if constexpr (std::is_same_v<T, double> || std::is_same_v<T, Vec3> || std::is_same_v<T, Quat>) return "Float64";
+  else return nullptr;
+}
+
+// A column's declaration: its name, type and components (0 for a scalar: no NumberOfComponents).
+template <class C>
+constexpr VtuArray declaration(const C& c) {
+  using T = typename C::Value;
+  return {c.name, vtk_type<T>(), c.components == 1 ? 0 : static_cast<int>(c.components)};
+}
+
+// The table's VTU slots are 0 .. n-1, each once, on columns of a type the VTU writes, and one
+// column is the Points (3 doubles).
+constexpr std::size_t vtu_array_count() {
+  std::size_t n = 0;
+  for_each_particle_column([&n](const auto& c) { n += c.vtu >= 0 ? 1 : 0; });
+  return n;
+}
+constexpr bool vtu_slots_valid() {
+  bool ok = true;
+  int points = 0;
+  for (std::size_t slot = 0; slot < vtu_array_count(); ++slot) {
+    int holders = 0;
+    for_each_particle_column([&](const auto& c) { holders += c.vtu == static_cast<int>(slot) ? 1 : 0; });
+    ok = ok && holders == 1;
+  }
+  for_each_particle_column([&](const auto& c) {
+    using T = typename std::decay_t<decltype(c)>::Value;
+    if (c.vtu >= 0) ok = ok && vtk_type<T>() != nullptr;
+    if (c.vtu == kVtuPointsSlot) points += std::is_same_v<T, Vec3> ? 1 : 2;
+  });
+  return ok && points == 1;
+}
+static_assert(vtu_slots_valid(), "particle_columns.hpp: VTU slots must be 0 .. n-1, each once, and one Points column");
+
+// The particle point arrays in file order (their slots).
+constexpr std::array<VtuArray, vtu_array_count()> particle_arrays_in_slot_order() {
+  std::array<VtuArray, vtu_array_count()> out{};
+  for_each_particle_column([&out](const auto& c) {
+    if (c.vtu >= 0) out[static_cast<std::size_t>(c.vtu)] = declaration(c);
+  });
+  return out;
+}
+constexpr auto kParticleArrays = particle_arrays_in_slot_order();
 
 }  // namespace
 
@@ -95,24 +121,24 @@ void write_particles_vtu(const std::filesystem::path& file, const Particles& p, 
                          const VtuOptions& options) {
   const std::size_t n = p.size();  // the owned particles: ghosts (periodic images) are not written
   const auto owned = [n](const auto& a) { return std::span(a.data(), n); };
-  const auto& a = kParticleArrays;  // names, types, units
   VtkXmlDocument d(options.format, "UnstructuredGrid");
   open_unstructured_piece(d, time, n, n, "material:", options.material_names);
   d.text(
       fmt::format("      <PointData Scalars=\"{}\" Vectors=\"{}\">\n", kParticleActiveScalars, kParticleActiveVectors));
-  d.array(a[kId], owned(p.id));
-  d.array(a[kRadius], owned(p.radius));
-  d.array(a[kMaterial], owned(p.material));
-  d.array(a[kFixed], owned(p.fixed));
-  d.array(a[kVelocity], owned(p.v));
-  d.array(a[kAngularVelocity], owned(p.w));
-  d.array(a[kForce], owned(p.force));
-  d.array(a[kTemperature], owned(p.T));
-  d.array(a[kCharge], owned(p.charge));
-  d.array(a[kOrientation], owned(p.q));
+  // Each column by its slot; the table is short, so a scan per slot.
+  for (std::size_t slot = 0; slot < kParticleArrays.size(); ++slot)
+    for_each_particle_column([&](const auto& c) {
+      if (c.vtu == static_cast<int>(slot)) {
+        if constexpr (vtk_type<typename std::decay_t<decltype(c)>::Value>() != nullptr)
+          d.array(kParticleArrays[slot], owned(p.*c.array));
+      }
+    });
   d.text("      </PointData>\n"
          "      <Points>\n");
-  d.array(kVtuPoints, owned(p.x));  // m, centres
+  for_each_particle_column([&](const auto& c) {
+    if constexpr (std::is_same_v<typename std::decay_t<decltype(c)>::Value, Vec3>)
+      if (c.vtu == kVtuPointsSlot) d.array(kVtuPoints, owned(p.*c.array));  // m, centres
+  });
   d.text("      </Points>\n");
   separate_cells(d, n, 1, kVtkVertex);
   close_unstructured_piece(d);

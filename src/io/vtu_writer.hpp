@@ -2,7 +2,7 @@
 // ParaView snapshots as VTK XML UnstructuredGrid (.vtu) files in the [output] format
 // (io/vtk_xml.hpp: ASCII with 17 significant digits, raw or zlib-compressed appended binary;
 // every double round-trips bit for bit in each). Files are written atomically
-// (io/atomic_file.hpp). Array names, component order and units are listed in docs/output.md.
+// (core/atomic_file.hpp). Array names, component order and units are listed in docs/output.md.
 #include <filesystem>
 #include <span>
 #include <string>

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "io/value_range.hpp"
+#include "core/value_range.hpp"
 #include "physics/hertz.hpp"
 #include "physics/tangential.hpp"
 #include "physics/time_step_estimate.hpp"

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace mpdem {
 

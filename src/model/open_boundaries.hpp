@@ -1,6 +1,6 @@
 #pragma once
 // Open-system boundaries of a scene (docs/scene.md "[[inlet]]" and "[[sink]]"): inlets insert
-// particles during the run, sinks take them out. Plain data, read by io/inlet_reader.cpp and
+// particles during the run, sinks take them out. Plain data, read by scene/inlet_reader.cpp and
 // acted on between steps by sim/inlets.hpp and sim/sinks.hpp.
 #include <cstddef>
 #include <cstdint>
@@ -8,8 +8,8 @@
 #include <string>
 
 #include "core/vec3.hpp"
-#include "generate/generate_spec.hpp"
-#include "generate/radius_distribution.hpp"
+#include "model/generate_spec.hpp"
+#include "model/radius_distribution.hpp"
 
 namespace mpdem {
 

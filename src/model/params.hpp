@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -60,6 +61,7 @@ struct FieldParams {
   Vec3 gravity{0.0, 0.0, -9.81};  // m/s^2
   Vec3 electric{};                // V/m, uniform E
   Vec3 magnetic{};                // T, uniform B
+  double drag = 0.0;              // N s/m, viscous drag -c v on every particle that is not fixed
 };
 
 // Empirical near-field law f = (a1 d^-b1 - a2 d^-b2) n for one material pair (46).
@@ -80,9 +82,9 @@ struct NearFieldParams {
   double cutoff = 0.0;               // m, range of both laws (0 = near field off)
 };
 
-// The force law of a contact (docs/contact_model.md): Hertz-Mindlin (physics.md sections 5-6) or
-// the linear spring-dashpot with a Coulomb-capped tangential spring (section 13).
-enum class ContactLawKind : std::int64_t { Hertz, Linear };
+// The laws' own scene keys as given (docs/scene.md "Contact laws"), by name: the law's header
+// (contact/laws/) states their units, ranges and defaults.
+using LawKeyValues = std::map<std::string, double, std::less<>>;
 // How the tangential spring follows a changing stiffness (physics.md section 6): the thesis's total
 // spring f_t = -k_t(delta) s, or Mindlin's incremental df_t = -k_t(delta) ds (Yade, Kratos).
 enum class TangentialSpring : std::int64_t { Total, Incremental };
@@ -90,7 +92,10 @@ enum class TangentialSpring : std::int64_t { Total, Incremental };
 // Coefficients of one contact kind (particle-particle or particle-barrier): the defaults of
 // every pair of materials.
 struct ContactLawParams {
-  ContactLawKind law = ContactLawKind::Hertz;
+  // The law, by the scene keys that select it in contact/laws/law_list.hpp.
+  std::string law = "hertz";
+  std::string cohesion = "none";
+  LawKeyValues law_keys;
   std::optional<double> restitution;    // e in [kMinRestitution, 1]; calibrated damping (physics.md 5 Departure)
   std::optional<double> damping_ratio;  // xi_n >= 0 used as written in (50); exclusive with e
   double mu_static = 0.5;               // -, static Coulomb coefficient
@@ -99,8 +104,6 @@ struct ContactLawParams {
   // xi_t, tangential damping ratio (67); unset: the normal ratio xi_n (calibrated from the
   // restitution, or damping_ratio), as LIGGGHTS and Kratos damp the tangential spring.
   std::optional<double> tangential_damping;
-  double stiffness_normal = 0.0;               // N/m, k_n of the linear law (required for it, > 0)
-  std::optional<double> stiffness_tangential;  // N/m, k_t of the linear law (default 2/7 k_n)
   TangentialSpring tangential_spring = TangentialSpring::Total;
 };
 
@@ -110,9 +113,9 @@ struct ContactPairParams {
   std::string material_a, material_b;
   bool particle_particle = true;  // applies to particle-particle contacts
   bool particle_barrier = true;   // applies to particle-barrier contacts
-  std::optional<ContactLawKind> law;
+  std::optional<std::string> law, cohesion;
+  LawKeyValues law_keys;  // replace the defaults' values key by key
   std::optional<double> restitution, damping_ratio, mu_static, mu_dynamic, mu_rolling, tangential_damping;
-  std::optional<double> stiffness_normal, stiffness_tangential;
   std::optional<TangentialSpring> tangential_spring;
   std::size_t line = 0;  // line of the entry, for messages
 };
@@ -139,7 +142,7 @@ struct DomainParams {
   Vec3 min{}, max{};     // m, axis-aligned box
   ExitPolicy on_exit = ExitPolicy::Stop;
   // Axes (x, y, z) along which the domain is periodic, with period max - min: particles leaving
-  // through those faces come back through the opposite ones (neighbor/periodic_images.hpp).
+  // through those faces come back through the opposite ones (parallel/periodic_images.hpp).
   std::array<bool, 3> periodic{};
   std::size_t periodic_line = 0;  // line of domain.periodic in the scene file, for messages (0 = none)
   bool any_periodic() const { return periodic[0] || periodic[1] || periodic[2]; }

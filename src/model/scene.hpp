@@ -12,7 +12,7 @@
 #include "state/barriers.hpp"
 #include "state/motion_law.hpp"
 #include "state/particles.hpp"
-#include "generate/generate_spec.hpp"
+#include "model/generate_spec.hpp"
 
 namespace mpdem {
 
@@ -60,18 +60,5 @@ struct Scene {
   Particles particles;
   Barriers barriers;
 };
-
-// Parses a TOML scene (parameters, materials, sources) without reading the sources.
-// Throws InputError naming file, line and key for every problem.
-Scene parse_scene_file(const std::filesystem::path& file);
-// parse_scene_file + reads every particle and barrier source into the scene's arrays.
-Scene load_scene(const std::filesystem::path& file);
-// The same for a scene given as text (the Python module's scenes): `file` stands for the scene
-// file (relative paths and the output folder resolve against its folder; it need not exist) and
-// `name` is what messages call it.
-Scene parse_scene_text(const std::string& text, const std::filesystem::path& file, const std::string& name);
-Scene load_scene_text(const std::string& text, const std::filesystem::path& file, const std::string& name);
-// Reads every particle and barrier source of a parsed scene into its arrays.
-Scene load_sources(Scene scene);
 
 }  // namespace mpdem

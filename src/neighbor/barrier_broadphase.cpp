@@ -4,7 +4,7 @@
 #include "neighbor/cell_grid.hpp"  // kNeighborParallelMin
 #include "neighbor/csr_compaction.hpp"
 #include "neighbor/csr_offsets.hpp"
-#include "physics/triangle_closest_point.hpp"
+#include "geometry/triangle_closest_point.hpp"
 
 #include <omp.h>
 

@@ -9,10 +9,10 @@
 #include <span>
 #include <vector>
 
-#include "io/binary_stream.hpp"
+#include "core/binary_stream.hpp"
 #include "neighbor/barrier_broadphase.hpp"
 #include "neighbor/pair_blocks.hpp"
-#include "neighbor/periodic_images.hpp"
+#include "parallel/periodic_images.hpp"
 #include "neighbor/verlet_list.hpp"
 #include "parallel/halo_exchange.hpp"
 #include "state/barriers.hpp"

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <unordered_map>
 
-#include "neighbor/periodic_images.hpp"
+#include "parallel/periodic_images.hpp"
 #include "parallel/particle_buffer.hpp"
 
 namespace mpdem {

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "core/vec3.hpp"
-#include "physics/triangle_closest_point.hpp"
+#include "geometry/triangle_closest_point.hpp"
 #include "state/barrier_topology.hpp"
 #include "state/barriers.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Near-field (non-contact) forces between two particles (physics.md section 4, thesis (44)-(46)).
-// Pure, allocation-free functions; the pair loop in src/sim/near_field_forces.cpp calls them.
+// Pure, allocation-free functions; the pair loop in src/field/near_field_forces.cpp calls them.
 //
 // Sign convention: each law returns the scalar coefficient of n_ij = (x_i - x_j)/d; a positive
 // value pushes i away from j (repulsion), and j gets the opposite force (Newton's third law).

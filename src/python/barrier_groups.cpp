@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace mpdem::python {
 

@@ -10,11 +10,12 @@
 #include <cmath>
 
 #include "check/scene_checks.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "python/barrier_groups.hpp"
 #include "python/particle_arrays.hpp"
 #include "python/py_simulation.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace py = pybind11;
 using namespace mpdem;
@@ -139,4 +140,5 @@ PYBIND11_MODULE(_core, m) {
           py::arg("name"), py::arg("values"), py::arg("ids") = py::none());
   m.attr("particle_arrays") = python::particle_array_names();
   m.attr("settable_arrays") = python::settable_array_names();
+  m.attr("particle_array_docs") = python::particle_array_docs();
 }

@@ -4,11 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
+#include <string_view>
+#include <type_traits>
 #include <stdexcept>
 #include <unordered_map>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
+#include "state/particle_columns.hpp"
 
 namespace mpdem::python {
 
@@ -22,27 +26,18 @@ std::vector<std::size_t> id_order(const Particles& p) {
   return order;
 }
 
-// f(array) with the engine's array of a Python name; false for an unknown name.
+// f(array) with the engine's array of a Python name (state/particle_columns.hpp); false for an
+// unknown name.
 template <class F>
 bool with_array(Particles& p, const std::string& name, F&& f) {
-  if (name == "position") f(p.x);
-  else if (name == "velocity") f(p.v);
-  else if (name == "angular_velocity") f(p.w);
-  else if (name == "force") f(p.force);
-  else if (name == "torque") f(p.torque);
-  else if (name == "orientation") f(p.q);
-  else if (name == "radius") f(p.radius);
-  else if (name == "mass") f(p.mass);
-  else if (name == "inertia") f(p.inertia);
-  else if (name == "temperature") f(p.T);
-  else if (name == "charge") f(p.charge);
-  else if (name == "heat") f(p.heat);
-  else if (name == "id") f(p.id);
-  else if (name == "material") f(p.material);
-  else if (name == "fixed") f(p.fixed);
-  else if (name == "image") f(p.image);
-  else return false;
-  return true;
+  bool found = false;
+  for_each_particle_column([&](const auto& c) {
+    if (!found && name == c.name) {
+      f(p.*c.array);
+      found = true;
+    }
+  });
+  return found;
 }
 
 [[noreturn]] void unknown(const std::string& name) {
@@ -100,11 +95,32 @@ void check_values(const Particles& p, const std::string& name,
 }  // namespace
 
 std::vector<std::string> particle_array_names() {
-  return {"id",   "position", "velocity",    "angular_velocity", "orientation", "force",    "torque", "radius",
-          "mass", "inertia",  "temperature", "charge",           "heat",        "material", "fixed",  "image"};
+  std::vector<std::string> out;
+  for_each_particle_column([&out](const auto& c) { out.emplace_back(c.name); });
+  return out;
 }
 
-std::vector<std::string> settable_array_names() { return {"position", "velocity", "angular_velocity", "temperature"}; }
+std::vector<std::string> settable_array_names() {
+  std::vector<std::string> out;
+  for_each_particle_column([&out](const auto& c) {
+    if (c.settable) out.emplace_back(c.name);
+  });
+  return out;
+}
+
+std::map<std::string, std::string> particle_array_docs() {
+  std::map<std::string, std::string> out;
+  for_each_particle_column([&out](const auto& c) {
+    using T = typename std::decay_t<decltype(c)>::Value;
+    using S = typename Layout<T>::Scalar;
+    const std::string shape = c.components == 1 ? "(N,)" : fmt::format("(N, {})", c.components);
+    std::string dtype = py::str(py::dtype::of<S>());
+    std::string doc = shape + (std::is_same_v<S, double> ? "" : " " + dtype);
+    if (std::string_view(c.unit) != "-") doc += std::string(" ") + c.unit;
+    out[c.name] = doc + ", " + c.about;
+  });
+  return out;
+}
 
 py::array id_ordered(const Particles& p, const std::string& name) {
   const std::vector<std::size_t> order = id_order(p);

@@ -5,6 +5,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -14,8 +15,11 @@ namespace mpdem::python {
 
 namespace py = pybind11;
 
+// The arrays' names, the settable ones, and name -> docstring ("(N, 3) N m, total torque ..."):
+// all from the particle column table (state/particle_columns.hpp).
 std::vector<std::string> particle_array_names();
 std::vector<std::string> settable_array_names();
+std::map<std::string, std::string> particle_array_docs();
 // A copy of array `name` in ascending id order: shape (N,) or (N, 3) ((N, 4) for orientation).
 py::array id_ordered(const Particles& p, const std::string& name);
 // A read-only view of array `name` in storage order, valid until the next step; `owner` is kept

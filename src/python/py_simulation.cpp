@@ -7,14 +7,14 @@
 #include <cmath>
 #include <limits>
 
-#include "io/global_log.hpp"
-#include "io/input_error.hpp"
+#include "output/global_log.hpp"
+#include "core/input_error.hpp"
 #include "io/output_folder.hpp"
 #include "model/derived_limits.hpp"
 #include "model/particle_defaults.hpp"
 #include "parallel/communicator.hpp"
 #include "python/particle_arrays.hpp"
-#include "sim/contact_list.hpp"
+#include "output/contact_list.hpp"
 
 namespace mpdem::python {
 

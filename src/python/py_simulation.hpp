@@ -56,7 +56,7 @@ class PySimulation {
                  const py::array_t<double, py::array::c_style | py::array::forcecast>& force,
                  const py::array_t<double, py::array::c_style | py::array::forcecast>& torque);
   void clear_loads() { sim_->interactions().external_loads().clear(); }
-  // The contact list of the last evaluation as numpy arrays (sim/contact_list.hpp); recording of
+  // The contact list of the last evaluation as numpy arrays (output/contact_list.hpp); recording of
   // the pair contacts is switched on by record_contacts(true) before the steps it is wanted for.
   py::dict contacts() const;
   void record_contacts(bool on);

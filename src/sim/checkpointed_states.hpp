@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "io/binary_stream.hpp"
+#include "core/binary_stream.hpp"
 
 namespace mpdem {
 

@@ -9,11 +9,11 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "generate/random.hpp"
+#include "core/random.hpp"
 #include "model/particle_defaults.hpp"
 #include "sim/checkpointed_states.hpp"
 #include "sim/insertion_space.hpp"
-#include "sim/state_scan.hpp"
+#include "integrate/health_scan.hpp"
 
 namespace mpdem {
 
@@ -124,7 +124,7 @@ Particles Inlets::insert(double t, const Particles& p, const Barriers& b) {
     s.next_k = k + 1;
   }
   if (fresh.size() > 0) {
-    const StateScan e = scan_state(fresh, model_.params.fields, DomainParams{});
+    const HealthScan e = scan_state(fresh, model_.params.fields, DomainParams{});
     inserted_energy_ += e.energy.kinetic + e.energy.rotational + e.energy.potential + e.electric;
   }
   return fresh;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "physics/triangle_closest_point.hpp"
+#include "geometry/triangle_closest_point.hpp"
 
 namespace mpdem {
 

@@ -11,16 +11,16 @@
 #include "integrate/adaptive_step.hpp"
 #include "integrate/integrator_policy.hpp"
 #include "model/material_variants.hpp"
-#include "sim/energy.hpp"
-#include "io/atomic_file.hpp"
-#include "io/output_manager.hpp"
+#include "integrate/energy_balance.hpp"
+#include "core/atomic_file.hpp"
+#include "output/output_manager.hpp"
 #include "contact/particle_contacts.hpp"
-#include "io/progress.hpp"
+#include "output/progress.hpp"
 #include "parallel/gather.hpp"
-#include "io/input_error.hpp"
-#include "sim/analysis_outputs.hpp"
+#include "core/input_error.hpp"
+#include "output/analysis_outputs.hpp"
 #include "sim/inlets.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
 #include "sim/sinks.hpp"
 #include "sim/stop_signal.hpp"
 
@@ -38,6 +38,13 @@ Scene& with_materials_by_index(Scene& scene) {
   resolve_material_variants(scene.model, scene.particles, scene.barriers, scene.file.string());
   return scene;
 }
+// The log's inlet and sink columns, in GlobalLogRow::open_system's order.
+std::vector<std::string> open_system_log_columns(const Params& prm) {
+  std::vector<std::string> c = Inlets::log_columns(prm);
+  for (std::string& s : Sinks::log_columns(prm)) c.push_back(std::move(s));
+  return c;
+}
+
 }  // namespace
 
 Simulation::Simulation(Scene&& scene, RunOptions options)
@@ -64,7 +71,7 @@ void Simulation::initialize() {
   ++evaluations_;
   initialized_ = true;
   const Params& prm = scene_.model.params;
-  const StepTotals& t = reduce_step(scan_state(scene_.particles, prm.fields, prm.domain), -1.0);
+  const StepCollective& t = reduce_step(scan_state(scene_.particles, prm.fields, prm.domain), -1.0);
   check_energy(t.scan);  // the reference for the first step
   record_state(t.scan);  // the start of the run's drift
   record_overlap(t.deepest);
@@ -155,15 +162,12 @@ StepReport Simulation::advance_adaptive(double limit) {
   }
 }
 
-double Simulation::energy_balance(const StateScan& s) const {
-  const InteractionStats& st = stats();
+double Simulation::energy_balance(const HealthScan& s) const {
   const double inserted = inlets_ ? inlets_->inserted_energy() : 0.0;  // J, what inlets brought in
-  return -inserted + s.energy.kinetic + s.energy.rotational + s.energy.potential + s.electric + st.elastic_energy +
-         st.damping_dissipated + st.friction_dissipated + record_.removed_energy - st.barrier_work - st.fixed_work -
-         st.external_work;
+  return mpdem::energy_balance(s.energy, s.electric, stats(), BalanceScope{false, inserted, record_.removed_energy});
 }
 
-void Simulation::record_state(const StateScan& s) {
+void Simulation::record_state(const HealthScan& s) {
   const double balance = energy_balance(s);
   const double active = s.energy.kinetic + s.energy.rotational + stats().elastic_energy;
   if (!record_.started) {
@@ -186,8 +190,8 @@ void Simulation::check_state(const StepReport& rep, double h) {
   Particles& p = scene_.particles;
   const Params& prm = scene_.model.params;
   // One pass (or none, when the integrator fused it into its own); culprits searched only if needed.
-  const StepTotals& totals = reduce_step(rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain), h);
-  const StateScan scan = totals.scan;
+  const StepCollective& totals = reduce_step(rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain), h);
+  const HealthScan scan = totals.scan;
   const OverlapReport deepest = totals.deepest;
   if (scan.nonfinite > 0 && comm_) {
     const auto [id, rank] = first_nonfinite();
@@ -234,7 +238,7 @@ std::vector<std::pair<std::string, double>> Simulation::log_values() const {
     Sinks copy = *sinks_;
     copy.log_values(time_, row.open_system);
   }
-  const GlobalLogLayout layout(scene_.model, scene_.barriers);
+  const GlobalLogLayout layout(scene_.model, scene_.barriers, open_system_log_columns(scene_.model.params));
   const std::vector<double> v = layout.values(row, totals(), stats());
   std::vector<std::pair<std::string, double>> out;
   for (std::size_t k = 0; k < v.size(); ++k) out.emplace_back(layout.columns()[k], v[k]);
@@ -267,9 +271,9 @@ void Simulation::start() {
   const Params& prm = scene_.model.params;
   const bool out = options_.write_output;  // on every rank; rank 0 writes, the others their particle pieces
   if (out && root()) {
-    output_ = std::make_unique<OutputManager>(scene_.model, output_dir_for(scene_, options_), scene_.barriers,
-                                              resumed_ ? std::optional<double>(time_) : std::nullopt,
-                                              comm_ ? comm_->size() : 1);
+    output_ = std::make_unique<OutputManager>(
+        scene_.model, output_dir_for(scene_, options_), scene_.barriers, open_system_log_columns(prm),
+        resumed_ ? std::optional<double>(time_) : std::nullopt, comm_ ? comm_->size() : 1);
     if (!resume_output_state_.empty()) {
       BinaryReader r(resume_output_state_.data(), resume_output_state_.size());
       output_->restore(r);
@@ -346,7 +350,7 @@ void Simulation::step(double end) {
     flush_outputs();
   }
   if (!options_.stop_on_signal) return;
-  if (const int sig = comm_ ? step_totals_.stop : stop_signal()) {
+  if (const int sig = comm_ ? step_collective_.stop : stop_signal()) {
     std::filesystem::path ck;
     if (out) {
       ck = dir / "checkpoint.bin";

@@ -14,12 +14,12 @@
 #include "integrate/verlet.hpp"
 #include "io/scene_fingerprint.hpp"
 #include "model/scene.hpp"
-#include "sim/energy.hpp"
-#include "sim/run_record.hpp"
-#include "sim/state_scan.hpp"
-#include "sim/step_totals.hpp"
+#include "integrate/energy_balance.hpp"
+#include "sim/run_summary.hpp"
+#include "integrate/health_scan.hpp"
+#include "sim/step_collective.hpp"
 #include "parallel/communicator.hpp"
-#include "sim/interactions.hpp"
+#include "interact/interactions.hpp"
 
 namespace mpdem {
 
@@ -100,7 +100,7 @@ class Simulation {
   // `limit` caps the step (to land exactly on the end time).
   StepReport advance_adaptive(double limit);
   double current_dt() const { return dt_; }
-  // Checkpoints (sim/checkpoint.cpp): write the full state; resume before run() (throws InputError
+  // Checkpoints (sim/simulation_checkpoint.cpp): write the full state; resume before run() (throws InputError
   // for a file that is not a checkpoint of this scene).
   void write_checkpoint(const std::filesystem::path& file);
   void resume_from(const std::filesystem::path& file);
@@ -120,7 +120,7 @@ class Simulation {
  private:
   // NaN / infinity, energy jumps, domain exits after a step of h (s).
   void check_state(const StepReport& rep, double h);
-  void check_energy(const StateScan& s);
+  void check_energy(const HealthScan& s);
   void check_overlap(const OverlapReport& r);  // r: the deepest contact over all ranks
   struct Fastest {
     double v2 = 0.0;  // m^2/s^2, squared speed
@@ -129,7 +129,7 @@ class Simulation {
   };
   // The k fastest particles over all ranks, fastest first (collective).
   std::vector<Fastest> fastest(std::size_t k) const;
-  void record_state(const StateScan& s);        // the balance and active energy into record_
+  void record_state(const HealthScan& s);       // the balance and active energy into record_
   void record_overlap(const OverlapReport& r);  // r into record_ when it is the deepest yet
   void remove_outside();                        // domain.on_exit: stop or remove
   void remove_in_sinks();                       // [[sink]]: the particles in a sink, between steps
@@ -144,15 +144,15 @@ class Simulation {
   void summarise_open_system(RunSummary& sum) const;  // its totals for the end-of-run verdict
   // J, mechanical energy + cumulative dissipation + what removed particles took along, from the
   // scan of the particles.
-  double energy_balance(const StateScan& s) const;
+  double energy_balance(const HealthScan& s) const;
 
   // --- several ranks (simulation_decomposed.cpp) ---
   void decompose(const Communicator& comm);  // keeps this rank's particles, splits the work
-  // The totals after a step over all ranks (sim/step_totals.hpp; one collective on several
+  // The totals after a step over all ranks (sim/step_collective.hpp; one collective on several
   // ranks, this rank's own on one), kept for stats() and particle_count(): the interaction
   // statistics, the particle count, the scan (this rank's: s) and the deepest contact; on several
   // ranks also the stop signal and the particle snapshots due after a step of h (s; h < 0: none).
-  const StepTotals& reduce_step(const StateScan& s, double h);
+  const StepCollective& reduce_step(const HealthScan& s, double h);
   // The statistics of the last evaluation over all ranks (as of the last reduce_step).
   const InteractionStats& stats() const;
   // Every rank's particles in id order on rank 0 (collective; empty on the other ranks).
@@ -167,7 +167,7 @@ class Simulation {
   // every rank (collective), and the particles of `fresh` this rank's brick holds.
   Particles near_inlets();
   void keep_own(Particles& fresh) const;
-  std::size_t particle_count() const { return comm_ ? step_totals_.particles : scene_.particles.size(); }
+  std::size_t particle_count() const { return comm_ ? step_collective_.particles : scene_.particles.size(); }
   void snapshots(double h, bool force);  // the snapshot outputs due after a step of h (s)
   // The lowest id of a particle with a non-finite state and the rank holding it, on every rank
   // (collective); id -1 if none.
@@ -180,8 +180,8 @@ class Simulation {
   Scene scene_;
   RunOptions options_;
   const Communicator* comm_ = nullptr;  // several ranks; null in a one-rank run
-  StepTotals step_totals_;              // the last reduce_step()'s
-  // s, the time and step length of the particle snapshot decision in step_totals_ (h < 0: none).
+  StepCollective step_collective_;      // the last reduce_step()'s
+  // s, the time and step length of the particle snapshot decision in step_collective_ (h < 0: none).
   double snapshots_time_ = 0.0, snapshots_h_ = -1.0;
   std::unique_ptr<Interactions> interactions_;
   TrapezoidalIntegrator trapezoidal_;

@@ -8,12 +8,12 @@
 
 #include "contact/particle_contacts.hpp"
 #include "parallel/gather.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
 #include "sim/simulation.hpp"
 
 namespace mpdem {
 
-void Simulation::check_energy(const StateScan& s) {
+void Simulation::check_energy(const HealthScan& s) {
   const Params& prm = scene_.model.params;
   // The near field's potential is not in the balance, so its scenes cannot be checked this way.
   if (!(prm.checks.energy_jump > 0.0) || prm.near_field.cutoff > 0.0) return;

@@ -9,7 +9,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "io/output_manager.hpp"
+#include "output/output_manager.hpp"
 #include "io/pvtu_writer.hpp"
 #include "parallel/brick_grid.hpp"
 #include "parallel/gather.hpp"
@@ -17,7 +17,7 @@
 #include "sim/simulation.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "sim/inlets.hpp"
-#include "sim/step_totals.hpp"
+#include "sim/step_collective.hpp"
 #include "sim/stop_signal.hpp"
 
 namespace mpdem {
@@ -57,9 +57,9 @@ void Simulation::decompose(const Communicator& comm) {
                                  }});
 }
 
-const StepTotals& Simulation::reduce_step(const StateScan& s, double h) {
-  StepTotals& t = step_totals_;
-  t = StepTotals{};
+const StepCollective& Simulation::reduce_step(const HealthScan& s, double h) {
+  StepCollective& t = step_collective_;
+  t = StepCollective{};
   t.stats = interactions_->stats();
   t.particles = scene_.particles.size();
   t.scan = s;
@@ -85,7 +85,7 @@ const StepTotals& Simulation::reduce_step(const StateScan& s, double h) {
   return t;
 }
 
-const InteractionStats& Simulation::stats() const { return comm_ ? step_totals_.stats : interactions_->stats(); }
+const InteractionStats& Simulation::stats() const { return comm_ ? step_collective_.stats : interactions_->stats(); }
 
 namespace {
 // The particles of the ranks' messages (pack_particles), in id order: what is written or decided
@@ -135,7 +135,7 @@ ParticleSnapshotsDue Simulation::particles_due(double h, bool force) {
   // Decided with the step's checks (reduce_step) when they were for this very step.
   const bool decided = !force && snapshots_h_ >= 0.0 && snapshots_h_ == h && snapshots_time_ == time_;
   snapshots_h_ = -1.0;
-  if (decided) return {step_totals_.vtu, step_totals_.csv, step_totals_.vtu_index};
+  if (decided) return {step_collective_.vtu, step_collective_.csv, step_collective_.vtu_index};
   ParticleSnapshotsDue due;
   if (output_) due = output_->particles_due(time_, h, force);
   const std::uint64_t fields[] = {due.vtu ? 1u : 0u, due.csv ? 1u : 0u, due.vtu_index};

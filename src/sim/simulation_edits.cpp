@@ -4,7 +4,7 @@
 #include <string>
 #include <unordered_set>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "sim/inlets.hpp"
 #include "sim/simulation.hpp"
 

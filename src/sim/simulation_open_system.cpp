@@ -9,14 +9,14 @@
 #include <tuple>
 #include <vector>
 
-#include "io/output_manager.hpp"
-#include "io/progress.hpp"
+#include "output/output_manager.hpp"
+#include "output/progress.hpp"
 #include "parallel/gather.hpp"
 #include "sim/inlets.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
 #include "sim/simulation.hpp"
 #include "sim/sinks.hpp"
-#include "sim/state_scan.hpp"
+#include "integrate/health_scan.hpp"
 
 namespace mpdem {
 
@@ -114,7 +114,7 @@ void Simulation::summarise_open_system(RunSummary& sum) const {
   sum.open = inlets_ || sinks_;
   sum.sinks = sinks_ != nullptr;
   sum.inserted_energy = inlets_ ? inlets_->inserted_energy() : 0.0;
-  sum.dissipated = stats().damping_dissipated + stats().friction_dissipated;
+  sum.dissipated = dissipated_energy(stats());
   if (sinks_)
     for (const Sinks::State& s : sinks_->states()) sum.sunk += s.removed;
 }

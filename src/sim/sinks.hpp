@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "generate/region.hpp"
-#include "io/binary_stream.hpp"
+#include "core/binary_stream.hpp"
 #include "model/scene.hpp"
 #include "parallel/communicator.hpp"
 

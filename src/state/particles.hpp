@@ -8,7 +8,7 @@
 //
 // Ghost particles (periodic images now, MPI halo copies later) are appended after the owned
 // particles in every array: indices [size(), size_with_ghosts()). Only the neighbour search
-// creates them (neighbor/periodic_images.hpp) and only the interactions read them; everything
+// creates them (parallel/periodic_images.hpp) and only the interactions read them; everything
 // else - integration, checks, output, checkpoints - loops over the owned particles [0, size()).
 #include <array>
 #include <cstddef>

@@ -12,6 +12,7 @@
 #include "model/scene.hpp"
 #include "sim/simulation.hpp"
 #include "validate/validation_case.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace mpdem::validate {
 

@@ -10,6 +10,7 @@
 #include "check/scene_checks.hpp"
 #include "sim/simulation.hpp"
 #include "support/temp_dir.hpp"
+#include "scene/scene_reader.hpp"
 
 using namespace mpdem;
 using mpdem::test::expect_contains;

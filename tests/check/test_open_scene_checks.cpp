@@ -9,6 +9,7 @@
 #include "check/impact_overlap.hpp"
 #include "check/scene_checks.hpp"
 #include "support/temp_dir.hpp"
+#include "scene/scene_reader.hpp"
 
 using namespace mpdem;
 using mpdem::test::TempDir;

@@ -11,6 +11,7 @@
 #include "support/temp_dir.hpp"
 #include "tools/mesh_builder.hpp"
 #include "tools/mesh_output.hpp"
+#include "scene/scene_reader.hpp"
 
 using namespace mpdem;
 using mpdem::test::expect_contains;

@@ -154,8 +154,8 @@ TEST(ContactTable, LinearForOnePairHertzElsewhere) {
   s.model.materials[0].name = "glass";
   const int steel = add_material(s, "steel", rho, E, nu);
   ContactPairParams gs = pair_entry("glass", "steel");
-  gs.law = ContactLawKind::Linear;
-  gs.stiffness_normal = k;
+  gs.law = "linear";
+  gs.law_keys["stiffness_normal"] = k;
   s.model.params.contact.pairs = {gs};
   add_sphere(s, 0, 1, {-kR - 1e-6, 0.0, 0.0}, {0.5 * v, 0.0, 0.0});
   add_sphere(s, steel, 2, {kR + 1e-6, 0.0, 0.0}, {-0.5 * v, 0.0, 0.0});

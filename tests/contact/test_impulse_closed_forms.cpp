@@ -18,7 +18,7 @@
 #include <string>
 
 #include "physics/time_step_estimate.hpp"
-#include "sim/interactions.hpp"
+#include "interact/interactions.hpp"
 #include "sim/simulation.hpp"
 #include "support/contact_scenes.hpp"
 #include "support/scene_builder.hpp"

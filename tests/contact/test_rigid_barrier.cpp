@@ -48,17 +48,20 @@ TEST(RigidBarrier, ResolvedLawHasTheParticlesModuliAlone) {
     ASSERT_EQ(s.model.materials[rigid].variant_of, 0);  // a variant of the source's material
     const double G = kSteelE / (2.0 * (1.0 + nu));
     const PairLaw& l = t.barrier_pair(pm, rigid);
-    std::printf("nu %.2f: cn rel err %.1e, ct rel err %.1e\n", nu, rel(l.cn, 2.0 * kSteelE / (1.0 - nu * nu)),
-                rel(l.ct, 8.0 * G / (2.0 - nu)));
-    EXPECT_LT(rel(l.cn, 2.0 * kSteelE / (1.0 - nu * nu)), 1e-14);
-    EXPECT_LT(rel(l.ct, 8.0 * G / (2.0 - nu)), 1e-14);
+    std::printf("nu %.2f: cn rel err %.1e, ct rel err %.1e\n", nu,
+                rel(l.c[HertzLaw::kTwiceE], 2.0 * kSteelE / (1.0 - nu * nu)),
+                rel(l.c[HertzLaw::kEightG], 8.0 * G / (2.0 - nu)));
+    EXPECT_LT(rel(l.c[HertzLaw::kTwiceE], 2.0 * kSteelE / (1.0 - nu * nu)), 1e-14);
+    EXPECT_LT(rel(l.c[HertzLaw::kEightG], 8.0 * G / (2.0 - nu)), 1e-14);
     // Same material on both sides: twice the compliance, half the moduli.
-    EXPECT_LT(rel(t.barrier_pair(pm, steel).cn, kSteelE / (1.0 - nu * nu)), 1e-14);
-    EXPECT_LT(rel(t.barrier_pair(pm, steel).ct, 4.0 * G / (2.0 - nu)), 1e-14);
+    EXPECT_LT(rel(t.barrier_pair(pm, steel).c[HertzLaw::kTwiceE], kSteelE / (1.0 - nu * nu)), 1e-14);
+    EXPECT_LT(rel(t.barrier_pair(pm, steel).c[HertzLaw::kEightG], 4.0 * G / (2.0 - nu)), 1e-14);
     for (std::size_t a = 0; a < t.materials(); ++a)
       for (std::size_t b = 0; b < t.materials(); ++b)
         for (const PairLaw* q : {&t.particle_pair(a, b), &t.barrier_pair(a, b)})
-          EXPECT_TRUE(std::isfinite(q->cn) && std::isfinite(q->ct) && std::isfinite(q->shear_root)) << a << " " << b;
+          EXPECT_TRUE(std::isfinite(q->c[HertzLaw::kTwiceE]) && std::isfinite(q->c[HertzLaw::kEightG]) &&
+                      std::isfinite(q->shear_root()))
+              << a << " " << b;
   }
 }
 

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "sim/interactions.hpp"
+#include "interact/interactions.hpp"
 #include "sim/simulation.hpp"
 #include "support/barrier_mechanics_scene.hpp"
 #include "support/contact_scenes.hpp"

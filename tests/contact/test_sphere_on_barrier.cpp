@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sim/interactions.hpp"
+#include "interact/interactions.hpp"
 #include "sim/simulation.hpp"
 #include "support/barrier_mechanics_scene.hpp"
 #include "support/contact_scenes.hpp"

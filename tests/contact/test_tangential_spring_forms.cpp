@@ -43,16 +43,16 @@ TEST(TangentialDamping, DefaultsToTheNormalRatio) {
   ContactLawParams p;
   p.restitution = 0.5;
   const PairLaw calibrated = resolve_pair_law(p, 1e8, 4e7);
-  EXPECT_EQ(calibrated.xi_t, damping_ratio_for_restitution(0.5));
-  EXPECT_EQ(calibrated.xi_t, calibrated.xi_n);
+  EXPECT_EQ(calibrated.xi_t(), damping_ratio_for_restitution(0.5));
+  EXPECT_EQ(calibrated.xi_t(), calibrated.xi_n());
   p.restitution.reset();
   p.damping_ratio = 0.3;
-  EXPECT_EQ(resolve_pair_law(p, 1e8, 4e7).xi_t, 0.3);
+  EXPECT_EQ(resolve_pair_law(p, 1e8, 4e7).xi_t(), 0.3);
   p.tangential_damping = 0.0;
-  EXPECT_EQ(resolve_pair_law(p, 1e8, 4e7).xi_t, 0.0);
+  EXPECT_EQ(resolve_pair_law(p, 1e8, 4e7).xi_t(), 0.0);
   p.tangential_damping = 0.7;
-  EXPECT_EQ(resolve_pair_law(p, 1e8, 4e7).xi_t, 0.7);
-  EXPECT_EQ(resolve_pair_law(ContactLawParams{}, 1e8, 4e7).xi_t, 0.0);  // undamped: e = 1
+  EXPECT_EQ(resolve_pair_law(p, 1e8, 4e7).xi_t(), 0.7);
+  EXPECT_EQ(resolve_pair_law(ContactLawParams{}, 1e8, 4e7).xi_t(), 0.0);  // undamped: e = 1
 }
 
 // A [[contact.pair]] entry sets the form (and xi_t) for its pair of materials only.
@@ -75,8 +75,8 @@ TEST(TangentialSpring, PairEntryChoosesTheForm) {
   EXPECT_EQ(t.particle_pair(1, 0).spring, TangentialSpring::Incremental);
   EXPECT_EQ(t.barrier_pair(0, 1).spring, TangentialSpring::Incremental);
   EXPECT_EQ(t.particle_pair(0, 0).spring, TangentialSpring::Total);
-  EXPECT_EQ(t.particle_pair(0, 1).xi_t, 0.1);
-  EXPECT_EQ(t.particle_pair(1, 1).xi_t, t.particle_pair(1, 1).xi_n);
+  EXPECT_EQ(t.particle_pair(0, 1).xi_t(), 0.1);
+  EXPECT_EQ(t.particle_pair(1, 1).xi_t(), t.particle_pair(1, 1).xi_n());
 }
 
 // Sticking, the total spring gives f_t = -k_t(delta') (s + ds); the incremental one, which

@@ -58,9 +58,9 @@ Chute make_chute() {
   prm.fields.gravity = {kG * std::sin(kTheta), 0.0, -kG * std::cos(kTheta)};
   prm.analysis.rotation = true;
   ContactLawParams& law = prm.contact.particle_particle;
-  law.law = ContactLawKind::Linear;
-  const double m0 = 2500.0 * M_PI / 6.0 * kD * kD * kD;  // kg
-  law.stiffness_normal = 2.0e4 * m0 * kG / kD;           // N/m, as scene.toml
+  law.law = "linear";
+  const double m0 = 2500.0 * M_PI / 6.0 * kD * kD * kD;     // kg
+  law.law_keys["stiffness_normal"] = 2.0e4 * m0 * kG / kD;  // N/m, as scene.toml
   law.restitution = 0.88;
   law.mu_static = 0.5;
   law.mu_dynamic = 0.5;

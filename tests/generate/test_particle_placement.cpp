@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "io/input_error.hpp"
-#include "io/particle_csv.hpp"
+#include "core/input_error.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "io/stl_writer.hpp"
 #include "model/scene.hpp"
 #include "generate/generator.hpp"
@@ -22,6 +22,7 @@
 #include "geometry/mesh_solid.hpp"
 #include "support/generate_box_spec.hpp"
 #include "support/temp_dir.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;

@@ -1,4 +1,4 @@
-// Radius distributions of the particle generator (src/generate/radius_distribution.cpp): mean and sd of 10^4
+// Radius distributions of the particle generator (src/model/radius_distribution.cpp): mean and sd of 10^4
 // generated radii within 2 % of the analytic values for every law, and of 10^6 sampler draws within 0.5 %.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "generate/generator.hpp"
-#include "generate/radius_distribution.hpp"
+#include "model/radius_distribution.hpp"
 #include "support/generate_box_spec.hpp"
 
 using namespace mpdem;

@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "model/scene.hpp"
+#include "scene/scene_reader.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "integrate/adaptive_step.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
 #include "sim/simulation.hpp"
 #include "support/scene_builder.hpp"
 

@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "sim/energy.hpp"
+#include "integrate/energy_balance.hpp"
 #include "sim/simulation.hpp"
 #include "support/dense_granular_scene.hpp"
 #include "support/scene_builder.hpp"

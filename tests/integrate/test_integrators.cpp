@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
 #include "sim/simulation.hpp"
 #include "support/scene_builder.hpp"
 

@@ -11,8 +11,8 @@
 #include <random>
 #include <thread>
 
-#include "io/atomic_file.hpp"
-#include "io/input_error.hpp"
+#include "core/atomic_file.hpp"
+#include "core/input_error.hpp"
 #include "contact/particle_contacts.hpp"
 #include "sim/simulation.hpp"
 #include "support/contact_scenes.hpp"

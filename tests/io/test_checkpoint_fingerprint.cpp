@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "io/checkpoint_format.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "sim/simulation.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
+#include "scene/scene_reader.hpp"
 
 using namespace mpdem;
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-// The checkpoint container (io/checkpoint_format.hpp) and its CRC-32 (io/crc32.hpp): sections
+// The checkpoint container (io/checkpoint_format.hpp) and its CRC-32 (core/crc32.hpp): sections
 // read back as written; every kind of damage is refused with a message that names it.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "io/checkpoint_format.hpp"
-#include "io/crc32.hpp"
+#include "core/crc32.hpp"
 
 using namespace mpdem;
 

@@ -1,5 +1,5 @@
-// The CSV log and the particle CSV snapshots (io/csv_log.hpp), read back through std::stod: with 17
-// significant digits every double must come back bit for bit (tolerance: exact).
+// The CSV log and the particle CSV snapshots (io/csv_log.hpp, io/particle_csv_writer.hpp), read back through std::stod:
+// with 17 significant digits every double must come back bit for bit (tolerance: exact).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -7,8 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "io/csv_log.hpp"
+#include "io/particle_csv_writer.hpp"
 #include "state/particles.hpp"
 #include "support/output_folder.hpp"
 #include "support/sample_particles.hpp"
@@ -74,10 +75,10 @@ TEST_F(OutputTest, ParticleCsvSnapshotRoundTrips) {
   EXPECT_EQ(files_in(dir), std::vector<fs::path>{"particles_000001.csv"});
   const auto lines = lines_of(slurp(file));
   ASSERT_EQ(lines.size(), p.size() + 1);
-  EXPECT_EQ(lines[0], "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed");
+  EXPECT_EQ(lines[0], "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed,tx,ty,tz");
   for (std::size_t i = 0; i < p.size(); ++i) {
     const auto f = split(lines[i + 1], ',');
-    ASSERT_EQ(f.size(), 19u) << lines[i + 1];
+    ASSERT_EQ(f.size(), 22u) << lines[i + 1];
     EXPECT_EQ(f[18], "0");  // free (tests/io/test_fixed_particle_input.cpp writes fixed ones)
     const double expected[18] = {time,     0.0,      p.x[i].x,    p.x[i].y,     p.x[i].z,     p.v[i].x,
                                  p.v[i].y, p.v[i].z, p.w[i].x,    p.w[i].y,     p.w[i].z,     p.radius[i],

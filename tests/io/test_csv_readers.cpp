@@ -13,8 +13,8 @@
 
 #include "io/barrier_csv.hpp"
 #include "io/csv_table.hpp"
-#include "io/input_error.hpp"
-#include "io/particle_csv.hpp"
+#include "core/input_error.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;

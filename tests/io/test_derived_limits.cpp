@@ -8,11 +8,12 @@
 #include <string>
 
 #include "io/barrier_csv.hpp"
-#include "io/input_error.hpp"
-#include "io/particle_csv.hpp"
+#include "core/input_error.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "model/derived_limits.hpp"
 #include "model/scene.hpp"
 #include "support/temp_dir.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;

@@ -7,10 +7,11 @@
 #include <vector>
 
 #include "io/csv_table.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/stl_reader.hpp"
 #include "model/scene.hpp"
 #include "support/temp_dir.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;

@@ -7,13 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "io/csv_log.hpp"
-#include "io/particle_csv.hpp"
+#include "io/particle_csv_writer.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "io/vtu_writer.hpp"
 #include "model/scene.hpp"
 #include "support/run_command.hpp"
 #include "support/scene_builder.hpp"
 #include "support/temp_dir.hpp"
+#include "scene/scene_reader.hpp"
 
 using namespace mpdem;
 using mpdem::test::error_of;
@@ -107,10 +108,11 @@ TEST(FixedParticleInput, SnapshotsCarryTheFlag) {
   write_particles_csv(d.path / "p.csv", p, 0.5);
   const std::string csv = test::slurp(d.path / "p.csv");
   const auto first = csv.find('\n');
-  EXPECT_EQ(csv.substr(0, first), "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed");
+  EXPECT_EQ(csv.substr(0, first),
+            "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed,tx,ty,tz");
   const auto second = csv.find('\n', first + 1);
-  EXPECT_EQ(csv.substr(second - 2, 2), ",1");
-  EXPECT_EQ(csv.substr(csv.size() - 3), ",0\n");
+  EXPECT_EQ(csv.substr(second - 8, 8), ",1,0,0,0");  // fixed, then the torque (none)
+  EXPECT_EQ(csv.substr(csv.size() - 9), ",0,0,0,0\n");
   write_particles_vtu(d.path / "p.vtu", p, 0.5, {VtkFormat::Ascii, {}});
   const std::string vtu = test::slurp(d.path / "p.vtu");
   const auto at = vtu.find("type=\"UInt8\" Name=\"fixed\"");

@@ -14,15 +14,16 @@
 #include <vector>
 
 #include "io/barrier_csv.hpp"
-#include "io/binary_stream.hpp"
-#include "io/crc32.hpp"
-#include "io/input_error.hpp"
-#include "io/particle_csv.hpp"
+#include "core/binary_stream.hpp"
+#include "core/crc32.hpp"
+#include "core/input_error.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "io/stl_reader.hpp"
 #include "model/scene.hpp"
 #include "sim/simulation.hpp"
 #include "support/scene_builder.hpp"
 #include "support/temp_dir.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;
@@ -164,7 +165,7 @@ TEST(FuzzRegressions, BarrierWithOverflowingAreaIsRejected) {
 }
 
 // Finding 5 (fuzz_checkpoint, UBSan "load of value 81, which is not a valid value for type
-// 'bool'" at io/binary_stream.hpp): BinaryReader::value<bool>() copied any byte into a bool. The
+// 'bool'" at core/binary_stream.hpp): BinaryReader::value<bool>() copied any byte into a bool. The
 // "run" section ends with the flag energy_checked and "run_record" with started; a checkpoint
 // with another byte there (its checksum recomputed) was undefined behaviour. A flag is now read
 // as a byte and anything but 0 or 1 refused.

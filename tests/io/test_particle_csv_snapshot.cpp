@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "io/csv_log.hpp"
-#include "io/particle_csv.hpp"
+#include "io/particle_csv_writer.hpp"
+#include "io/particle_csv_reader.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;

@@ -13,12 +13,13 @@
 #include <string>
 
 #include "io/barrier_csv.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/stl_reader.hpp"
 #include "io/stl_writer.hpp"
 #include "model/scene.hpp"
 #include "tools/mesh_builder.hpp"
 #include "support/temp_dir.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;

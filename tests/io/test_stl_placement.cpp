@@ -10,10 +10,11 @@
 #include <string>
 
 #include "io/barrier_csv.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "io/stl_reader.hpp"
 #include "model/scene.hpp"
 #include "support/temp_dir.hpp"
+#include "scene/scene_reader.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;

@@ -156,6 +156,7 @@ TEST_F(OutputTest, ParticleVtuRoundTripsThroughMeshio) {
                                                   "point_data/orientation",
                                                   "point_data/radius",
                                                   "point_data/temperature",
+                                                  "point_data/torque",
                                                   "point_data/velocity",
                                                   "points/Points"};
   ASSERT_EQ(keys, expected_keys);  // std::map keeps them sorted
@@ -226,7 +227,7 @@ TEST_F(OutputTest, EmptyParticleVtuIsWellFormed) {
     EXPECT_EQ(count, name == "TimeValue" ? 1u : 0u) << lines[k];
     ++arrays;
   }
-  EXPECT_EQ(arrays, 1 + 10 + 1 + 3);  // time, 10 point arrays, points, 3 cell arrays
+  EXPECT_EQ(arrays, 1 + 11 + 1 + 3);  // time, 11 point arrays, points, 3 cell arrays
 }
 
 TEST_F(OutputTest, BarrierVtuHasMovedTrianglesAndLoads) {

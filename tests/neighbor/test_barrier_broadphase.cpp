@@ -11,7 +11,7 @@
 
 #include "neighbor/barrier_broadphase.hpp"
 #include "neighbor/verlet_list.hpp"
-#include "physics/triangle_closest_point.hpp"
+#include "geometry/triangle_closest_point.hpp"
 #include "state/barriers.hpp"
 #include "support/particle_clouds.hpp"
 

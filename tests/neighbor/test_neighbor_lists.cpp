@@ -22,7 +22,7 @@
 #include "integrate/integrator_policy.hpp"
 #include "integrate/verlet.hpp"
 #include "model/material_variants.hpp"
-#include "sim/interactions.hpp"
+#include "interact/interactions.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "contact/particle_contacts.hpp"
 #include "support/dense_granular_scene.hpp"

@@ -14,7 +14,7 @@
 #include "core/parallel.hpp"
 #include "neighbor/pair_blocks.hpp"
 #include "contact/pair_batch.hpp"
-#include "sim/interactions.hpp"
+#include "interact/interactions.hpp"
 #include "contact/particle_contacts.hpp"
 #include "sim/simulation.hpp"
 #include "support/dense_granular_scene.hpp"

@@ -1,4 +1,4 @@
-// Periodic boundaries ([domain] periodic, neighbor/periodic_images.hpp): a particle crossing a
+// Periodic boundaries ([domain] periodic, parallel/periodic_images.hpp): a particle crossing a
 // periodic face keeps its velocity and meets the particles on the other side; a pair straddling
 // the face has the force, spring, heat flow and near-field force of the same pair in the interior;
 // an elastic frictionless periodic gas conserves energy as well as a walled one; trajectories do
@@ -18,9 +18,9 @@
 #include <random>
 
 #include "contact/particle_contacts.hpp"
-#include "io/csv_log.hpp"
+#include "io/particle_csv_writer.hpp"
 #include "neighbor/neighbor_search.hpp"
-#include "sim/energy.hpp"
+#include "integrate/energy_balance.hpp"
 #include "sim/simulation.hpp"
 #include "support/dense_granular_scene.hpp"
 #include "support/scene_builder.hpp"

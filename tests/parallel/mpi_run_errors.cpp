@@ -9,7 +9,7 @@
 #include <string>
 
 #include "parallel/communicator.hpp"
-#include "sim/run_error.hpp"
+#include "core/run_error.hpp"
 #include "sim/simulation.hpp"
 #include "support/decomposed_scenes.hpp"
 

@@ -41,6 +41,27 @@ def test_state_arrays_match_the_clis_csv(tmp_path, bed_toml):
         assert np.array_equal(getattr(p, name), expected), name  # the CSV prints round-trip digits
 
 
+def test_torque_is_the_clis_csv_and_vtu_column(bed_toml):
+    """The torque column (N m, one row of src/state/particle_columns.hpp): sim.particles.torque
+    after the run equals the CLI's last particle CSV columns tx, ty, tz and its last particle VTU
+    array "torque" (read with meshio), value for value (both print round-trip digits or bits)."""
+    import meshio
+
+    assert run_cli("run", bed_toml, "--quiet", "--threads", "1").returncode == 0
+    out = bed_toml.parent / "output"
+    with open(out / "particles_csv" / "particles_000004.csv") as f:
+        rows = sorted(csv.DictReader(f), key=lambda r: int(r["id"]))
+    sim = mpdem.Simulation(mpdem.Scene.from_toml(bed_toml), threads=1, write_output=False)
+    sim.run()
+    torque = sim.particles.torque
+    assert torque.shape == (len(rows), 3) and torque.dtype == np.float64
+    assert np.any(torque != 0.0)  # frictional contacts: real torques, not an empty column
+    assert np.array_equal(torque, np.array([[float(r[k]) for k in ("tx", "ty", "tz")] for r in rows]))
+    vtu = meshio.read(out / "particles" / "particles_000004.vtu")
+    order = np.argsort(np.asarray(vtu.point_data["id"]).ravel())
+    assert np.array_equal(np.asarray(vtu.point_data["torque"])[order], torque)
+
+
 @pytest.mark.parametrize("integrator", ["verlet", "trapezoidal"])
 def test_a_velocity_set_between_steps_gives_free_flight(tmp_path, integrator):
     s = mpdem.Scene(dir=tmp_path)

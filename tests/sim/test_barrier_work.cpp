@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "sim/energy.hpp"
+#include "integrate/energy_balance.hpp"
 #include "sim/simulation.hpp"
 #include "support/barrier_mechanics_scene.hpp"
 #include "support/rotating_meshes.hpp"

@@ -11,7 +11,7 @@
 #include <random>
 #include <utility>
 
-#include "sim/energy.hpp"
+#include "integrate/energy_balance.hpp"
 #include "sim/simulation.hpp"
 #include "support/scene_builder.hpp"
 

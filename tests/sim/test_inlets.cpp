@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "physics/triangle_closest_point.hpp"
+#include "geometry/triangle_closest_point.hpp"
 #include "sim/inlets.hpp"
 #include "sim/simulation.hpp"
 #include "support/open_system_scenes.hpp"

@@ -1,10 +1,10 @@
-// Interactions in an open system (sim/interactions_open_system.cpp): a removal re-evaluates the
+// Interactions in an open system (interact/interactions_open_system.cpp): a removal re-evaluates the
 // rates only when a removed particle acted on the others.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "sim/run_record.hpp"
+#include "sim/run_summary.hpp"
 #include "sim/simulation.hpp"
 #include "support/open_system_scenes.hpp"
 #include "support/scene_builder.hpp"

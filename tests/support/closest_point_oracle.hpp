@@ -1,6 +1,6 @@
 #pragma once
 // Test oracle: the closest point of a triangle to a point, computed by brute force, to check
-// physics/triangle_closest_point.hpp and the contact overlaps against. Not used by the engine.
+// geometry/triangle_closest_point.hpp and the contact overlaps against. Not used by the engine.
 #include <algorithm>
 #include <limits>
 

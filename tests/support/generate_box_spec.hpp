@@ -2,7 +2,7 @@
 // A generator request for the generator tests: `count` spheres of one radius in the box [0, side]^3.
 #include <cstddef>
 
-#include "generate/generate_spec.hpp"
+#include "model/generate_spec.hpp"
 
 namespace mpdem::test {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 
 namespace mpdem::test {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "io/barrier_csv.hpp"
-#include "io/input_error.hpp"
+#include "core/input_error.hpp"
 #include "tools/mesh_builder.hpp"
 #include "tools/mesh_output.hpp"
 #include "support/temp_dir.hpp"

@@ -1,0 +1,74 @@
+#include "integrate/health_scan.hpp"
+
+#include <array>
+#include <cstdint>
+
+#include "core/deterministic_sum.hpp"
+
+namespace mpdem {
+
+namespace {
+
+constexpr std::size_t kLanes = 8;
+
+// Particle i's terms of the scan into lane l; with plain pointers, so that the loop over a
+// vector's lanes vectorises. The charges are read only with an electric field. In a periodic
+// domain the potentials take the unwrapped centre x + image * period (a wrap moves a particle by
+// a period, not its energy).
+template <bool kElectric, bool kPeriodic>
+void scan_range_lanes(const Vec3* __restrict x, const Vec3* __restrict v, const Vec3* __restrict w,
+                      const double* __restrict m, const double* __restrict I, const double* __restrict q,
+                      const double* __restrict T, const std::array<std::int32_t, 3>* __restrict image, std::size_t lo,
+                      std::size_t hi, const FieldParams& fields, const DomainParams& domain,
+                      double (&lane)[kScanSums][kLanes]) {
+  const Vec3 g = fields.gravity, E = fields.electric;
+  const DomainParams d = domain;
+  const Vec3 L{d.periodic[0] ? d.max.x - d.min.x : 0.0, d.periodic[1] ? d.max.y - d.min.y : 0.0,
+               d.periodic[2] ? d.max.z - d.min.z : 0.0};  // m, the periods
+  const auto add = [&](std::size_t i, std::size_t l) {
+    Vec3 u = x[i];  // m, unwrapped centre
+    if constexpr (kPeriodic) u += Vec3{image[i][0] * L.x, image[i][1] * L.y, image[i][2] * L.z};
+    lane[0][l] += 0.5 * m[i] * norm2(v[i]);
+    lane[1][l] += 0.5 * I[i] * norm2(w[i]);
+    lane[2][l] -= m[i] * dot(g, u);
+    if constexpr (kElectric) lane[3][l] -= q[i] * dot(E, u);
+    lane[4][l] += finite_state(x[i], v[i], w[i], T[i]) ? 0.0 : 1.0;
+    lane[5][l] += inside_domain(d, x[i]) ? 0.0 : 1.0;
+  };
+  std::size_t i = lo;
+  for (; i + kLanes <= hi; i += kLanes)
+    for (std::size_t l = 0; l < kLanes; ++l) add(i + l, l);
+  for (std::size_t l = 0; i < hi; ++i, ++l) add(i, l);
+}
+
+template <bool kElectric>
+void scan_lanes(const Particles& p, std::size_t lo, std::size_t hi, const FieldParams& fields,
+                const DomainParams& domain, double (&lane)[kScanSums][kLanes]) {
+  const bool periodic = domain.bounded && domain.any_periodic();
+  if (periodic)
+    scan_range_lanes<kElectric, true>(p.x.data(), p.v.data(), p.w.data(), p.mass.data(), p.inertia.data(),
+                                      p.charge.data(), p.T.data(), p.image.data(), lo, hi, fields, domain, lane);
+  else
+    scan_range_lanes<kElectric, false>(p.x.data(), p.v.data(), p.w.data(), p.mass.data(), p.inertia.data(),
+                                       p.charge.data(), p.T.data(), p.image.data(), lo, hi, fields, domain, lane);
+}
+
+}  // namespace
+
+void scan_range(const Particles& p, std::size_t lo, std::size_t hi, const FieldParams& fields,
+                const DomainParams& domain, std::array<double, kScanSums>& acc) {
+  double lane[kScanSums][kLanes] = {};
+  if (norm2(fields.electric) > 0.0) scan_lanes<true>(p, lo, hi, fields, domain, lane);
+  else scan_lanes<false>(p, lo, hi, fields, domain, lane);
+  for (int k = 0; k < kScanSums; ++k)
+    for (std::size_t l = 0; l < kLanes; ++l) acc[k] += lane[k][l];
+}
+
+HealthScan scan_state(const Particles& p, const FieldParams& fields, const DomainParams& domain) {
+  return scan_from_sums(deterministic_block_sums<kScanSums>(
+      p.size(), [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums>& acc) {
+        scan_range(p, lo, hi, fields, domain, acc);
+      }));
+}
+
+}  // namespace mpdem

@@ -1,0 +1,26 @@
+#pragma once
+// Contact snapshots ([output] contacts_every; docs/output.md "Contact snapshots"): every
+// particle-particle and particle-barrier contact of the last evaluation, as a VTK UnstructuredGrid
+// (.vtu, one line cell per contact: force chains in ParaView; meshio reads .vtu, not .vtp) and as CSV. Both written
+// atomically.
+#include <filesystem>
+#include <span>
+
+#include "model/params.hpp"
+#include "output/contact_list.hpp"
+
+namespace mpdem {
+
+// One VTK_LINE per contact from the first particle's centre to the other's centre (a pair: its
+// image across a periodic boundary, so the line is the branch vector) or to the contact point (a
+// barrier contact). CellData: first, second (-1 for a barrier), element (-1 for a pair), point,
+// normal, overlap, normal_force, tangential_force, force_magnitude, normal_force_magnitude,
+// sliding. FieldData TimeValue.
+void write_contacts_vtu(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time,
+                        VtkFormat format);
+
+// Columns: time,first,second,element,px,py,pz,nx,ny,nz,overlap,fnx,fny,fnz,ftx,fty,ftz,sliding
+// (s, -, -, -, m, -, m, N, N, -).
+void write_contacts_csv(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time);
+
+}  // namespace mpdem

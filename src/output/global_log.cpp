@@ -1,0 +1,80 @@
+#include "output/global_log.hpp"
+
+#include <algorithm>
+
+#include "field/near_field_forces.hpp"
+#include "interact/body_forces.hpp"
+#include "integrate/health_scan.hpp"
+#include "thermal/heat_transfer.hpp"
+
+namespace mpdem {
+
+ParticleTotals particle_totals(const Model& model, const Particles& p) {
+  const HealthScan scan = scan_state(p, model.params.fields, DomainParams{});
+  return {scan.energy, scan.electric, static_cast<double>(p.size()),
+          model.params.analysis.thermal ? thermal_energy(model, p) : 0.0};
+}
+
+GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
+                                 const std::vector<std::string>& open_system_columns) {
+  thermal_ = model.params.analysis.thermal;
+  const bool driven = std::any_of(barriers.motion.begin(), barriers.motion.end(),
+                                  [](const MotionLaw& m) { return !m.is_static(); });
+  for (std::size_t k = 0; k < kStatCount; ++k) {
+    switch (kStats[k].logged) {
+      case StatLogged::never: logged_[k] = false; break;
+      case StatLogged::always: logged_[k] = true; break;
+      case StatLogged::near_field: logged_[k] = near_field_enabled(model.params.near_field); break;
+      case StatLogged::driven_barriers: logged_[k] = driven; break;
+      case StatLogged::thermal: logged_[k] = thermal_; break;
+      case StatLogged::dissipative_field: logged_[k] = dissipative_fields(model.params.fields); break;
+    }
+  }
+  columns_ = {"step",         "time",      "dt",     "iterations", "evaluations", "evaluations_total",
+              "redone_steps", "particles", "removed"};
+  const auto stat_columns = [&](StatSlot slot) {
+    for (std::size_t k = 0; k < kStatCount; ++k)
+      if (logged_[k] && kStats[k].slot == slot) columns_.push_back(kStats[k].column);
+  };
+  stat_columns(StatSlot::counts);
+  for (const char* c : {"kinetic", "rotational", "potential"}) columns_.push_back(c);
+  stat_columns(StatSlot::energies);
+  stat_columns(StatSlot::supplied);  // taken off total_energy
+  columns_.push_back("total_energy");
+  stat_columns(StatSlot::heat);
+  if (thermal_) columns_.push_back("thermal_energy");
+  columns_.insert(columns_.end(), open_system_columns.begin(), open_system_columns.end());
+}
+
+std::vector<double> GlobalLogLayout::values(const GlobalLogRow& r, const ParticleTotals& t,
+                                            const InteractionStats& s) const {
+  const ParticleEnergy& e = t.energy;
+  std::vector<double> row{static_cast<double>(r.step),
+                          r.time,
+                          r.dt,
+                          static_cast<double>(r.report ? r.report->iterations : 0),
+                          static_cast<double>(r.report ? r.report->evaluations : 0),
+                          static_cast<double>(r.evaluations_total),
+                          static_cast<double>(r.redone_steps),
+                          t.count,
+                          static_cast<double>(r.removed_total)};
+  const auto stat_values = [&](StatSlot slot) {
+    std::size_t k = 0;
+    for_each_stat(s, [&](const StatInfo& info, const auto& v) {
+      if (logged_[k++] && info.slot == slot) row.push_back(static_cast<double>(v));
+    });
+  };
+  stat_values(StatSlot::counts);
+  row.push_back(e.kinetic);
+  row.push_back(e.rotational);
+  row.push_back(e.potential + t.electric);  // J, gravitational + electric
+  stat_values(StatSlot::energies);
+  stat_values(StatSlot::supplied);
+  row.push_back(energy_balance(e, t.electric, s, kLogBalance));
+  stat_values(StatSlot::heat);
+  if (thermal_) row.push_back(t.thermal);
+  row.insert(row.end(), r.open_system.begin(), r.open_system.end());
+  return row;
+}
+
+}  // namespace mpdem

@@ -2,7 +2,9 @@
 // The energy balance (physics.md section 12): the particles' energies - kinetic 1/2 m v^2,
 // rotational 1/2 j w^2, gravitational -m g.x - and the one function that adds the interaction
 // statistics to them by their roles (interact/interaction_stats.hpp), used by the run's checks
-// (Simulation) and by the log's total_energy (io/global_log). Sums are thread-count independent.
+// (Simulation) and by the log's total_energy (output/global_log). Sums are thread-count independent.
+#include <cmath>
+
 #include "model/params.hpp"
 #include "interact/interaction_stats.hpp"
 #include "state/particles.hpp"
@@ -37,5 +39,11 @@ double energy_balance(const ParticleEnergy& e, double electric, const Interactio
 
 // J, the energy the interactions dissipated so far (the rows of role dissipated, in table order).
 double dissipated_energy(const InteractionStats& s);
+
+// J, the energy in motion and in the contacts' springs: the scale of the energy checks. The stored
+// elastic energy counts by its magnitude, since an adhesive contact's is negative at rest.
+inline double active_energy(const ParticleEnergy& e, double elastic) {
+  return e.kinetic + e.rotational + std::abs(elastic);
+}
 
 }  // namespace mpdem

@@ -74,8 +74,8 @@ Interactions::Interactions(const Model& model, const Particles& p, const Barrier
       // The list reaches beyond contact by the near-field cutoff (0 when the near field is off).
       search_(std::make_unique<NeighborSearch>(
           default_skin(model, p), near_field_extra_range(model.params.near_field, p), model.params.domain)),
-      pp_(std::make_unique<ParticleContacts>(table_, policy.step_start)),
-      pb_(std::make_unique<BarrierContacts>(table_, b)) {
+      particle_contacts_(std::make_unique<ParticleContacts>(table_, policy.step_start)),
+      barrier_contacts_(std::make_unique<BarrierContacts>(table_, b)) {
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
   if (model.params.analysis.thermal) heat_ = std::make_unique<HeatTransfer>(model, b);
   search_->set_incoming_index(near_ || heat_);
@@ -105,7 +105,7 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
     return;
   }
   search_->release_for_rebuild();
-  ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
+  ParticleContacts::CarriedHistory history = particle_contacts_->carry_history(*search_);
   p.drop_ghosts();
   // Between steps the particles are wrapped into a periodic domain (never within a step: the
   // integrators hold their step-start positions).
@@ -114,12 +114,12 @@ void Interactions::rebuild(Particles& p, const Barriers& b, bool reorder) {
   if (reorder && p.size() > 1) {
     old_index = search_->spatial_order(p);
     p.permute(old_index);
-    pb_->permute(old_index);
+    barrier_contacts_->permute(old_index);
   } else {
     old_index.resize(p.size());
     for (std::size_t i = 0; i < old_index.size(); ++i) old_index[i] = static_cast<std::uint32_t>(i);
   }
-  search_->rebuild(p, b, [&] { pp_->restore_history(*search_, std::move(history), old_index); });
+  search_->rebuild(p, b, [&] { particle_contacts_->restore_history(*search_, std::move(history), old_index); });
   stats_.rebuilds = search_->rebuilds();
 }
 
@@ -265,11 +265,11 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   PairStats pp, pb;
   {
     ScopedTimer timer(times_.pairs);
-    pp = pp_->evaluate(p, *search_, req);
+    pp = particle_contacts_->evaluate(p, *search_, req);
   }
   {
     ScopedTimer timer(times_.barriers);
-    pb = pb_->evaluate(p, b, *search_, req);
+    pb = barrier_contacts_->evaluate(p, b, *search_, req);
   }
   if (comm_) {
     ScopedTimer timer(times_.exchange);
@@ -341,8 +341,8 @@ void Interactions::commit_heat(const HeatFlows& h, const EvalRequest& req) {
 std::uint64_t Interactions::convection_clamps() const { return heat_ ? heat_->clamped_evaluations() : 0; }
 
 OverlapReport Interactions::max_overlap(const Particles& p, const Barriers& b) const {
-  const OverlapReport pp = pp_->max_overlap();
-  const OverlapReport pb = pb_->max_overlap(p, b);
+  const OverlapReport pp = particle_contacts_->max_overlap();
+  const OverlapReport pb = barrier_contacts_->max_overlap(p, b);
   return pb.ratio > pp.ratio ? pb : pp;
 }
 

@@ -144,9 +144,9 @@ class Interactions {
   void restore(CheckpointReader& r, Particles& p, const Barriers& b);
   double skin() const;
   const NeighborSearch& search() const { return *search_; }
-  const ParticleContacts& particle_contacts() const { return *pp_; }
-  ParticleContacts& particle_contacts() { return *pp_; }
-  const BarrierContacts& barrier_contacts() const { return *pb_; }
+  const ParticleContacts& particle_contacts() const { return *particle_contacts_; }
+  ParticleContacts& particle_contacts() { return *particle_contacts_; }
+  const BarrierContacts& barrier_contacts() const { return *barrier_contacts_; }
   // The deepest particle-particle or particle-barrier contact of the last evaluation.
   OverlapReport max_overlap(const Particles& p, const Barriers& b) const;
   // Evaluations in which the convection fit's air speed clamp (20 m/s) engaged.
@@ -208,8 +208,8 @@ class Interactions {
   std::uint64_t balances_ = 0;
   std::uint64_t measurements_ = 0;
   std::unique_ptr<NeighborSearch> search_;
-  std::unique_ptr<ParticleContacts> pp_;
-  std::unique_ptr<BarrierContacts> pb_;
+  std::unique_ptr<ParticleContacts> particle_contacts_;
+  std::unique_ptr<BarrierContacts> barrier_contacts_;
   std::unique_ptr<NearFieldForces> near_;  // null when the near field is off
   std::unique_ptr<HeatTransfer> heat_;     // null when [analysis] thermal is off
   // Outward heat flows (W) of the last committed evaluation, the start values of the next step.

@@ -64,8 +64,8 @@ void write_sections(CheckpointWriter& w, const InteractionStats& s, const std::a
 void Interactions::save(CheckpointWriter& w, const Particles& p) const {
   write_sections(
       w, stats_, {out_barriers_, out_convected_, out_radiated_}, dissipative_fields(model_.params.fields),
-      [&](BinaryWriter& o) { search_->save(o); }, [&](BinaryWriter& o) { pp_->save(o, p, *search_); },
-      [&](BinaryWriter& o) { pb_->save(o); });
+      [&](BinaryWriter& o) { search_->save(o); }, [&](BinaryWriter& o) { particle_contacts_->save(o, p, *search_); },
+      [&](BinaryWriter& o) { barrier_contacts_->save(o); });
 }
 
 void Interactions::save_gathered(CheckpointWriter& w, const Particles& p, const Particles& all) const {
@@ -77,9 +77,10 @@ void Interactions::save_gathered(CheckpointWriter& w, const Particles& p, const 
   const auto& xb = search_->pairs().build_positions();
   for (std::size_t i = 0; i < p.size(); ++i) build.push(p.id[i], xb[i]);
   build = gather_records(*comm_, build, kRoot);
-  std::vector<PairHistory> pairs = gather_values<PairHistory>(*comm_, pp_->export_history(p, *search_), kRoot);
-  const AttachedRecords barrier = gather_records(*comm_, pb_->export_records(p), kRoot);
-  const std::uint64_t overflows = comm_->sum(pb_->overflows());
+  std::vector<PairHistory> pairs = gather_values<PairHistory>(*comm_, particle_contacts_->export_history(p, *search_),
+                                                              kRoot);
+  const AttachedRecords barrier = gather_records(*comm_, barrier_contacts_->export_records(p), kRoot);
+  const std::uint64_t overflows = comm_->sum(barrier_contacts_->overflows());
   if (comm_->rank() != kRoot) return;
   // `all` is in id order: each record goes to its particle's index there.
   const std::span<const std::int64_t> ids(all.id.data(), all.size());
@@ -112,8 +113,8 @@ void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b)
     });
   if (!comm_) {
     read_section(r, "neighbor", [&](BinaryReader& in) { search_->restore(in, p, b); });
-    read_section(r, "particle_contacts", [&](BinaryReader& in) { pp_->restore(in, p, *search_); });
-    read_section(r, "barrier_contacts", [&](BinaryReader& in) { pb_->restore(in, p.size()); });
+    read_section(r, "particle_contacts", [&](BinaryReader& in) { particle_contacts_->restore(in, p, *search_); });
+    read_section(r, "barrier_contacts", [&](BinaryReader& in) { barrier_contacts_->restore(in, p.size()); });
     return;
   }
   // Several ranks: the sums over the particles are held once, by rank 0.
@@ -126,9 +127,9 @@ void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b)
   }
   // p holds every particle of the checkpoint (written on any rank count): the history is keyed
   // by ids first, then this rank keeps its brick's particles and the history anchored on them.
-  read_section(r, "barrier_contacts", [&](BinaryReader& in) { pb_->restore(in, p.size()); });
-  const AttachedRecords barrier = pb_->export_records(p);
-  if (!counts_sums) pb_->clear_overflows();
+  read_section(r, "barrier_contacts", [&](BinaryReader& in) { barrier_contacts_->restore(in, p.size()); });
+  const AttachedRecords barrier = barrier_contacts_->export_records(p);
+  if (!counts_sums) barrier_contacts_->clear_overflows();
   const std::vector<char> keep = search_->halo()->grid().owned(std::span<const Vec3>(p.x.data(), p.size()),
                                                                comm_->rank());
   std::unordered_set<std::int64_t> mine;
@@ -139,8 +140,8 @@ void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b)
   read_section(r, "particle_contacts", [&](BinaryReader& in) { pairs = in.vector<PairHistory>(); });
   // A pair's history lives with its lower-id particle (the rank that computes the pair).
   std::erase_if(pairs, [&](const PairHistory& h) { return !mine.contains(std::min(h.id_first, h.id_second)); });
-  pp_->import_history(p, *search_, std::move(pairs));
-  pb_->import_records(p, barrier);
+  particle_contacts_->import_history(p, *search_, std::move(pairs));
+  barrier_contacts_->import_records(p, barrier);
   stats_.rebuilds = search_->rebuilds();
 }
 

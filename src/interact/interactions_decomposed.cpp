@@ -26,12 +26,12 @@ bool Interactions::any_rank(bool v) const { return comm_ ? comm_->any(v) : v; }
 void Interactions::rebuild_decomposed(Particles& p, const Barriers& b, bool reorder) {
   // A pair's history lives on the rank of its lower-id particle, which this rank owns: it is
   // anchored there and travels with it. Barrier contacts travel with their particle.
-  std::vector<PairHistory> pairs = pp_->export_history(p, *search_);
+  std::vector<PairHistory> pairs = particle_contacts_->export_history(p, *search_);
   p.drop_ghosts();
   if (reorder) {
     AttachedRecords pair_records = AttachedRecords::of<PairHistory>();
     for (const PairHistory& h : pairs) pair_records.push(std::min(h.id_first, h.id_second), h);
-    AttachedRecords barrier_records = pb_->export_records(p);  // (migrate wraps the periodic axes)
+    AttachedRecords barrier_records = barrier_contacts_->export_records(p);  // (migrate wraps the periodic axes)
     AttachedRecords other = travelling_.take ? travelling_.take() : AttachedRecords{};
     std::vector<AttachedRecords*> attached{&pair_records, &barrier_records};
     if (travelling_.take) attached.push_back(&other);
@@ -41,12 +41,12 @@ void Interactions::rebuild_decomposed(Particles& p, const Barriers& b, bool reor
     search_->rebuild(p, b);
     pairs.clear();
     for (std::size_t r = 0; r < pair_records.size(); ++r) pairs.push_back(pair_records.get<PairHistory>(r));
-    pb_->import_records(p, barrier_records);
+    barrier_contacts_->import_records(p, barrier_records);
   } else {
     // Within a step: the owned particles keep their indices (and barrier records); the ghosts change.
     search_->rebuild(p, b);
   }
-  pp_->import_history(p, *search_, std::move(pairs));
+  particle_contacts_->import_history(p, *search_, std::move(pairs));
   stats_.rebuilds = search_->rebuilds();
 }
 

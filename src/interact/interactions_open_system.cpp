@@ -23,7 +23,7 @@ bool Interactions::removal_acts_on_others(const Particles& p, const std::vector<
   // Anything but contacts and per-particle field forces (a near field, heat flows and their
   // outward totals, added loads, the contact records of the contact output) is left to the
   // re-evaluation.
-  bool acts = near_ || heat_ || !external_.empty() || pp_->recording() || search_->stale(p);
+  bool acts = near_ || heat_ || !external_.empty() || particle_contacts_->recording() || search_->stale(p);
   const std::size_t n = p.size(), all = p.size_with_ghosts();
   if (!acts && p.any_fixed())  // a held particle's power (fixed_power)
     for (std::size_t i = 0; i < n && !acts; ++i) acts = keep[i] == 0 && p.fixed[i] != 0;
@@ -52,7 +52,7 @@ bool Interactions::removal_acts_on_others(const Particles& p, const std::vector<
   // A barrier contact of a removed particle (made on its owner) at the last, committed,
   // evaluation: its load. (The store's layout is the last evaluation's unless there are no
   // barriers, and so no contacts.)
-  const BarrierContactStore& store = pb_->store();
+  const BarrierContactStore& store = barrier_contacts_->store();
   const bool barriers = search_->barrier_candidates().num_elements() > 0;
   if (!acts && barriers && store.stale(search_->barrier_candidates())) acts = true;
   for (std::size_t k = 0; barriers && k < store.size() && !acts; ++k)
@@ -64,12 +64,12 @@ void Interactions::remove_particles(Particles& p, const Barriers& b, const std::
   next_drift_.valid = false;
   if (comm_) {
     // Collective (the lists are rebuilt on every rank); the ghosts' sources are remote: by ids.
-    std::vector<PairHistory> kept = pp_->export_history(p, *search_);
+    std::vector<PairHistory> kept = particle_contacts_->export_history(p, *search_);
     p.drop_ghosts();
     p.compact(keep);
-    pb_->compact(keep);
+    barrier_contacts_->compact(keep);
     search_->rebuild(p, b);
-    pp_->import_history(p, *search_, std::move(kept));
+    particle_contacts_->import_history(p, *search_, std::move(kept));
     stats_.rebuilds = search_->rebuilds();
     return;
   }
@@ -77,20 +77,20 @@ void Interactions::remove_particles(Particles& p, const Barriers& b, const std::
     // The lists stay valid for the others: compacted, no search (a discharge removes particles
     // at many steps between its rebuilds).
     const std::size_t old_pairs = search_->pairs().num_pairs();
-    pp_->compact_slots(search_->compact(keep), old_pairs);
+    particle_contacts_->compact_slots(search_->compact(keep), old_pairs);
     p.compact(keep);
-    pb_->compact(keep);
+    barrier_contacts_->compact(keep);
     return;
   }
-  ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
+  ParticleContacts::CarriedHistory history = particle_contacts_->carry_history(*search_);
   p.drop_ghosts();
   std::vector<std::uint32_t> old_index;  // old index of each particle kept
   for (std::size_t i = 0; i < keep.size(); ++i)
     if (keep[i]) old_index.push_back(static_cast<std::uint32_t>(i));
   p.compact(keep);
-  pb_->compact(keep);
+  barrier_contacts_->compact(keep);
   search_->rebuild(p, b);
-  pp_->restore_history(*search_, std::move(history), old_index);
+  particle_contacts_->restore_history(*search_, std::move(history), old_index);
   stats_.rebuilds = search_->rebuilds();
 }
 
@@ -111,15 +111,15 @@ void Interactions::add_particles(Particles& p, const Barriers& b, Particles fres
   };
   if (comm_) {
     // Collective, as remove_particles: the ghosts' sources are remote, so the history goes by ids.
-    std::vector<PairHistory> kept = pp_->export_history(p, *search_);
+    std::vector<PairHistory> kept = particle_contacts_->export_history(p, *search_);
     p.drop_ghosts();
     append();
     search_->rebuild(p, b);
-    pp_->import_history(p, *search_, std::move(kept));
+    particle_contacts_->import_history(p, *search_, std::move(kept));
     stats_.rebuilds = search_->rebuilds();
     return;
   }
-  ParticleContacts::CarriedHistory history = pp_->carry_history(*search_);
+  ParticleContacts::CarriedHistory history = particle_contacts_->carry_history(*search_);
   p.drop_ghosts();
   const std::size_t old_n = p.size();
   append();
@@ -128,7 +128,7 @@ void Interactions::add_particles(Particles& p, const Barriers& b, Particles fres
   std::vector<std::uint32_t> old_index(p.size(), std::numeric_limits<std::uint32_t>::max());
   std::iota(old_index.begin(), old_index.begin() + static_cast<std::ptrdiff_t>(old_n), std::uint32_t{0});
   search_->rebuild(p, b);
-  pp_->restore_history(*search_, std::move(history), old_index);
+  particle_contacts_->restore_history(*search_, std::move(history), old_index);
   stats_.rebuilds = search_->rebuilds();
 }
 

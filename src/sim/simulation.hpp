@@ -209,7 +209,7 @@ class Simulation {
   std::uint64_t redone_ = 0;     // adaptive steps redone with a smaller dt
   double dt_ = 0.0;              // s, step the next adaptive step tries
   double last_balance_ = 0.0;    // J, energy_balance() after the previous step
-  double last_active_ = 0.0;     // J, kinetic + rotational + elastic after the previous step
+  double last_active_ = 0.0;     // J, active_energy (kinetic + rotational + |elastic|) after the previous step
   bool energy_checked_ = false;  // last_balance_ / last_active_ are set
   std::size_t removed_ = 0;
   std::uint64_t balance_rows_ = 0;  // load-balance measurements written to balance.csv

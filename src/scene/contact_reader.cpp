@@ -48,7 +48,7 @@ std::string quoted_choices(const std::vector<std::string_view>& names) {
 }
 
 std::string read_choice(const TomlSection& s, std::string_view key, const std::vector<std::string_view>& names) {
-  const std::string name = *s.string(key);
+  std::string name = *s.string(key);
   if (std::find(names.begin(), names.end(), name) == names.end())
     s.fail(key, "expected " + quoted_choices(names) + ", got \"" + name + "\"");
   return name;

@@ -5,7 +5,7 @@
 //
 // An entry is a small struct built from the scene's [fields] (FieldParams) with
 //   kEnergy          how its work enters the energy balance: a potential that the state scan sums
-//                    (integrate: state_scan, gravity and electric), no work (the Lorentz force is
+//                    (integrate/health_scan: gravity and electric), no work (the Lorentz force is
 //                    normal to v), or dissipated: its power -F.v summed over the particles at every
 //                    evaluation, booked by the trapezoid over committed steps into
 //                    InteractionStats::field_dissipated (interact/interaction_stats.hpp)

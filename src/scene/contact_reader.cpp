@@ -107,10 +107,8 @@ void check_law(const TomlSection& s, const std::string& law, const std::string& 
 }
 
 TangentialSpring read_spring_form(const TomlSection& s) {
-  const std::string name = *s.string("tangential_spring");
-  if (name == "total") return TangentialSpring::Total;
-  if (name == "incremental") return TangentialSpring::Incremental;
-  s.fail("tangential_spring", "expected \"total\" or \"incremental\", got \"" + name + "\"");
+  return read_choice(s, "tangential_spring", {"total", "incremental"}) == "total" ? TangentialSpring::Total
+                                                                                  : TangentialSpring::Incremental;
 }
 
 // e in [kMinRestitution, 1]; a smaller e is refused saying why, since it is a plausible input
@@ -165,11 +163,10 @@ void read_contact_pairs(const TomlSection& contact, const Model& model, ContactP
     for (const std::string& n : names) check_material(s, "materials", n, model);
     e.material_a = names[0];
     e.material_b = names[1];
-    if (const auto k = s.string("kind")) {
-      if (*k != "particle_particle" && *k != "particle_barrier")
-        s.fail("kind", "expected \"particle_particle\" or \"particle_barrier\", got \"" + *k + "\"");
-      e.particle_particle = *k == "particle_particle";
-      e.particle_barrier = *k == "particle_barrier";
+    if (s.has("kind")) {
+      const std::string k = read_choice(s, "kind", {"particle_particle", "particle_barrier"});
+      e.particle_particle = k == "particle_particle";
+      e.particle_barrier = k == "particle_barrier";
     }
     read_law_selection(s, e.law, e.cohesion, e.law_keys);
     if (s.has("tangential_spring")) e.tangential_spring = read_spring_form(s);

@@ -73,9 +73,11 @@ class TomlSection {
   }
   // Throws InputError at key k's line (or the table's line when k is absent).
   [[noreturn]] void fail(std::string_view k, const std::string& message) const;
+  // The raw value of key k (null when absent), for shapes the typed getters do not cover (an
+  // array of rows); the caller reports its problems with fail(k, ...).
+  const toml::node* node(std::string_view k) const { return table_->get(k); }
 
  private:
-  const toml::node* node(std::string_view k) const { return table_->get(k); }
   const std::string* file_;
   const toml::table* table_;
   std::string path_;

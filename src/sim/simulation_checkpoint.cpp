@@ -103,6 +103,11 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
       o.vector(std::decay_t<decltype(a)>(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(owned)));
     });
   });
+  // The clumps' bodies, one section per array (a scene with clumps runs on one rank).
+  if (p.has_bodies())
+    p.bodies.for_each_array([&](const char* name, auto& a) {
+      w.section(std::string("bodies/") + name, [&](BinaryWriter& o) { o.vector(a); });
+    });
   if (comm_) interactions_->save_gathered(w, scene_.particles, all);
   else interactions_->save(w, p);
   // The trapezoidal predictor's previous rates, by id (any rank count resumes them).
@@ -178,6 +183,15 @@ void Simulation::resume_from(const std::filesystem::path& file) {
     p.for_each_array([&](const char*, auto& a) { sizes_ok = sizes_ok && a.size() == n; });
     if (!sizes_ok) throw std::runtime_error("particle arrays of different lengths");
     check_restored(p, scene_.model.materials.size());
+    if (p.has_bodies()) {
+      const std::size_t nb = p.bodies.size();
+      p.bodies.for_each_array([&](const char* array, auto& a) {
+        read(std::string("bodies/") + array,
+             [&](BinaryReader& s) { a = s.template vector<typename std::decay_t<decltype(a)>::value_type>(); });
+        if (a.size() != nb) throw std::runtime_error("the checkpoint's bodies differ from the scene's in number");
+      });
+      p.bodies.stale = true;
+    }
     if (!(std::isfinite(time_) && time_ >= 0.0 && std::isfinite(dt_) && dt_ > 0.0))
       throw std::runtime_error(
           fmt::format("the run section's time {} s or step {} s is not finite and >= 0", time_, dt_));

@@ -1,0 +1,181 @@
+#include "scene/clump_reader.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "core/input_error.hpp"
+#include "core/input_file.hpp"
+#include "io/csv_table.hpp"
+#include "model/body_members.hpp"
+
+namespace mpdem {
+
+namespace {
+
+constexpr std::array<std::string_view, 4> kMemberColumns = {"x", "y", "z", "radius"};
+
+// Members from a CSV file with columns x, y, z, radius (m).
+std::vector<ClumpMember> members_from_csv(const std::filesystem::path& file) {
+  const CsvTable t = CsvTable::read(file, kMemberColumns.size());
+  t.check_known(kMemberColumns);
+  for (std::string_view c : kMemberColumns) t.require(c);
+  const int cx = t.column("x"), cy = t.column("y"), cz = t.column("z"), cr = t.column("radius");
+  std::vector<ClumpMember> out;
+  for (const CsvRow& row : t.rows())
+    out.push_back({{t.number(row, cx), t.number(row, cy), t.number(row, cz)},
+                   t.number(row, cr, kPositive, "a radius")});
+  if (out.empty()) throw InputError(t.file(), t.header_line(), "", "expected at least one member row");
+  return out;
+}
+
+// Members given inline: [[x, y, z, radius], ...] (m).
+std::vector<ClumpMember> members_inline(const TomlSection& s) {
+  const toml::array* rows = s.node("members")->as_array();
+  std::vector<ClumpMember> out;
+  const std::string shape = "expected an array of [x, y, z, radius] rows (m), or a CSV file name";
+  if (!rows || rows->empty()) s.fail("members", shape + "; got no members");
+  for (std::size_t k = 0; k < rows->size(); ++k) {
+    const toml::array* row = rows->get(k)->as_array();
+    std::array<double, 4> v{};
+    if (!row || row->size() != 4) s.fail("members", "row " + std::to_string(k + 1) + ": " + shape);
+    for (std::size_t c = 0; c < 4; ++c) {
+      const std::optional<double> d = row->get(c)->value<double>();
+      if (!d || !std::isfinite(*d))
+        s.fail("members", "row " + std::to_string(k + 1) + ": expected finite numbers [x, y, z, radius]");
+      v[c] = *d;
+    }
+    if (!(v[3] > 0.0)) s.fail("members", "row " + std::to_string(k + 1) + ": expected a radius > 0, got " +
+                                             std::to_string(v[3]));
+    out.push_back({{v[0], v[1], v[2]}, v[3]});
+  }
+  return out;
+}
+
+}  // namespace
+
+void read_clump_templates(const TomlSection& root, const std::filesystem::path& dir, Model& model) {
+  for (const TomlSection& s : root.tables("clump", {"name", "members", "mass", "inertia"})) {
+    ClumpTemplate t;
+    t.origin = root.file();
+    t.line = s.line();
+    t.name = s.require(s.string("name"), "name");
+    if (t.name.empty()) s.fail("name", "expected a template name, got an empty string");
+    if (model.clump_index(t.name) >= 0) s.fail("name", "clump '" + t.name + "' is defined twice");
+    if (!s.has("members")) s.fail("members", "missing required key");
+    std::vector<ClumpMember> members;
+    if (s.node("members")->is_string()) {
+      const std::string name = *s.string("members");
+      const std::filesystem::path p = (dir / std::filesystem::path(name)).lexically_normal();
+      if (const std::string why = input_file_problem(p); !why.empty())
+        s.fail("members", "file '" + p.string() + "' " + why);
+      members = members_from_csv(p);
+    } else {
+      members = members_inline(s);
+    }
+    try {
+      t.shape = clump_mass_properties(members);
+    } catch (const std::invalid_argument& e) {
+      s.fail("members", e.what());
+    }
+    if (s.has("mass")) t.mass = s.number("mass", kPositive);
+    if (s.has("inertia")) {
+      const std::vector<double> I = *s.numbers("inertia", 3, 3);
+      for (double v : I)
+        if (!(v > 0.0) || !std::isfinite(v)) s.fail("inertia", "expected three principal moments > 0 (kg m^2)");
+      // The principal moments of a rigid body obey the triangle inequality.
+      const double sum = I[0] + I[1] + I[2], largest = std::max({I[0], I[1], I[2]});
+      if (largest > 0.5 * sum * (1.0 + 1e-12))
+        s.fail("inertia", "no rigid body has these principal moments: the largest exceeds the sum of the other two");
+      t.inertia = Vec3{I[0], I[1], I[2]};
+    }
+    model.clumps.push_back(std::move(t));
+  }
+}
+
+void read_clump_bodies(const std::filesystem::path& file, const Model& model, int material, int clump,
+                       Particles& out) {
+  static constexpr std::array<std::string_view, 18> kColumns = {
+      "id", "x",  "y",  "z",  "q0", "q1",    "q2",          "q3",     "vx",
+      "vy", "vz", "wx", "wy", "wz", "fixed", "temperature", "charge", "radius"};
+  const CsvTable t = CsvTable::read(file, kColumns.size());
+  t.check_known(kColumns);
+  for (std::string_view c : {"id", "x", "y", "z"}) t.require(c);
+  std::array<int, kColumns.size()> col{};
+  for (std::size_t c = 0; c < kColumns.size(); ++c) col[c] = t.column(kColumns[c]);
+  const bool with_q = col[4] >= 0 || col[5] >= 0 || col[6] >= 0 || col[7] >= 0;
+  if (with_q)
+    for (std::size_t c = 4; c < 8; ++c)
+      if (col[c] < 0) t.require(kColumns[c]);  // all four or none
+  const Material& mat = model.materials[static_cast<std::size_t>(material)];
+  const ClumpTemplate& tpl = model.clumps[static_cast<std::size_t>(clump)];
+  const double M = tpl.body_mass(mat.density);
+  const Vec3 I = tpl.body_inertia(mat.density);
+  double member_volume = 0.0;  // m^3, sum over the members (their charge shares)
+  for (const ClumpMember& m : tpl.members()) member_volume += m.r * m.r * m.r;
+  Bodies& B = out.bodies;
+  for (const CsvRow& row : t.rows()) {
+    const auto num = [&](std::size_t c, double fallback) { return t.number_or(row, col[c], fallback, kAnyValue, "a number"); };
+    const std::size_t b = B.size();
+    B.resize(b + 1);
+    B.id[b] = t.integer(row, col[0]);
+    B.clump[b] = clump;
+    B.material[b] = material;
+    B.mass[b] = M;
+    B.inertia[b] = I;
+    B.x[b] = {t.number(row, col[1]), t.number(row, col[2]), t.number(row, col[3])};
+    B.v[b] = {num(8, 0.0), num(9, 0.0), num(10, 0.0)};
+    B.w[b] = {num(11, 0.0), num(12, 0.0), num(13, 0.0)};
+    B.T[b] = t.number_or(row, col[15], mat.temperature, kPositive, "a temperature > 0 (K)");
+    B.charge[b] = num(16, mat.charge);
+    if (!t.missing(row, col[14])) {
+      const std::int64_t f = t.integer(row, col[14]);
+      if (f != 0 && f != 1) t.fail(row, col[14], "expected 0 or 1");
+      B.fixed[b] = static_cast<std::uint8_t>(f);
+    }
+    if (with_q) {
+      const Quat q{t.number(row, col[4]), t.number(row, col[5]), t.number(row, col[6]), t.number(row, col[7])};
+      const double n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+      if (std::abs(n2 - 1.0) > 1e-6)
+        t.fail(row, col[4], "expected a unit quaternion (q0^2 + q1^2 + q2^2 + q3^2 = 1 within 1e-6), got norm^2 " +
+                                std::to_string(n2));
+      B.q[b] = quat_normalized(q);
+    }
+    // The members: free (fixed = 0: a fixed body's members move with it) particles of the body's material whose mass is the body's (the damping mass
+    // of their contacts, docs/physics.md "Clumps") and whose charge is the body's shared by volume
+    // (the near field between members of different bodies).
+    for (std::size_t k = 0; k < tpl.members().size(); ++k) {
+      const ClumpMember& m = tpl.members()[k];
+      const std::size_t i = out.size();
+      out.add(0, material, m.r, mat.density, B.x[b], B.v[b]);
+      out.mass[i] = M;
+      out.inertia[i] = sphere_inertia(M, m.r);
+      out.charge[i] = B.charge[b] * (m.r * m.r * m.r / member_volume);
+      out.body[i] = B.id[b];
+      out.member[i] = static_cast<std::uint32_t>(k);
+    }
+  }
+  if (t.rows().empty()) throw InputError(t.file(), t.header_line(), "", "expected at least one body row");
+  place_members(model.clumps, out);
+}
+
+void assign_member_ids(Particles& p, const std::string& origin) {
+  Bodies& B = p.bodies;
+  if (B.empty()) return;
+  std::map<std::int64_t, std::size_t> seen;
+  for (std::size_t b = 0; b < B.size(); ++b)
+    if (!seen.emplace(B.id[b], b).second)
+      throw InputError(origin, 0, "particles", "clump body id " + std::to_string(B.id[b]) + " is given twice");
+  std::int64_t next = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.body[i] == kNoBody) next = std::max(next, p.id[i] + 1);
+  B.index_members(p);
+  for (std::size_t b = 0; b < B.size(); ++b)
+    for (std::uint32_t s = B.first[b]; s < B.first[b + 1]; ++s) p.id[B.index[s]] = next++;
+}
+
+}  // namespace mpdem

@@ -137,13 +137,16 @@ void read_clump_bodies(const std::filesystem::path& file, const Model& model, in
       if (f != 0 && f != 1) t.fail(row, col[14], "expected 0 or 1");
       B.fixed[b] = static_cast<std::uint8_t>(f);
     }
+    // The row's orientation turns the template as written (its input frame) into the world; the
+    // body's own orientation is that of its principal frame: q_row to_input.
+    B.q[b] = tpl.shape.to_input;
     if (with_q) {
       const Quat q{t.number(row, col[4]), t.number(row, col[5]), t.number(row, col[6]), t.number(row, col[7])};
       const double n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
       if (std::abs(n2 - 1.0) > 1e-6)
         t.fail(row, col[4], "expected a unit quaternion (q0^2 + q1^2 + q2^2 + q3^2 = 1 within 1e-6), got norm^2 " +
                                 std::to_string(n2));
-      B.q[b] = quat_normalized(q);
+      B.q[b] = quat_normalized(quat_multiply(quat_normalized(q), tpl.shape.to_input));
     }
     // The members: free (fixed = 0: a fixed body's members move with it) particles of the body's material whose mass is the body's (the damping mass
     // of their contacts, docs/physics.md "Clumps") and whose charge is the body's shared by volume

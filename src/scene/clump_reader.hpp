@@ -16,7 +16,8 @@ namespace mpdem {
 void read_clump_templates(const TomlSection& root, const std::filesystem::path& dir, Model& model);
 
 // Appends the bodies of the body CSV `file` (columns: id, x, y, z of the centre of mass; optional
-// q0, q1, q2, q3 (unit quaternion w, x, y, z, body -> world), vx, vy, vz, wx, wy, wz, fixed,
+// q0, q1, q2, q3 (unit quaternion w, x, y, z: the template's frame as written -> world; identity
+// by default, so a body stands as its template is written), vx, vy, vz, wx, wy, wz, fixed,
 // temperature, charge; `radius` is accepted and ignored) of template `clump` and material
 // `material` to out.bodies, and their members to `out`'s particles (ids assigned later:
 // assign_member_ids). Throws InputError naming file, line and column.

@@ -53,8 +53,8 @@ void scan_lanes(const Particles& p, std::size_t lo, std::size_t hi, const FieldP
   if (p.has_bodies()) {
     if (periodic)
       scan_range_lanes<kElectric, true, true>(p.x.data(), p.v.data(), p.w.data(), p.mass.data(), p.inertia.data(),
-                                              p.charge.data(), p.T.data(), p.image.data(), lo, hi, fields, domain,
-                                              lane, p.body.data());
+                                              p.charge.data(), p.T.data(), p.image.data(), lo, hi, fields, domain, lane,
+                                              p.body.data());
     else
       scan_range_lanes<kElectric, false, true>(p.x.data(), p.v.data(), p.w.data(), p.mass.data(), p.inertia.data(),
                                                p.charge.data(), p.T.data(), p.image.data(), lo, hi, fields, domain,

@@ -61,8 +61,8 @@ void kick_drift(Particles& p, const std::uint8_t* fixed, double dt) {
 #pragma omp parallel for schedule(static) reduction(+ : fast) if (n > kParallelThreshold)
   for (std::size_t c = 0; c < chunks; ++c)
     fast += kick_drift_range<kRotation, kFixed>(p.x.data(), p.v.data(), p.w.data(), p.q.data(), p.force.data(),
-                                                p.torque.data(), p.mass.data(), p.inertia.data(), fixed,
-                                                c * kChunk, std::min(n, (c + 1) * kChunk), dt);
+                                                p.torque.data(), p.mass.data(), p.inertia.data(), fixed, c * kChunk,
+                                                std::min(n, (c + 1) * kChunk), dt);
   if (fast == 0) return;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {

@@ -33,7 +33,9 @@ struct GravityBodyForce {
   explicit GravityBodyForce(const FieldParams& f) : g(f.gravity) {}
   static bool on() { return true; }  // the first entry: it starts every force sum
   template <class P>
-  Vec3 force(const P& p, std::size_t i) const { return gravity_force(p.mass[i], g); }
+  Vec3 force(const P& p, std::size_t i) const {
+    return gravity_force(p.mass[i], g);
+  }
 };
 
 struct ElectricBodyForce {
@@ -42,7 +44,9 @@ struct ElectricBodyForce {
   explicit ElectricBodyForce(const FieldParams& f) : E(f.electric) {}
   bool on() const { return norm2(E) > 0.0; }
   template <class P>
-  Vec3 force(const P& p, std::size_t i) const { return electric_force(p.charge[i], E); }
+  Vec3 force(const P& p, std::size_t i) const {
+    return electric_force(p.charge[i], E);
+  }
 };
 
 struct MagneticBodyForce {
@@ -51,7 +55,9 @@ struct MagneticBodyForce {
   explicit MagneticBodyForce(const FieldParams& f) : B(f.magnetic) {}
   bool on() const { return norm2(B) > 0.0; }
   template <class P>
-  Vec3 force(const P& p, std::size_t i) const { return magnetic_force(p.charge[i], p.v[i], B); }
+  Vec3 force(const P& p, std::size_t i) const {
+    return magnetic_force(p.charge[i], p.v[i], B);
+  }
 };
 
 // Fixed particles keep their prescribed motion: the drag leaves them alone.
@@ -61,7 +67,9 @@ struct DragBodyForce {
   explicit DragBodyForce(const FieldParams& f) : c(f.drag) {}
   bool on() const { return c > 0.0; }
   template <class P>
-  Vec3 force(const P& p, std::size_t i) const { return p.fixed[i] ? Vec3{} : drag_force(c, p.v[i]); }
+  Vec3 force(const P& p, std::size_t i) const {
+    return p.fixed[i] ? Vec3{} : drag_force(c, p.v[i]);
+  }
 };
 
 template <class... E>
@@ -81,7 +89,9 @@ class BodyForceList {
   // Some entry that dissipates acts: the pass sums its power.
   bool any_dissipated() const { return any_dissipated(std::index_sequence_for<E...>{}); }
   template <class P>
-  Vec3 first_force(const P& p, std::size_t i) const { return std::get<0>(entries_).force(p, i); }
+  Vec3 first_force(const P& p, std::size_t i) const {
+    return std::get<0>(entries_).force(p, i);
+  }
   // N, the sum of the acting entries' forces on particle i, as a right fold over the list
   // (f0 + (f1 + (f2 + ...))); adds their dissipated power -F.v (W) to `lost`.
   template <class P>
@@ -106,8 +116,7 @@ class BodyForceList {
     any = true;
   }
   template <class P, std::size_t... I>
-  void fold_right(const P& p, std::size_t i, double& lost, Vec3& sum, bool& any,
-                  std::index_sequence<I...>) const {
+  void fold_right(const P& p, std::size_t i, double& lost, Vec3& sum, bool& any, std::index_sequence<I...>) const {
     (add<kCount - 1 - I>(p, i, lost, sum, any), ...);  // last entry first
   }
 

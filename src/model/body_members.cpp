@@ -31,6 +31,43 @@ void set_members(const std::vector<ClumpTemplate>& clumps, Particles& p) {
 
 }  // namespace
 
+void add_body(const Model& model, int material, int clump, const BodyInit& init, Particles& p) {
+  const Material& mat = model.materials[static_cast<std::size_t>(material)];
+  const ClumpTemplate& tpl = model.clumps[static_cast<std::size_t>(clump)];
+  Bodies& B = p.bodies;
+  const std::size_t b = B.size();
+  B.resize(b + 1);
+  B.id[b] = init.id;
+  B.clump[b] = clump;
+  B.material[b] = material;
+  B.mass[b] = tpl.body_mass(mat.density);
+  B.inertia[b] = tpl.body_inertia(mat.density);
+  B.charge[b] = init.charge;
+  B.fixed[b] = init.fixed ? 1 : 0;
+  B.x[b] = init.x;
+  B.v[b] = init.v;
+  B.w[b] = init.w;
+  B.q[b] = quat_normalized(quat_multiply(init.q, tpl.shape.to_input));
+  B.T[b] = init.T;
+  double volume = 0.0;  // m^3, sum over the members (their charge shares)
+  for (const ClumpMember& m : tpl.members()) volume += m.r * m.r * m.r;
+  const Mat3 R = quat_matrix(B.q[b]);
+  for (std::size_t k = 0; k < tpl.members().size(); ++k) {
+    const ClumpMember& m = tpl.members()[k];
+    const Vec3 d = mat_apply(R, m.x);  // m
+    const std::size_t i = p.size();
+    p.add(0, material, m.r, mat.density, init.x + d, init.v + cross(init.w, d));
+    p.mass[i] = B.mass[b];
+    p.inertia[i] = sphere_inertia(B.mass[b], m.r);
+    p.charge[i] = init.charge * (m.r * m.r * m.r / volume);
+    p.w[i] = init.w;
+    p.q[i] = B.q[b];
+    p.T[i] = init.T;
+    p.body[i] = init.id;
+    p.member[i] = static_cast<std::uint32_t>(k);
+  }
+}
+
 void place_members(const std::vector<ClumpTemplate>& clumps, Particles& p) { set_members<true>(clumps, p); }
 void move_members(const std::vector<ClumpTemplate>& clumps, Particles& p) { set_members<false>(clumps, p); }
 

@@ -6,9 +6,28 @@
 #include <vector>
 
 #include "model/clump_template.hpp"
+#include "model/scene.hpp"
 #include "state/particles.hpp"
 
 namespace mpdem {
+
+// A new body: its id, state and properties as a scene gives them.
+struct BodyInit {
+  std::int64_t id = 0;
+  Vec3 x;             // m, centre of mass
+  Vec3 v, w;          // m/s, rad/s (world)
+  Quat q;             // the template's frame as written -> world
+  double T = 293.15;  // K
+  double charge = 0;  // C
+  bool fixed = false;
+};
+
+// Appends a body of template `clump` and material `material` to p.bodies and its members to p:
+// free spheres (fixed = 0: a fixed body's members move with it) whose mass is the body's (the
+// damping mass of their contacts, docs/physics.md "Clumps") and whose charge is the body's shared
+// in proportion to their volumes (the near field between members of different bodies); ids 0
+// (assign_member_ids gives them theirs). The body's principal frame is init.q to_input.
+void add_body(const Model& model, int material, int clump, const BodyInit& init, Particles& p);
 
 // Sets position, velocity, angular velocity, orientation and temperature of every member.
 void place_members(const std::vector<ClumpTemplate>& clumps, Particles& p);

@@ -15,10 +15,10 @@ namespace mpdem {
 
 struct ClumpTemplate {
   std::string name;
-  ClumpMassProperties shape;     // per unit density; shape.members_principal: the members as used
-  std::optional<double> mass;    // kg, the scene's override of rho V
-  std::optional<Vec3> inertia;   // kg m^2, the scene's override of the principal moments (I1, I2, I3)
-  std::string origin;            // the file that defines it, and its line, for messages
+  ClumpMassProperties shape;    // per unit density; shape.members_principal: the members as used
+  std::optional<double> mass;   // kg, the scene's override of rho V
+  std::optional<Vec3> inertia;  // kg m^2, the scene's override of the principal moments (I1, I2, I3)
+  std::string origin;           // the file that defines it, and its line, for messages
   std::size_t line = 0;
 
   const std::vector<ClumpMember>& members() const { return shape.members_principal; }

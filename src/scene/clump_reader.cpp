@@ -27,8 +27,8 @@ std::vector<ClumpMember> members_from_csv(const std::filesystem::path& file) {
   const int cx = t.column("x"), cy = t.column("y"), cz = t.column("z"), cr = t.column("radius");
   std::vector<ClumpMember> out;
   for (const CsvRow& row : t.rows())
-    out.push_back({{t.number(row, cx), t.number(row, cy), t.number(row, cz)},
-                   t.number(row, cr, kPositive, "a radius")});
+    out.push_back(
+        {{t.number(row, cx), t.number(row, cy), t.number(row, cz)}, t.number(row, cr, kPositive, "a radius")});
   if (out.empty()) throw InputError(t.file(), t.header_line(), "", "expected at least one member row");
   return out;
 }
@@ -49,8 +49,8 @@ std::vector<ClumpMember> members_inline(const TomlSection& s) {
         s.fail("members", "row " + std::to_string(k + 1) + ": expected finite numbers [x, y, z, radius]");
       v[c] = *d;
     }
-    if (!(v[3] > 0.0)) s.fail("members", "row " + std::to_string(k + 1) + ": expected a radius > 0, got " +
-                                             std::to_string(v[3]));
+    if (!(v[3] > 0.0))
+      s.fail("members", "row " + std::to_string(k + 1) + ": expected a radius > 0, got " + std::to_string(v[3]));
     out.push_back({{v[0], v[1], v[2]}, v[3]});
   }
   return out;
@@ -97,11 +97,10 @@ void read_clump_templates(const TomlSection& root, const std::filesystem::path& 
   }
 }
 
-void read_clump_bodies(const std::filesystem::path& file, const Model& model, int material, int clump,
-                       Particles& out) {
-  static constexpr std::array<std::string_view, 18> kColumns = {
-      "id", "x",  "y",  "z",  "q0", "q1",    "q2",          "q3",     "vx",
-      "vy", "vz", "wx", "wy", "wz", "fixed", "temperature", "charge", "radius"};
+void read_clump_bodies(const std::filesystem::path& file, const Model& model, int material, int clump, Particles& out) {
+  static constexpr std::array<std::string_view, 18> kColumns = {"id", "x",  "y",     "z",           "q0",     "q1",
+                                                                "q2", "q3", "vx",    "vy",          "vz",     "wx",
+                                                                "wy", "wz", "fixed", "temperature", "charge", "radius"};
   const CsvTable t = CsvTable::read(file, kColumns.size());
   t.check_known(kColumns);
   for (std::string_view c : {"id", "x", "y", "z"}) t.require(c);
@@ -112,58 +111,34 @@ void read_clump_bodies(const std::filesystem::path& file, const Model& model, in
     for (std::size_t c = 4; c < 8; ++c)
       if (col[c] < 0) t.require(kColumns[c]);  // all four or none
   const Material& mat = model.materials[static_cast<std::size_t>(material)];
-  const ClumpTemplate& tpl = model.clumps[static_cast<std::size_t>(clump)];
-  const double M = tpl.body_mass(mat.density);
-  const Vec3 I = tpl.body_inertia(mat.density);
-  double member_volume = 0.0;  // m^3, sum over the members (their charge shares)
-  for (const ClumpMember& m : tpl.members()) member_volume += m.r * m.r * m.r;
-  Bodies& B = out.bodies;
   for (const CsvRow& row : t.rows()) {
-    const auto num = [&](std::size_t c, double fallback) { return t.number_or(row, col[c], fallback, kAnyValue, "a number"); };
-    const std::size_t b = B.size();
-    B.resize(b + 1);
-    B.id[b] = t.integer(row, col[0]);
-    B.clump[b] = clump;
-    B.material[b] = material;
-    B.mass[b] = M;
-    B.inertia[b] = I;
-    B.x[b] = {t.number(row, col[1]), t.number(row, col[2]), t.number(row, col[3])};
-    B.v[b] = {num(8, 0.0), num(9, 0.0), num(10, 0.0)};
-    B.w[b] = {num(11, 0.0), num(12, 0.0), num(13, 0.0)};
-    B.T[b] = t.number_or(row, col[15], mat.temperature, kPositive, "a temperature > 0 (K)");
-    B.charge[b] = num(16, mat.charge);
+    const auto num = [&](std::size_t c, double fallback) {
+      return t.number_or(row, col[c], fallback, kAnyValue, "a number");
+    };
+    BodyInit init;
+    init.id = t.integer(row, col[0]);
+    init.x = {t.number(row, col[1]), t.number(row, col[2]), t.number(row, col[3])};
+    init.v = {num(8, 0.0), num(9, 0.0), num(10, 0.0)};
+    init.w = {num(11, 0.0), num(12, 0.0), num(13, 0.0)};
+    init.T = t.number_or(row, col[15], mat.temperature, kPositive, "a temperature > 0 (K)");
+    init.charge = num(16, mat.charge);
     if (!t.missing(row, col[14])) {
       const std::int64_t f = t.integer(row, col[14]);
       if (f != 0 && f != 1) t.fail(row, col[14], "expected 0 or 1");
-      B.fixed[b] = static_cast<std::uint8_t>(f);
+      init.fixed = f == 1;
     }
-    // The row's orientation turns the template as written (its input frame) into the world; the
-    // body's own orientation is that of its principal frame: q_row to_input.
-    B.q[b] = tpl.shape.to_input;
     if (with_q) {
       const Quat q{t.number(row, col[4]), t.number(row, col[5]), t.number(row, col[6]), t.number(row, col[7])};
       const double n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
       if (std::abs(n2 - 1.0) > 1e-6)
-        t.fail(row, col[4], "expected a unit quaternion (q0^2 + q1^2 + q2^2 + q3^2 = 1 within 1e-6), got norm^2 " +
-                                std::to_string(n2));
-      B.q[b] = quat_normalized(quat_multiply(quat_normalized(q), tpl.shape.to_input));
+        t.fail(row, col[4],
+               "expected a unit quaternion (q0^2 + q1^2 + q2^2 + q3^2 = 1 within 1e-6), got norm^2 " +
+                   std::to_string(n2));
+      init.q = quat_normalized(q);
     }
-    // The members: free (fixed = 0: a fixed body's members move with it) particles of the body's material whose mass is the body's (the damping mass
-    // of their contacts, docs/physics.md "Clumps") and whose charge is the body's shared by volume
-    // (the near field between members of different bodies).
-    for (std::size_t k = 0; k < tpl.members().size(); ++k) {
-      const ClumpMember& m = tpl.members()[k];
-      const std::size_t i = out.size();
-      out.add(0, material, m.r, mat.density, B.x[b], B.v[b]);
-      out.mass[i] = M;
-      out.inertia[i] = sphere_inertia(M, m.r);
-      out.charge[i] = B.charge[b] * (m.r * m.r * m.r / member_volume);
-      out.body[i] = B.id[b];
-      out.member[i] = static_cast<std::uint32_t>(k);
-    }
+    add_body(model, material, clump, init, out);
   }
   if (t.rows().empty()) throw InputError(t.file(), t.header_line(), "", "expected at least one body row");
-  place_members(model.clumps, out);
 }
 
 void assign_member_ids(Particles& p, const std::string& origin) {

@@ -21,8 +21,7 @@ void read_clump_templates(const TomlSection& root, const std::filesystem::path& 
 // temperature, charge; `radius` is accepted and ignored) of template `clump` and material
 // `material` to out.bodies, and their members to `out`'s particles (ids assigned later:
 // assign_member_ids). Throws InputError naming file, line and column.
-void read_clump_bodies(const std::filesystem::path& file, const Model& model, int material, int clump,
-                       Particles& out);
+void read_clump_bodies(const std::filesystem::path& file, const Model& model, int material, int clump, Particles& out);
 
 // Gives the member spheres ids after the largest id of the free spheres, in body order and then
 // template order (a member's id names it in the contact output); checks that body ids are unique.

@@ -190,8 +190,7 @@ void check_clump_support(const TomlSection& root, const Scene& scene) {
     const auto refuse = [&](const std::string& what) {
       throw InputError(root.file(), src.line, "clump", "clumps do not run with " + what + " yet");
     };
-    if (p.time.integrator != Integrator::Verlet)
-      refuse("the trapezoidal rule: set [time] integrator = \"verlet\"");
+    if (p.time.integrator != Integrator::Verlet) refuse("the trapezoidal rule: set [time] integrator = \"verlet\"");
     if (p.domain.bounded && p.domain.any_periodic()) refuse("periodic boundaries");
     if (!p.inlets.empty()) refuse("[[inlet]] entries");
     if (!p.sinks.empty()) refuse("[[sink]] entries");
@@ -366,9 +365,9 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& fil
   scene.file = std::filesystem::absolute(file).lexically_normal();
   scene.dir = scene.file.parent_path();
   const TomlSection root(name, doc, "",
-                         {"time", "tolerance", "analysis", "gravity", "fields", "near_field", "contact", "thermal",
-                          "material", "particles", "barriers", "domain", "neighbor", "output", "checks", "inlet",
-                          "sink", "parallel", "coarse_grain", "clump"});
+                         {"time",    "tolerance", "analysis",  "gravity",  "fields",       "near_field", "contact",
+                          "thermal", "material",  "particles", "barriers", "domain",       "neighbor",   "output",
+                          "checks",  "inlet",     "sink",      "parallel", "coarse_grain", "clump"});
   Params& p = scene.model.params;
   read_time(root, p.time);
   read_tolerance(root, p.tolerance);

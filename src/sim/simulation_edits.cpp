@@ -34,7 +34,8 @@ std::int64_t Simulation::next_free_id() const {
 
 void Simulation::add_particles(Particles fresh) {
   refuse_several_ranks(comm_, "adding particles");
-  if (scene_.particles.has_bodies()) throw InputError("", 0, "clump", "adding particles to a scene with clumps is not supported yet");
+  if (scene_.particles.has_bodies())
+    throw InputError("", 0, "clump", "adding particles to a scene with clumps is not supported yet");
   if (fresh.size() == 0) return;
   Particles& p = scene_.particles;
   std::unordered_set<std::int64_t> taken(p.id.begin(), p.id.begin() + static_cast<std::ptrdiff_t>(p.size()));

@@ -38,8 +38,9 @@ void Bodies::index_members(const Particles& p) {
     held[i] = p.fixed[i];
     if (p.body[i] == kNoBody) continue;
     const std::ptrdiff_t b = find(p.body[i]);
-    if (b < 0) throw std::logic_error("particle " + std::to_string(p.id[i]) + " names body " +
-                                      std::to_string(p.body[i]) + ", which does not exist");
+    if (b < 0)
+      throw std::logic_error("particle " + std::to_string(p.id[i]) + " names body " + std::to_string(p.body[i]) +
+                             ", which does not exist");
     owner[i] = static_cast<std::uint32_t>(b);
     held[i] = 1;
     ++first[static_cast<std::size_t>(b) + 1];

@@ -1,6 +1,7 @@
 #include "physics/rigid_rotation.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace mpdem {
 
@@ -33,11 +34,20 @@ Quat free_rotation(const Quat& q, const Vec3& I, const Vec3& L, double h) {
     const Quat p = rotate_by_increment(q, (h / Ia) * L);
     return rotate_about_body_axis(p, s, h * pi_s * (1.0 / Is - 1.0 / Ia));
   }
-  Quat r = axis_flow(q, I, L, 0, 0.5 * h);
-  r = axis_flow(r, I, L, 1, 0.5 * h);
-  r = axis_flow(r, I, L, 2, h);
-  r = axis_flow(r, I, L, 1, 0.5 * h);
-  return axis_flow(r, I, L, 0, 0.5 * h);
+  // The axes by ascending moment, a the smallest: a (h/2), b (h/2), c (h), b (h/2), a (h/2). The
+  // order sets the error constant: the fastest sub-rotation (smallest moment) outermost is the best
+  // of the six orders or close to it, the largest moment outermost up to 30 times worse
+  // (tests/physics/test_rigid_rotation.cpp). Templates' moments are ascending already; a scene's
+  // `inertia` override need not be.
+  int a = 0, b = 1, c = 2;
+  if (component(I, b) < component(I, a)) std::swap(a, b);
+  if (component(I, c) < component(I, b)) std::swap(b, c);
+  if (component(I, b) < component(I, a)) std::swap(a, b);
+  Quat r = axis_flow(q, I, L, a, 0.5 * h);
+  r = axis_flow(r, I, L, b, 0.5 * h);
+  r = axis_flow(r, I, L, c, h);
+  r = axis_flow(r, I, L, b, 0.5 * h);
+  return axis_flow(r, I, L, a, 0.5 * h);
 }
 
 }  // namespace mpdem

@@ -1,6 +1,7 @@
 #pragma once
 // Rotation of a rigid body with principal moments I = (I1, I2, I3) (kg m^2, body frame) and
-// orientation q (principal frame -> world), docs/physics.md "Clumps: rigid-body rotation".
+// orientation q (principal frame -> world), docs/physics.md section 16 "Clumps: rigid-body
+// dynamics".
 //
 // Euler's equations in the body frame, I dw'/dt + w' x (I w') = tau', are integrated in the
 // form of the angular momentum: the world-frame L = R I R^T w changes only by the torque (the
@@ -8,10 +9,10 @@
 // step h is the symmetric splitting of Dullweber, Leimkuhler and McLachlan (J. Chem. Phys. 107
 // (1997) 5840): the kinetic energy is sum_k pi_k^2 / (2 I_k) with pi = R^T L, and each term's
 // flow is an exact rotation about body axis k by h pi_k / I_k (pi_k is constant along it), composed
-// as 1 (h/2), 2 (h/2), 3 (h), 2 (h/2), 1 (h/2). Every sub-rotation keeps L exactly (up to
-// round-off) and the composition is symplectic and time-reversible: the rotational energy error
-// is O(h^2) and bounded (it oscillates, no drift). An axisymmetric or spherical body's free
-// rotation is done exactly instead (a sphere: one rotation by h w about the fixed w).
+// as a (h/2), b (h/2), c (h), b (h/2), a (h/2) with I_a <= I_b <= I_c. Every sub-rotation keeps L
+// exactly (up to round-off) and the composition is symplectic and time-reversible: the rotational
+// energy error is O(h^2) and bounded (it oscillates, no drift). An axisymmetric or spherical
+// body's free rotation is done exactly instead (a sphere: one rotation by h w about the fixed w).
 #include "core/rotation.hpp"
 #include "core/vec3.hpp"
 

@@ -1,4 +1,4 @@
-// Rigid clumps in motion (docs/physics.md "Clumps"), velocity Verlet: a one-member clump follows
+// Rigid clumps in motion (docs/physics.md "Clumps"), both integrators where it says: a one-member clump follows
 // the sphere's trajectory; a dumbbell on an incline rolls (mu above the rolling limit) or slides
 // (below) with the closed-form accelerations; the restitution of n simultaneous member contacts
 // follows the documented damping-mass rule; a body's members never touch each other; the run does
@@ -23,9 +23,10 @@ namespace {
 constexpr double kR = 1e-3;   // m
 constexpr double kDt = 2e-6;  // s, about the Rayleigh time / 40 for the default material (E = 1e7 Pa)
 
-Scene verlet_scene(double mu, double duration) {
+Scene clump_scene(double mu, double duration, Integrator integ = Integrator::Verlet) {
   Scene s = make_scene(kDt, duration);
-  s.model.params.time.integrator = Integrator::Verlet;
+  s.model.params.time.integrator = integ;
+  s.model.params.time.phi = 0.5;
   set_contact_law(s, mu);
   s.model.params.checks.max_overlap = 0.2;
   s.model.params.fields.gravity = {};  // tests that want it set it
@@ -51,8 +52,8 @@ struct Impact {
   bool pair;     // a second one, mirrored through the origin, instead of the floor
 };
 
-Particles run_impact(const Impact& c, bool clumps, int steps) {
-  Scene s = verlet_scene(0.3, 1.0);
+Particles run_impact(const Impact& c, bool clumps, int steps, Integrator integ) {
+  Scene s = clump_scene(0.3, 1.0, integ);
   const int one = add_template(s, "one", {{{0.0, 0.0, 0.0}, kR}});
   const auto add = [&](std::int64_t id, const Vec3& x, const Vec3& v, const Vec3& w) {
     if (clumps) add_clump(s, id, one, x, v, w);
@@ -77,14 +78,16 @@ TEST(ClumpDynamics, OneMemberClumpFollowsTheSphere) {
                                      {{0, 0, 1.05 * kR}, {0.4, 0, -0.3}, {}, false},
                                      {{0, 0, 1.05 * kR}, {0.1, 0, -0.3}, {0, 300, 50}, false},
                                      {{1.02 * kR, 0.3 * kR, 0}, {-0.4, 0, 0}, {0, 0, 100}, true}};
-  for (const Impact& c : cases) {
-    const Particles spheres = run_impact(c, false, 3000), clumps = run_impact(c, true, 3000);
-    ASSERT_EQ(spheres.size(), clumps.size());
-    // A contact happened: the velocity changed.
-    EXPECT_GT(norm(spheres.v[0] - c.v), 0.1 * norm(c.v));
-    EXPECT_LT(trajectory_difference(clumps, spheres, kR, norm(c.v), norm(c.v) / kR), 1e-12)
-        << "impact v = " << c.v.x << ", " << c.v.y << ", " << c.v.z;
-  }
+  for (const Impact& c : cases)
+    for (Integrator integ : {Integrator::Verlet, Integrator::Trapezoidal}) {
+      const Particles spheres = run_impact(c, false, 3000, integ), clumps = run_impact(c, true, 3000, integ);
+      ASSERT_EQ(spheres.size(), clumps.size());
+      // A contact happened: the velocity changed.
+      EXPECT_GT(norm(spheres.v[0] - c.v), 0.1 * norm(c.v));
+      EXPECT_LT(trajectory_difference(clumps, spheres, kR, norm(c.v), norm(c.v) / kR), 1e-12)
+          << "impact v = " << c.v.x << ", " << c.v.y << ", " << c.v.z
+          << (integ == Integrator::Verlet ? " verlet" : " trapezoidal");
+    }
 }
 
 namespace {
@@ -98,9 +101,9 @@ struct SlopeMotion {
   double rolling;  // -, w r / v: 1 rolling without slip
 };
 
-SlopeMotion dumbbell_on_incline(double mu, double theta) {
+SlopeMotion dumbbell_on_incline(double mu, double theta, Integrator integ) {
   const double g = 9.81, t1 = 0.02, t2 = 0.05;
-  Scene s = verlet_scene(mu, t2);
+  Scene s = clump_scene(mu, t2, integ);
   s.model.params.fields.gravity = {g * std::sin(theta), 0.0, -g * std::cos(theta)};
   const int db = add_template(s, "dumbbell", {{{0.0, -kR, 0.0}, kR}, {{0.0, kR, 0.0}, kR}});
   add_clump(s, 1, db, {0.0, 0.0, kR});
@@ -119,16 +122,19 @@ SlopeMotion dumbbell_on_incline(double mu, double theta) {
 
 TEST(ClumpDynamics, DumbbellRollsOrSlidesDownAnIncline) {
   const double g = 9.81, theta = 20.0 * std::numbers::pi / 180.0;
-  // Rolling without slip: a = g sin(theta) / (1 + I/(M r^2)) with I = 0.4 M r^2 about the axis.
-  const SlopeMotion roll = dumbbell_on_incline(0.3, theta);
-  EXPECT_LT(rel(roll.a, g * std::sin(theta) / 1.4), 1e-3) << roll.a;
-  EXPECT_NEAR(roll.rolling, 1.0, 1e-3);
-  // Below the rolling limit tan(theta) 0.4 / 1.4 = 0.104 it slides: a = g (sin - mu cos).
-  const double mu = 0.05;
-  ASSERT_LT(mu, std::tan(theta) * 0.4 / 1.4);
-  const SlopeMotion slide = dumbbell_on_incline(mu, theta);
-  EXPECT_LT(rel(slide.a, g * (std::sin(theta) - mu * std::cos(theta))), 1e-3) << slide.a;
-  EXPECT_LT(slide.rolling, 0.9);
+  for (Integrator integ : {Integrator::Verlet, Integrator::Trapezoidal}) {
+    SCOPED_TRACE(integ == Integrator::Verlet ? "verlet" : "trapezoidal");
+    // Rolling without slip: a = g sin(theta) / (1 + I/(M r^2)) with I = 0.4 M r^2 about the axis.
+    const SlopeMotion roll = dumbbell_on_incline(0.3, theta, integ);
+    EXPECT_LT(rel(roll.a, g * std::sin(theta) / 1.4), 1e-3) << roll.a;
+    EXPECT_NEAR(roll.rolling, 1.0, 1e-3);
+    // Below the rolling limit tan(theta) 0.4 / 1.4 = 0.104 it slides: a = g (sin - mu cos).
+    const double mu = 0.05;
+    ASSERT_LT(mu, std::tan(theta) * 0.4 / 1.4);
+    const SlopeMotion slide = dumbbell_on_incline(mu, theta, integ);
+    EXPECT_LT(rel(slide.a, g * (std::sin(theta) - mu * std::cos(theta))), 1e-3) << slide.a;
+    EXPECT_LT(slide.rolling, 0.9);
+  }
 }
 
 namespace {
@@ -136,7 +142,7 @@ namespace {
 // Restitution of a body of `members` falling flat (no gravity) on the floor at 0.5 m/s, all its
 // lowest members touching at once.
 double floor_restitution(const std::vector<ClumpMember>& members) {
-  Scene s = verlet_scene(0.0, 1.0);
+  Scene s = clump_scene(0.0, 1.0);
   const int c = add_template(s, "shape", members);
   const double v0 = 0.5;
   add_clump(s, 1, c, {0.0, 0.0, 1.001 * kR}, {0.0, 0.0, -v0});
@@ -173,7 +179,7 @@ TEST(ClumpDynamics, RestitutionOfSimultaneousMemberContacts) {
 
 TEST(ClumpDynamics, MembersOfOneBodyNeverInteract) {
   // Overlapping members (centres r apart) at rest, no gravity: no force within the body.
-  Scene s = verlet_scene(0.5, 1.0);
+  Scene s = clump_scene(0.5, 1.0);
   const int c = add_template(s, "lens", {{{0, 0, 0}, kR}, {{kR, 0, 0}, kR}, {{0.5 * kR, kR, 0}, kR}});
   add_clump(s, 1, c, {0.0, 0.0, 0.0});
   finish_clumps(s);
@@ -189,7 +195,7 @@ namespace {
 // Tetrahedral clumps dropped into a box in a heap: the bodies' states after `steps`.
 Bodies clump_pile(int threads, int steps) {
   omp_set_num_threads(threads);
-  Scene s = verlet_scene(0.5, 1.0);
+  Scene s = clump_scene(0.5, 1.0);
   s.model.params.fields.gravity = {0.0, 0.0, -9.81};
   const double a = 0.7 * kR;
   const int tet = add_template(s, "tetra", {{{a, a, a}, kR}, {{a, -a, -a}, kR}, {{-a, a, -a}, kR}, {{-a, -a, a}, kR}});

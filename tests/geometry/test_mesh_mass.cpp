@@ -98,38 +98,15 @@ TEST(MeshMass, Icosahedron) {
 }
 
 // An independent computation of the same polyhedron: tetrahedra from the sphere's centre (not the
-// bounding box's), each integrated by the 4-point rule exact for quadratics (points
-// alpha a_i + beta (the other three), alpha = 0.5854..., beta = 0.1381..., weights V/4).
+// bounding box's centre) integrated by a quadrature rule (test::quadrature_mass).
 TEST(MeshMass, IcosphereAgreesWithTetrahedronQuadrature) {
   const Vec3 centre{0.3, -0.2, 0.1};
   const TriangleMesh m = test::icosphere(3, 0.05, centre);
-  const double alpha = 0.58541019662496845446, beta = 0.13819660112501051518;
-  double vol = 0.0;
-  Vec3 first;
-  Mat3 second{};  // about the origin
-  for (std::size_t t = 0; t < m.size(); ++t) {
-    const Vec3 q[4] = {centre, m.corner(t, 0), m.corner(t, 1), m.corner(t, 2)};
-    const double v = dot(q[1] - q[0], cross(q[2] - q[0], q[3] - q[0])) / 6;
-    vol += v;
-    const Vec3 sum = q[0] + q[1] + q[2] + q[3];
-    for (int k = 0; k < 4; ++k) {
-      const Vec3 x = q[k] * alpha + (sum - q[k]) * beta;
-      first += x * (v / 4);
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) second[i][j] += x[i] * x[j] * (v / 4);
-    }
-  }
-  const Vec3 c = first / vol;
-  Mat3 inertia{};
-  double trace = 0.0;
-  for (int i = 0; i < 3; ++i) trace += second[i][i] - vol * c[i] * c[i];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) inertia[i][j] = (i == j ? trace : 0.0) - (second[i][j] - vol * c[i] * c[j]);
-
+  const test::QuadratureMass q = test::quadrature_mass(m, centre);
   const MeshMassProperties p = mesh_mass_properties(m);
-  expect_rel(p.volume, vol, 1e-12, "volume");
-  for (int k = 0; k < 3; ++k) EXPECT_NEAR(p.centroid[k], c[k], 1e-12 * norm(centre));
-  expect_tensor(p.inertia, inertia, 1e-12);
+  expect_rel(p.volume, q.volume, 1e-12, "volume");
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(p.centroid[k], q.centroid[k], 1e-12 * norm(centre));
+  expect_tensor(p.inertia, q.inertia, 1e-12);
 }
 
 // Icospheres inscribed in the sphere of radius R converge to its volume 4/3 pi R^3 and moment

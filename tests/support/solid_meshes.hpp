@@ -1,6 +1,7 @@
 #pragma once
 // Closed triangle surfaces with outward normals for the mass-property and clump-fill tests: a box,
-// a regular octahedron and an icosphere (a subdivided icosahedron with its vertices on a sphere).
+// a regular octahedron and an icosphere (a subdivided icosahedron with its vertices on a sphere);
+// an independent quadrature of their mass properties.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/rotation.hpp"
 #include "core/vec3.hpp"
 #include "geometry/triangle_mesh.hpp"
 
@@ -82,6 +84,42 @@ inline TriangleMesh icosphere(int level, double r, const Vec3& centre = {}) {
   for (const Vec3& x : v) m.add_vertex(centre + x * r);
   for (const auto& t : f) m.add_triangle(t[0], t[1], t[2]);
   return m;
+}
+
+// Mass properties per unit density computed independently of geometry/mesh_mass: the signed
+// tetrahedra (apex, triangle), each integrated by the 4-point rule exact for quadratics (points
+// alpha q_i + beta (the other three), alpha = 0.5854..., beta = 0.1381..., weights V/4), the
+// second moments summed about the origin and then moved to the centroid.
+struct QuadratureMass {
+  double volume = 0.0;  // m^3
+  Vec3 centroid;        // m
+  Mat3 inertia{};       // m^5, about the centroid
+};
+
+inline QuadratureMass quadrature_mass(const TriangleMesh& m, const Vec3& apex) {
+  const double alpha = 0.58541019662496845446, beta = 0.13819660112501051518;
+  QuadratureMass out;
+  Vec3 first;
+  Mat3 second{};  // about the origin
+  for (std::size_t t = 0; t < m.size(); ++t) {
+    const Vec3 q[4] = {apex, m.corner(t, 0), m.corner(t, 1), m.corner(t, 2)};
+    const double v = dot(q[1] - q[0], cross(q[2] - q[0], q[3] - q[0])) / 6;
+    out.volume += v;
+    const Vec3 sum = q[0] + q[1] + q[2] + q[3];
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 x = q[k] * alpha + (sum - q[k]) * beta;
+      first += x * (v / 4);
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) second[i][j] += x[i] * x[j] * (v / 4);
+    }
+  }
+  const Vec3 c = first / out.volume;
+  out.centroid = c;
+  double trace = 0.0;
+  for (int i = 0; i < 3; ++i) trace += second[i][i] - out.volume * c[i] * c[i];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) out.inertia[i][j] = (i == j ? trace : 0.0) - (second[i][j] - out.volume * c[i] * c[j]);
+  return out;
 }
 
 }  // namespace mpdem::test

@@ -26,7 +26,7 @@ struct ClumpArgs {
   std::filesystem::path surface;  // closed STL (or barrier CSV)
   std::filesystem::path output;   // template CSV
   int count = 0;                  // spheres
-  int resolution = 31;            // grid points along the longest bounding-box edge (odd: one at its middle)
+  int resolution = 31;            // grid points along the longest bounding-box edge (odd: one at each middle)
 };
 
 constexpr int kMaxResolution = 256;  // 256^3 grid points: 16.7 million bytes of state

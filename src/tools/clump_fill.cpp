@@ -25,6 +25,7 @@ struct SampleGrid {
     s = std::max({ext.x, ext.y, ext.z}) / resolution;
     for (int a = 0; a < 3; ++a) {
       n[a] = std::max(1, static_cast<int>(std::ceil(ext[a] / s - 1e-9)));
+      if ((n[a] - resolution) % 2 != 0) ++n[a];  // the longest edge's parity: odd K, a point at every middle
       first[a] = lo[a] + 0.5 * (ext[a] - n[a] * s) + 0.5 * s;
     }
   }

@@ -4,8 +4,9 @@
 //
 // Method: greedy maximum coverage of inscribed spheres on a grid.
 //  1. Sample points: a cubic grid of spacing s = (longest bounding-box edge) / resolution, cell
-//     centred and symmetric about the bounding box's centre; the points inside the solid (ray
-//     parity, MeshSolid) stand for its volume, s^3 each.
+//     centred and symmetric about the bounding box's centre, with as many points per axis as
+//     cover the box and have the parity of `resolution` (odd: a point at the middle of every
+//     axis); the points inside the solid (ray parity, MeshSolid) stand for its volume.
 //  2. Candidates: a sphere at every sample point, with radius its distance to the surface (exact
 //     point-triangle distances): the largest sphere there that stays inside the solid.
 //  3. Greedy: repeatedly take the candidate whose sphere covers the most sample points not yet

@@ -73,9 +73,9 @@ int clump(const ClumpArgs& a) {
                  : "",
              a.output.string());
   fmt::print("\n{}", shape_error_table(exact, tpl));
-  fmt::print("\nsolid: exact for the triangulated surface (divergence theorem); template: the union of the spheres "
-             "(relative integration error {:.1e} in volume, {:.1e} in the moments). Centroid error: the offset over "
-             "V^(1/3). Moments about the centroid, ascending; times the density: kg m^2.\n",
+  fmt::print("\nsolid: exact for the triangulated surface (divergence theorem). template: the union of the spheres\n"
+             "(relative integration error {:.1e} in volume, {:.1e} in the moments). Centroid error: the distance\n"
+             "between the centroids over V^(1/3). Moments about each centroid, ascending; times the density: kg m^2.\n",
              tpl.volume_error, tpl.inertia_error);
   return 0;
 }

@@ -5,8 +5,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/symmetric_eigen.hpp"
-
 namespace mpdem {
 
 MeshMassProperties mesh_mass_properties(const TriangleMesh& mesh) {
@@ -48,9 +46,6 @@ MeshMassProperties mesh_mass_properties(const TriangleMesh& mesh) {
   const double trace = cov[0][0] + cov[1][1] + cov[2][2];
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) out.inertia[i][j] = (i == j ? trace : 0.0) - cov[i][j];
-  const SymmetricEigen e = symmetric_eigen(out.inertia);
-  out.principal = e.values;
-  out.axes = e.vectors;
   return out;
 }
 

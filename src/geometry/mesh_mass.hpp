@@ -15,6 +15,7 @@
 // the inertia tensor is I = tr(C_c) 1 - C_c (m^5; times the density: kg m^2). Exact up to
 // rounding for a polyhedron: a triangulated curved surface gives the values of the polyhedron.
 // The reference point o keeps the sums free of the cancellation a far-away origin would cause.
+// Principal moments and axes: physics/principal_axes.hpp.
 //
 // Orientation: triangles counter-clockwise seen from outside (outward normals) give a positive
 // volume. When the sum is negative (inward normals, as barrier meshes have), every sum changes
@@ -23,8 +24,6 @@
 // The surface must be closed (every edge shared by two triangles, consistently oriented):
 // for an open surface the sums depend on o and mean nothing. This function does not check it
 // (MeshSolid and closed_surface_problem do).
-#include <array>
-
 #include "core/rotation.hpp"
 #include "core/vec3.hpp"
 #include "geometry/triangle_mesh.hpp"
@@ -32,12 +31,10 @@
 namespace mpdem {
 
 struct MeshMassProperties {
-  double volume = 0.0;                // m^3 (the mass per unit density)
-  Vec3 centroid;                      // m
-  Mat3 inertia{};                     // m^5, inertia tensor about the centroid per unit density, mesh axes
-  std::array<double, 3> principal{};  // m^5, principal moments (eigenvalues of inertia), ascending
-  Mat3 axes{};                        // column k (axes[i][k]) is the unit principal axis of principal[k]
-  bool inward = false;                // the triangles were wound inward: signs flipped
+  double volume = 0.0;  // m^3 (the mass per unit density)
+  Vec3 centroid;        // m
+  Mat3 inertia{};       // m^5, inertia tensor about the centroid per unit density, mesh axes
+  bool inward = false;  // the triangles were wound inward: signs flipped
 };
 
 // Throws std::invalid_argument when the mesh has no triangles or encloses no (finite) volume.

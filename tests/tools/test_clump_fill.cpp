@@ -242,7 +242,16 @@ TEST(ClumpCommand, SpherePrintsThePolyhedronsExactValues) {
   EXPECT_NEAR(p.volume, q.volume, 1e-9 * q.volume);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(p.centroid[k], q.centroid[k], 1e-9 * 0.01);
   for (const double i : p.moment) EXPECT_NEAR(i, moment, 1e-9 * moment);
-  EXPECT_EQ(read_template(d / "sphere.csv").size(), 1u);
+  // The template column: one member, so the exact sphere volume and moment 2/5 r^2 of it; the
+  // error column to its 4 printed digits.
+  const std::vector<ClumpMember> members = read_template(d / "sphere.csv");
+  ASSERT_EQ(members.size(), 1u);
+  const double r3 = members[0].r * members[0].r * members[0].r, sphere = 4.0 / 3.0 * kPi * r3;
+  const std::vector<double> volume = table_row(r.out, "volume (m^3)");
+  ASSERT_EQ(volume.size(), 3u);
+  EXPECT_NEAR(volume[1], sphere, 1e-9 * sphere);
+  EXPECT_NEAR(volume[2], (sphere - q.volume) / q.volume, 1e-3 * std::abs(volume[2]));
+  EXPECT_NEAR(table_row(r.out, "I1 (m^5)")[1], 0.4 * members[0].r * members[0].r * sphere, 1e-9 * moment);
   std::filesystem::remove_all(d);
 }
 

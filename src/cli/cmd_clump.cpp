@@ -29,7 +29,8 @@ struct ClumpArgs {
   int resolution = 31;            // grid points along the longest bounding-box edge (odd: one at each middle)
 };
 
-constexpr int kMaxResolution = 256;  // 256^3 grid points: 16.7 million bytes of state
+// At most 128^3 grid points: the time grows as K^3 to K^5 (docs/tools.md "mpdem clump").
+constexpr int kMaxResolution = 128;
 
 void write_template(const std::filesystem::path& file, const std::vector<ClumpMember>& members) {
   write_file_atomically(

@@ -269,7 +269,7 @@ TEST(ClumpCommand, BadInputExitsTwo) {
       {"clump open.stl -n 4 -o t.csv", "open.stl", "not closed"},
       {"clump junk.stl -n 4 -o t.csv", "junk.stl:4", "vertex"},
       {"clump cube.stl -n 0 -o t.csv", "'-n'", "at least 1"},
-      {"clump cube.stl -n 4 --resolution 1 -o t.csv", "'--resolution'", "2 to 256"},
+      {"clump cube.stl -n 4 --resolution 1 -o t.csv", "'--resolution'", "2 to 128"},
       {"clump missing.stl -n 4 -o t.csv", "missing.stl", ""},
   };
   for (const Case& c : cases) {

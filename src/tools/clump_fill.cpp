@@ -71,6 +71,8 @@ void for_each_row_in_sphere(const SampleGrid& g, const Candidate& c, F&& f) {
     }
 }
 
+// Whether the sphere at grid point `at` lies inside the sphere of one of its 26 neighbours
+// (radius: m, per grid point), up to 1e-9 s.
 bool inside_a_neighbour(const SampleGrid& g, const std::vector<double>& radius, const std::array<int, 3>& at) {
   const double r = radius[g.index(at[0], at[1], at[2])];
   for (int di = -1; di <= 1; ++di)
@@ -93,7 +95,7 @@ ClumpFill fill_with_spheres(const TriangleMesh& mesh, int count, int resolution)
   const SampleGrid g(solid.lo(), solid.hi(), resolution);
 
   enum : std::int8_t { kOutside = -1, kUncovered = 0, kCovered = 1 };
-  std::vector<std::int8_t> state(g.size(), kOutside);  // per grid point
+  std::vector<std::int8_t> state(g.size(), kOutside);  // per grid point: outside, or a sample point
   std::vector<double> radius(g.size(), 0.0);           // m, per grid point: distance to the surface (0 outside)
   ClumpFill out;
   out.spacing = g.s;
@@ -123,7 +125,7 @@ ClumpFill fill_with_spheres(const TriangleMesh& mesh, int count, int resolution)
   // Per grid row (i, j), prefix counts of the uncovered points: a sphere's gain is a sum over its
   // rows of O(1) differences.
   const std::size_t stride = static_cast<std::size_t>(g.n[2]) + 1;
-  std::vector<std::uint32_t> prefix(g.row(g.n[0] - 1, g.n[1] - 1) * stride + stride);  // per row: n[2] + 1
+  std::vector<std::uint32_t> prefix(static_cast<std::size_t>(g.n[0]) * g.n[1] * stride);  // per row: n[2] + 1
   const auto count_row = [&](std::size_t r) {
     std::uint32_t acc = 0;
     for (int k = 0; k < g.n[2]; ++k) {
@@ -149,7 +151,7 @@ ClumpFill fill_with_spheres(const TriangleMesh& mesh, int count, int resolution)
       queue.push(e);
       continue;
     }
-    if (e.gain == 0) break;  // the best gains nothing: every sample point is covered
+    if (e.gain == 0) break;  // the best gains nothing: every sample point some candidate reaches is covered
     const Candidate& c = cand[e.cand];
     for_each_row_in_sphere(g, c, [&](std::size_t r, int k0, int k1) {
       for (int k = k0; k <= k1; ++k)

@@ -260,7 +260,7 @@ TEST(ClumpCommand, BadInputExitsTwo) {
   const auto d = test::fresh_dir("clump_bad");
   ASSERT_EQ(test::run_mpdem("mesh box --size 0.01 0.01 0.01 -o open.stl", d).status, 0);  // no lid
   test::write_text(d / "junk.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 zero\n");
-  test::write_text(d / "cube.stl", "");
+  test::write_text(d / "empty.stl", "");
   ASSERT_EQ(test::run_mpdem("mesh box --size 0.01 0.01 0.01 --closed -o cube.stl", d).status, 0);
   struct Case {
     std::string args, where, what;
@@ -271,6 +271,7 @@ TEST(ClumpCommand, BadInputExitsTwo) {
       {"clump cube.stl -n 0 -o t.csv", "'-n'", "at least 1"},
       {"clump cube.stl -n 4 --resolution 1 -o t.csv", "'--resolution'", "2 to 128"},
       {"clump missing.stl -n 4 -o t.csv", "missing.stl", ""},
+      {"clump empty.stl -n 4 -o t.csv", "empty.stl", ""},
   };
   for (const Case& c : cases) {
     const test::CommandResult r = test::run_mpdem(c.args, d);

@@ -64,9 +64,10 @@ int dispatch(int argc, char** argv) {
   bench_cmd->add_option("--format", bench.format, "VTK format of the snapshots")
       ->check(CLI::IsMember({"ascii", "binary", "compressed"}));
 
-  mpdem::cli::ToolAction tool;  // set by `generate` / `mesh` when selected
+  mpdem::cli::ToolAction tool;  // set by `generate` / `mesh` / `clump` when selected
   mpdem::cli::add_generate_command(app, tool);
   mpdem::cli::add_mesh_command(app, tool);
+  mpdem::cli::add_clump_command(app, tool);
   mpdem::cli::add_validate_command(app, tool);
   mpdem::cli::add_plot_command(app, tool);
 

@@ -166,6 +166,7 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
   commit(p, b, f, req, rep);
   ++rep.evaluations;
   history_.remember(std::span<const std::int64_t>(p.id.data(), p.size()), a0_, b0_, dt);
+  if (bodies) bodies_.remember(dt);
   return rep;
 }
 

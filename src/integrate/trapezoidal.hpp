@@ -38,6 +38,9 @@ class TrapezoidalIntegrator {
   // The predictor's history: the last accepted step's start rates, by particle id.
   RateHistory& rate_history() { return history_; }
   const RateHistory& rate_history() const { return history_; }
+  // The clumps' bodies' part of the step (and of the predictor's history).
+  TrapezoidalBodies& bodies() { return bodies_; }
+  const TrapezoidalBodies& bodies() const { return bodies_; }
 
  private:
   // Per field: sums of |y_K - y_(K-1)|^2, |y_K - y(t)|^2, |y_K - y_(K-2)|^2 and |y_K|^2.

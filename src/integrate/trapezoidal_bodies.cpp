@@ -1,5 +1,7 @@
 #include "integrate/trapezoidal_bodies.hpp"
 
+#include <cmath>
+#include <stdexcept>
 #include <type_traits>
 
 #include "model/body_members.hpp"
@@ -10,6 +12,8 @@ namespace mpdem {
 namespace {
 
 // m^2, the body's reach squared: the rotational norms' unit (a sphere's is its radius).
+bool spherical(const Vec3& I) { return I.x == I.y && I.y == I.z; }
+
 double reach2(const Model& model, const Bodies& B, std::size_t b) {
   const double r = model.clumps[static_cast<std::size_t>(B.clump[b])].reach();
   return r * r;
@@ -31,10 +35,12 @@ void TrapezoidalBodies::save_start(const Particles& p, const Model& model) {
   L0_.resize(nb);
   a0_.resize(nb);
   h0_.resize(nb);
+  r0_.resize(nb);
   free_ = 0;
   for (std::size_t b = 0; b < nb; ++b) {
     L0_[b] = angular_momentum(B.q[b], B.inertia[b], B.w[b]);
     a0_[b] = B.fixed[b] ? Vec3{} : B.force[b] / B.mass[b];
+    r0_[b] = spherical(B.inertia[b]) ? B.torque[b] / B.inertia[b].x : B.torque[b];
     free_ += B.fixed[b] ? 0 : 1;
     h0_[b] = B.heat[b] / (B.mass[b] * model.materials[static_cast<std::size_t>(B.material[b])].heat_capacity);
   }
@@ -58,19 +64,24 @@ void TrapezoidalBodies::update(Particles& p, const Model& model, double dt, bool
   wp_ = B.w;
   alphap_ = alpha_;
   Tp_ = B.T;
+  // The predictor's extrapolation (with a history of as many bodies), as the spheres'.
+  const bool history = predictor && dt_prev_ > 0.0 && a_prev_.size() == B.size();
+  const double stretch = history ? dt / dt_prev_ : 0.0;
   for (std::size_t b = 0; b < B.size(); ++b) {
     const bool held = B.fixed[b] != 0;
-    const Vec3 a1 = predictor || held ? a0_[b] : B.force[b] / B.mass[b];
-    const Vec3 v = held ? v0_[b] : v0_[b] + dt * (keep * a0_[b] + phi * a1);
+    const Vec3 a0 = a0_[b], r0 = r0_[b];
+    const Vec3 a1 = held ? a0 : !predictor ? B.force[b] / B.mass[b] : history ? a0 + stretch * (a0 - a_prev_[b]) : a0;
+    const Vec3 r1 = !predictor ? B.torque[b] : history ? r0 + stretch * (r0 - r_prev_[b]) : r0;
+    const Vec3 v = held ? v0_[b] : v0_[b] + dt * (keep * a0 + phi * a1);
     const Vec3 x = held ? x0_[b] + dt * v0_[b] : x0_[b] + dt * (keep * v0_[b] + phi * v);
     Vec3 w = w0_[b], alpha = dt * w0_[b];
     if (rotation && !held) {
-      const Vec3 tau1 = predictor ? tau0_[b] : B.torque[b];
       const Vec3 I = B.inertia[b];
-      if (I.x == I.y && I.y == I.z) {  // a sphere's update, operation for operation
-        w = w0_[b] + dt * (keep * (tau0_[b] / I.x) + phi * (tau1 / I.x));
+      if (spherical(I)) {  // a sphere's update, operation for operation
+        const Vec3 b1 = predictor ? r1 : r1 / I.x;
+        w = w0_[b] + dt * (keep * r0 + phi * b1);
       } else {
-        const Vec3 L = L0_[b] + dt * (keep * tau0_[b] + phi * tau1);
+        const Vec3 L = L0_[b] + dt * (keep * r0 + phi * r1);
         w = angular_velocity(predictor ? q0_[b] : B.q[b], I, L);
       }
       alpha = dt * (keep * w0_[b] + phi * w);
@@ -113,6 +124,21 @@ void TrapezoidalBodies::update(Particles& p, const Model& model, double dt, bool
     alpha_[b] = alpha;
   }
   place_members(model.clumps, p);
+}
+
+void TrapezoidalBodies::save(BinaryWriter& w) const {
+  w.value(dt_prev_);
+  w.vector(a_prev_);
+  w.vector(r_prev_);
+}
+
+void TrapezoidalBodies::restore(BinaryReader& r, std::size_t bodies) {
+  dt_prev_ = r.value<double>();
+  a_prev_ = r.vector<Vec3>();
+  r_prev_ = r.vector<Vec3>();
+  if (!std::isfinite(dt_prev_) || dt_prev_ < 0.0 ||
+      (dt_prev_ > 0.0 && (a_prev_.size() != bodies || r_prev_.size() != bodies)))
+    throw std::runtime_error("the bodies' rate history does not match the scene's bodies");
 }
 
 void TrapezoidalBodies::accept_midpoint(Particles& p, const Model& model) {

@@ -125,6 +125,7 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
     o.value(rates.dt());
     o.vector(sorted);
   });
+  if (p.has_bodies()) w.section("body_rate_history", [&](BinaryWriter& o) { trapezoidal_.bodies().save(o); });
   // What decides the next insertions and the sinks' totals ([[inlet]], [[sink]]).
   if (inlets_) w.section("inlets", [&](BinaryWriter& o) { inlets_->save(o); });
   if (sinks_) w.section("sinks", [&](BinaryWriter& o) { sinks_->save(o); });
@@ -201,6 +202,8 @@ void Simulation::resume_from(const std::filesystem::path& file) {
       const auto dt = s.value<double>();
       trapezoidal_.rate_history().set_records(s.vector<RateRecord>(), dt);
     });
+    if (p.has_bodies())
+      read("body_rate_history", [&](BinaryReader& s) { trapezoidal_.bodies().restore(s, p.bodies.size()); });
     if (inlets_) read("inlets", [&](BinaryReader& s) { inlets_->restore(s); });
     if (sinks_) read("sinks", [&](BinaryReader& s) { sinks_->restore(s); });
     // The output series are restored once run() has opened the outputs.

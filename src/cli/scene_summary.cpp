@@ -1,5 +1,7 @@
 #include "cli/scene_summary.hpp"
 
+#include "model/body_members.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -8,6 +10,7 @@
 #include <vector>
 
 #include "contact/contact_table.hpp"
+#include "model/body_members.hpp"
 #include "physics/barrier_moduli.hpp"
 #include "physics/time_step_estimate.hpp"
 #include "sim/simulation.hpp"
@@ -119,7 +122,7 @@ void print_summary(const Scene& scene) {
   const Params& prm = scene.model.params;
   double mass = 0.0, rmin = std::numeric_limits<double>::infinity(), rmax = 0.0, q = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    mass += p.mass[i];
+    mass += represented_mass(scene.model, p, i);
     rmin = std::min(rmin, p.radius[i]);
     rmax = std::max(rmax, p.radius[i]);
     q += p.charge[i];

@@ -49,8 +49,6 @@ void add_body(const Model& model, int material, int clump, const BodyInit& init,
   B.w[b] = init.w;
   B.q[b] = quat_normalized(quat_multiply(init.q, tpl.shape.to_input));
   B.T[b] = init.T;
-  double volume = 0.0;  // m^3, sum over the members (their charge shares)
-  for (const ClumpMember& m : tpl.members()) volume += m.r * m.r * m.r;
   const Mat3 R = quat_matrix(B.q[b]);
   for (std::size_t k = 0; k < tpl.members().size(); ++k) {
     const ClumpMember& m = tpl.members()[k];
@@ -59,13 +57,24 @@ void add_body(const Model& model, int material, int clump, const BodyInit& init,
     p.add(0, material, m.r, mat.density, init.x + d, init.v + cross(init.w, d));
     p.mass[i] = B.mass[b];
     p.inertia[i] = sphere_inertia(B.mass[b], m.r);
-    p.charge[i] = init.charge * (m.r * m.r * m.r / volume);
+    p.charge[i] = init.charge * tpl.share(k);
     p.w[i] = init.w;
     p.q[i] = B.q[b];
     p.T[i] = init.T;
     p.body[i] = init.id;
     p.member[i] = static_cast<std::uint32_t>(k);
   }
+}
+
+double represented_mass(const Model& model, const Particles& p, std::size_t i) {
+  if (p.body[i] == kNoBody) return p.mass[i];
+  const auto b = static_cast<std::size_t>(p.bodies.find(p.body[i]));
+  return p.bodies.mass[b] * model.clumps[static_cast<std::size_t>(p.bodies.clump[b])].share(p.member[i]);
+}
+
+Vec3 represented_velocity(const Particles& p, std::size_t i) {
+  if (p.body[i] == kNoBody) return p.v[i];
+  return p.bodies.v[static_cast<std::size_t>(p.bodies.find(p.body[i]))];
 }
 
 void place_members(const std::vector<ClumpTemplate>& clumps, Particles& p) { set_members<true>(clumps, p); }

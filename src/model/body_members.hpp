@@ -29,6 +29,13 @@ struct BodyInit {
 // (assign_member_ids gives them theirs). The body's principal frame is init.q to_input.
 void add_body(const Model& model, int material, int clump, const BodyInit& init, Particles& p);
 
+// kg, the mass particle i stands for in sums over the particles (coarse-grained fields, thermal
+// energy, totals): a free sphere's own; a member's share (ClumpTemplate::share) of its body's mass.
+// A member's Particles::mass is its body's whole mass, the damping mass of its contacts.
+double represented_mass(const Model& model, const Particles& p, std::size_t i);
+// m/s, the velocity particle i stands for in such sums: a member's is its body's.
+Vec3 represented_velocity(const Particles& p, std::size_t i);
+
 // Sets position, velocity, angular velocity, orientation and temperature of every member.
 void place_members(const std::vector<ClumpTemplate>& clumps, Particles& p);
 // Sets velocity and angular velocity only (positions unchanged: the second half kick).

@@ -30,6 +30,14 @@ struct ClumpTemplate {
     if (inertia) return *inertia;
     return (body_mass(rho) / shape.volume) * shape.principal;
   }
+  // -, member k's share of the body (mass, charge, coarse-grained fields): its volume over the
+  // sum of the members' volumes.
+  double share(std::size_t k) const {
+    double sum = 0.0;
+    for (const ClumpMember& m : members()) sum += m.r * m.r * m.r;
+    const double r = members()[k].r;
+    return r * r * r / sum;
+  }
   // m, the largest distance of a member's surface from the centre of mass.
   double reach() const {
     double r = 0.0;

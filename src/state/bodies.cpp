@@ -15,6 +15,10 @@ void Bodies::resize(std::size_t n) {
 }
 
 std::ptrdiff_t Bodies::find(std::int64_t body_id) const {
+  if (sorted_ids_.size() != size()) {  // not indexed yet
+    const auto it = std::find(id.begin(), id.end(), body_id);
+    return it == id.end() ? -1 : it - id.begin();
+  }
   const auto it = std::lower_bound(sorted_ids_.begin(), sorted_ids_.end(), body_id);
   if (it == sorted_ids_.end() || *it != body_id) return -1;
   return by_id_[static_cast<std::size_t>(it - sorted_ids_.begin())];

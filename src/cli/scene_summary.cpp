@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "check/clump_summary.hpp"
 #include "contact/contact_table.hpp"
 #include "physics/barrier_moduli.hpp"
 #include "physics/time_step_estimate.hpp"
@@ -119,11 +120,12 @@ void print_summary(const Scene& scene) {
   const Params& prm = scene.model.params;
   double mass = 0.0, rmin = std::numeric_limits<double>::infinity(), rmax = 0.0, q = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    mass += p.mass[i];
+    mass += p.body[i] == kNoBody ? p.mass[i] : 0.0;  // a member carries its body's mass (contacts' damping mass)
     rmin = std::min(rmin, p.radius[i]);
     rmax = std::max(rmax, p.radius[i]);
     q += p.charge[i];
   }
+  for (const double m : p.bodies.mass) mass += m;
   fmt::print("scene: {}\n", scene.file.string());
   if (p.size() == 0)
     fmt::print("particles: 0 at t = 0{}\n", prm.inlets.empty() ? "" : " (the inlets below insert them)");
@@ -134,6 +136,7 @@ void print_summary(const Scene& scene) {
   for (const Material& m : scene.model.materials)
     fmt::print("  {:<16} density {:.6g} kg/m^3  E {}  nu {:.4g}\n", m.name, m.density,
                is_rigid(m) ? std::string("rigid") : fmt::format("{:.6g} Pa", m.young), m.poisson);
+  for (const std::string& line : clump_summary_lines(scene)) fmt::print("{}\n", line);
   fmt::print("barriers: {} triangles in {} groups\n", b.size(), b.group_names.size());
   for (std::size_t g = 0; g < b.group_names.size(); ++g) {
     std::size_t n = 0, rigid = 0;

@@ -81,6 +81,19 @@ TEST(ClumpChecks, MemberAndFreeSphereOverlapNameTheBody) {
                                               "(member of body 7 and a free sphere) by 0.0005 m (50%)"});
 }
 
+TEST(ClumpChecks, MemberInABarrierNamesItsBody) {
+  TempDir d("mpdem_clump_check");
+  // A floor at z = 0 (elements 1 and 2); body 6 at z = r/2: both members overlap it by r/2 (50 %).
+  d.write("floor.csv", "id,x1,y1,z1,x2,y2,z2,x3,y3,z3\n1,-0.1,-0.1,0,0.1,-0.1,0,0.1,0.1,0\n"
+                       "2,-0.1,-0.1,0,0.1,0.1,0,-0.1,0.1,0\n");
+  const Scene s = load(d, "[[barriers]]\nfile = \"floor.csv\"\n", "id,x,y,z\n6,0.01,0.02,0.0005\n");
+  const SceneProblems problems = check_scene(s);
+  ASSERT_EQ(problems.size(), 1u) << all_messages(problems);
+  expect_contains(located_text(problems[0]),
+                  {"2 contacts of particles of 'bodies.csv' with barrier elements of 'floor.csv'",
+                   "(member of body 6) and element id", "by 0.0005 m (50%)"});
+}
+
 TEST(ClumpChecks, BodyWithAMemberOutsideTheDomainIsNamedOnce) {
   TempDir d("mpdem_clump_check");
   // Body 3's centre is inside, its member at y = +0.0005 is not (the domain ends at y = 0.0002);

@@ -160,4 +160,25 @@ TEST(ClumpChecks, CommandPrintsTemplatesAndBadSceneExitsTwoWithOneMessage) {
     expect_contains(bad.err, {"scene.toml:11: 'clump.members'", "(radius) is -0.001, expected > 0"});
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
   }
+  // The other classes of bad templates, through `mpdem check`.
+  d.write("m.csv", "x,y,z\n0,0,0\n");
+  const std::string clump = "[[clump]]\nname = \"peanut\"\n";  // lines 9, 10
+  struct Case {
+    std::string scene, where, what;
+  };
+  const std::vector<Case> cases = {
+      {clump + "members = []\n" + kBodies, "scene.toml:11: 'clump.members'", "got an empty array"},
+      {clump + "members = [[0, 0, nan, 0.001]]\n" + kBodies, "scene.toml:11: 'clump.members'", "is not finite"},
+      {clump + "members = \"m.csv\"\n" + kBodies, "m.csv:1: 'radius'", "missing required column"},
+      {clump + "members = [[0, 0, 0, 0.001]]\n[[particles]]\nfile = \"bodies.csv\"\nclump = \"peanuts\"\n",
+       "scene.toml:14: 'particles.clump'", "unknown clump 'peanuts' (known: peanut)"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    d.write("scene.toml", kHead + c.scene);
+    const test::CommandResult bad = test::run_mpdem("check scene.toml", d.path);
+    EXPECT_EQ(bad.status, 2);
+    expect_contains(bad.err, {c.where, c.what});
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  }
 }

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/scene.hpp"
@@ -386,5 +387,23 @@ TEST(ClumpReader, BadParticlesEntriesNameLineAndKey) {
     const std::string msg = load_error(d, text);
     expect_contains(msg, {c.where});
     expect_contains(msg, c.expect);
+  }
+}
+
+TEST(ClumpReader, UnusableBodyMassIsNamedAtTheBodyCsv) {
+  // The template is fine per unit density; with the material's density (or an overridden mass)
+  // the body's mass or moments are not numbers the run can divide by.
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {kDumbbell + "mass = 1e308\n", "principal moment I1 overflows"},  // M / V * J
+      {kDumbbell, "the body mass underflows"},                          // density 1e-300 below
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    SCOPED_TRACE(cases[k].second);
+    TempDir d("mpdem_clump_size");
+    std::string text = scene_text(cases[k].first);
+    if (k == 1) text.replace(text.find("density = 2500"), 14, "density = 1e-300");
+    const std::string msg = load_error(d, text);
+    expect_contains(
+        msg, {(d.path / "bodies.csv").string() + ":1: ", "clump 'dumbbell' of material 'glass'", cases[k].second});
   }
 }

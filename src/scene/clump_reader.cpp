@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -11,6 +12,7 @@
 #include "core/input_error.hpp"
 #include "core/input_file.hpp"
 #include "io/csv_table.hpp"
+#include "model/derived_limits.hpp"
 #include "model/body_members.hpp"
 
 namespace mpdem {
@@ -33,27 +35,35 @@ std::vector<ClumpMember> members_from_csv(const std::filesystem::path& file) {
   return out;
 }
 
-// Members given inline: [[x, y, z, radius], ...] (m).
+// Members given inline: [[x, y, z, radius], ...] (m); a bad row is reported at its own line.
 std::vector<ClumpMember> members_inline(const TomlSection& s) {
-  const toml::array* rows = s.node("members")->as_array();
+  static constexpr std::array<Range, 4> kRanges = {kAnyValue, kAnyValue, kAnyValue, kPositive};
+  const auto rows = s.number_rows("members", kMemberColumns, kRanges,
+                                  "[[0.0, -0.001, 0.0, 0.001], [0.0, 0.001, 0.0, 0.001]] (m), or the name of a CSV "
+                                  "file with columns x,y,z,radius");
   std::vector<ClumpMember> out;
-  const std::string shape = "expected an array of [x, y, z, radius] rows (m), or a CSV file name";
-  if (!rows || rows->empty()) s.fail("members", shape + "; got no members");
-  for (std::size_t k = 0; k < rows->size(); ++k) {
-    const toml::array* row = rows->get(k)->as_array();
-    std::array<double, 4> v{};
-    if (!row || row->size() != 4) s.fail("members", "row " + std::to_string(k + 1) + ": " + shape);
-    for (std::size_t c = 0; c < 4; ++c) {
-      const std::optional<double> d = row->get(c)->value<double>();
-      if (!d || !std::isfinite(*d))
-        s.fail("members", "row " + std::to_string(k + 1) + ": expected finite numbers [x, y, z, radius]");
-      v[c] = *d;
-    }
-    if (!(v[3] > 0.0))
-      s.fail("members", "row " + std::to_string(k + 1) + ": expected a radius > 0, got " + std::to_string(v[3]));
-    out.push_back({{v[0], v[1], v[2]}, v[3]});
-  }
+  for (const std::vector<double>& v : *rows) out.push_back({{v[0], v[1], v[2]}, v[3]});
   return out;
+}
+
+// The template's volume and principal moments per unit density must be usable: members of
+// radius 1e200 m (or 1e-200 m) make them overflow (underflow).
+void check_template_size(const TomlSection& s, const ClumpMassProperties& shape) {
+  std::string why = usable_problem(shape.volume, "the volume of the union of the members", "m^3");
+  for (int k = 0; k < 3 && why.empty(); ++k)
+    why = usable_problem(shape.principal[k], "principal moment " + std::to_string(k + 1) + " per unit density", "m^5");
+  if (!why.empty()) s.fail("members", why + "; expected member radii and positions of a usable size");
+}
+
+// The mass and principal moments of a body of template t and material mat must be usable.
+std::string body_mass_problem(const ClumpTemplate& t, const Material& mat) {
+  std::string why = usable_problem(t.body_mass(mat.density), "the body mass", "kg");
+  const Vec3 I = t.body_inertia(mat.density);
+  for (int k = 0; k < 3 && why.empty(); ++k)
+    why = usable_problem(I[k], "principal moment I" + std::to_string(k + 1), "kg m^2");
+  if (why.empty()) return "";
+  return "clump '" + t.name + "' of material '" + mat.name + "' (density " + number_text(mat.density) +
+         " kg/m^3): " + why + "; expected a mass and moments the run can divide by";
 }
 
 }  // namespace
@@ -70,6 +80,7 @@ void read_clump_templates(const TomlSection& root, const std::filesystem::path& 
     std::vector<ClumpMember> members;
     if (s.node("members")->is_string()) {
       const std::string name = *s.string("members");
+      if (name.empty()) s.fail("members", "expected a CSV file name (columns x,y,z,radius), got an empty string");
       const std::filesystem::path p = (dir / std::filesystem::path(name)).lexically_normal();
       if (const std::string why = input_file_problem(p); !why.empty())
         s.fail("members", "file '" + p.string() + "' " + why);
@@ -82,6 +93,7 @@ void read_clump_templates(const TomlSection& root, const std::filesystem::path& 
     } catch (const std::invalid_argument& e) {
       s.fail("members", e.what());
     }
+    check_template_size(s, t.shape);
     if (s.has("mass")) t.mass = s.number("mass", kPositive);
     if (s.has("inertia")) {
       const std::vector<double> I = *s.numbers("inertia", 3, 3);
@@ -109,14 +121,31 @@ void read_clump_bodies(const std::filesystem::path& file, const Model& model, in
   const bool with_q = col[4] >= 0 || col[5] >= 0 || col[6] >= 0 || col[7] >= 0;
   if (with_q)
     for (std::size_t c = 4; c < 8; ++c)
-      if (col[c] < 0) t.require(kColumns[c]);  // all four or none
+      if (col[c] < 0)
+        throw InputError(t.file(), t.header_line(), std::string(kColumns[c]),
+                         "missing column: the orientation takes all of q0, q1, q2, q3 (unit quaternion w, x, y, z) "
+                         "or none (identity)");
   const Material& mat = model.materials[static_cast<std::size_t>(material)];
+  if (const std::string why = body_mass_problem(model.clumps[static_cast<std::size_t>(clump)], mat); !why.empty())
+    throw InputError(t.file(), t.header_line(), "", why);
+  // Body ids are unique across all body files: the ids read before this file, and this file's
+  // ids with their lines.
+  const std::set<std::int64_t> earlier(out.bodies.id.begin(), out.bodies.id.end());
+  std::map<std::int64_t, std::size_t> here;
   for (const CsvRow& row : t.rows()) {
     const auto num = [&](std::size_t c, double fallback) {
       return t.number_or(row, col[c], fallback, kAnyValue, "a number");
     };
     BodyInit init;
     init.id = t.integer(row, col[0]);
+    if (init.id < 0) t.fail(row, col[0], "expected a body id >= 0, got " + std::to_string(init.id));
+    if (earlier.count(init.id))
+      t.fail(row, col[0],
+             "body id " + std::to_string(init.id) + " is given twice (also by an earlier [[particles]] entry)");
+    if (const auto [at, fresh] = here.emplace(init.id, row.line); !fresh)
+      t.fail(row, col[0],
+             "body id " + std::to_string(init.id) + " is given twice (also at line " + std::to_string(at->second) +
+                 ")");
     init.x = {t.number(row, col[1]), t.number(row, col[2]), t.number(row, col[3])};
     init.v = {num(8, 0.0), num(9, 0.0), num(10, 0.0)};
     init.w = {num(11, 0.0), num(12, 0.0), num(13, 0.0)};
@@ -146,7 +175,7 @@ void assign_member_ids(Particles& p, const std::string& origin) {
   if (B.empty()) return;
   std::map<std::int64_t, std::size_t> seen;
   for (std::size_t b = 0; b < B.size(); ++b)
-    if (!seen.emplace(B.id[b], b).second)
+    if (!seen.emplace(B.id[b], b).second)  // the body CSV reader names the row; this guards bodies added in code
       throw InputError(origin, 0, "particles", "clump body id " + std::to_string(B.id[b]) + " is given twice");
   std::int64_t next = 0;
   for (std::size_t i = 0; i < p.size(); ++i)

@@ -20,7 +20,8 @@ void read_clump_templates(const TomlSection& root, const std::filesystem::path& 
 // by default, so a body stands as its template is written), vx, vy, vz, wx, wy, wz, fixed,
 // temperature, charge; `radius` is accepted and ignored) of template `clump` and material
 // `material` to out.bodies, and their members to `out`'s particles (ids assigned later:
-// assign_member_ids). Throws InputError naming file, line and column.
+// assign_member_ids). Body ids must be >= 0 and unique across the body files read so far (the
+// bodies already in out). Throws InputError naming file, line and column.
 void read_clump_bodies(const std::filesystem::path& file, const Model& model, int material, int clump, Particles& out);
 
 // Gives the member spheres ids after the largest id of the free spheres, in body order and then

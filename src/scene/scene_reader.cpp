@@ -188,7 +188,7 @@ void check_clump_support(const TomlSection& root, const Scene& scene) {
     if (src.clump.empty()) continue;
     const Params& p = scene.model.params;
     const auto refuse = [&](const std::string& what) {
-      throw InputError(root.file(), src.line, "clump", "clumps do not run with " + what + " yet");
+      throw InputError(root.file(), src.line, "particles.clump", "clumps do not run with " + what + " yet");
     };
     if (p.domain.bounded && p.domain.any_periodic()) refuse("periodic boundaries");
     if (!p.inlets.empty()) refuse("[[inlet]] entries");

@@ -1,6 +1,7 @@
 // Clump outputs in the file formats (docs/output.md "Body CSV snapshots", "Particle VTU"): the body
 // CSV writer's rows are the bodies as a scene gives them (the orientation of the template as
-// written), read back by the body CSV reader into the same bodies and members to round-off; the
+// written), read back by the body CSV reader into the same bodies and members to round-off (a
+// template's name, a field of those rows, cannot hold a comma, a quote or a line break); the
 // particle column `body` names each member's body in the particle CSV and VTU, and a particle
 // snapshot with it still reads as input.
 #include <gtest/gtest.h>
@@ -16,8 +17,10 @@
 #include "io/particle_csv_reader.hpp"
 #include "io/particle_csv_writer.hpp"
 #include "io/vtu_writer.hpp"
+#include "scene/scene_reader.hpp"
 #include "support/clump_scenes.hpp"
 #include "support/output_folder.hpp"
+#include "support/temp_dir.hpp"
 
 using namespace mpdem;
 using namespace mpdem::test::output;
@@ -153,8 +156,12 @@ TEST_F(OutputTest, ParticleBodyColumnIsInTheCsvAndTheVtu) {
     const std::vector<std::string> f = split(lines[r], ',');
     const std::int64_t id = std::stoll(f[1]), body = std::stoll(f.back());
     for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.id[i] == id) EXPECT_EQ(body, p.body[i]) << "particle " << id;
-    if (id == 100) EXPECT_EQ(body, -1);
+      if (p.id[i] == id) {
+        EXPECT_EQ(body, p.body[i]) << "particle " << id;
+      }
+    if (id == 100) {
+      EXPECT_EQ(body, -1);
+    }
     members += body != -1 ? 1 : 0;
   }
   EXPECT_EQ(members, 3 * kBodies.size());
@@ -174,4 +181,22 @@ TEST_F(OutputTest, ParticleBodyColumnIsInTheCsvAndTheVtu) {
   std::vector<std::int64_t> got;
   for (std::int64_t v; values >> v;) got.push_back(v);
   EXPECT_EQ(got, p.body);  // the owned particles in storage order
+}
+
+// The template's name is a field of the body CSV: one that would break its rows (a comma, a quote,
+// a line break) or is empty is refused naming file, line and key.
+TEST(BodyCsv, TemplateNamesAreCsvFields) {
+  test::TempDir d("body_csv_names");
+  const std::string scene = "[time]\nduration = 0.01\ndt = 1e-5\n[[material]]\nname = \"glass\"\n[[clump]]\nname = "
+                            "NAME\nmembers = [[0.0, 0.0, 0.0, 0.001]]\n";
+  for (const char* bad : {R"("a,b")", R"("say \"hi\"")", R"("two\nlines")", R"("")"}) {
+    std::string text = scene;
+    text.replace(text.find("NAME"), 4, bad);
+    const fs::path f = d.write("bad.toml", text);
+    test::expect_contains(test::error_of([&] { parse_scene_file(f); }),
+                          {f.string() + ":", "'clump.name'", "without ',', '\"' or line breaks"});
+  }
+  std::string good = scene;
+  good.replace(good.find("NAME"), 4, "\"ell 2 (pellets)\"");
+  EXPECT_EQ(parse_scene_file(d.write("good.toml", good)).model.clumps.at(0).name, "ell 2 (pellets)");
 }

@@ -62,6 +62,27 @@ def test_torque_is_the_clis_csv_and_vtu_column(bed_toml):
     assert np.array_equal(np.asarray(vtu.point_data["torque"])[order], torque)
 
 
+def test_body_is_the_clis_csv_and_vtu_column(bed_toml):
+    """The body column (int64, one row of src/state/particle_columns.hpp): sim.particles.body
+    equals the CLI's last particle CSV column "body" and its last particle VTU array "body", -1 for
+    every sphere of a scene without clumps."""
+    import meshio
+
+    assert run_cli("run", bed_toml, "--quiet", "--threads", "1").returncode == 0
+    out = bed_toml.parent / "output"
+    with open(out / "particles_csv" / "particles_000004.csv") as f:
+        rows = sorted(csv.DictReader(f), key=lambda r: int(r["id"]))
+    sim = mpdem.Simulation(mpdem.Scene.from_toml(bed_toml), threads=1, write_output=False)
+    sim.run()
+    body = sim.particles.body
+    assert body.shape == (len(rows),) and body.dtype == np.int64
+    assert np.array_equal(body, np.array([int(r["body"]) for r in rows]))
+    assert np.all(body == -1)
+    vtu = meshio.read(out / "particles" / "particles_000004.vtu")
+    order = np.argsort(np.asarray(vtu.point_data["id"]).ravel())
+    assert np.array_equal(np.asarray(vtu.point_data["body"]).ravel()[order], body)
+
+
 @pytest.mark.parametrize("integrator", ["verlet", "trapezoidal"])
 def test_a_velocity_set_between_steps_gives_free_flight(tmp_path, integrator):
     s = mpdem.Scene(dir=tmp_path)

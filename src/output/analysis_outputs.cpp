@@ -70,6 +70,7 @@ void orient_and_sort(std::vector<ContactEntry>& list) {
   for (ContactEntry& c : list)
     if (c.second >= 0 && c.second < c.first) {
       std::swap(c.first, c.second);
+      std::swap(c.first_body, c.second_body);
       c.normal = -c.normal;
       c.normal_force = -c.normal_force;
       c.tangential_force = -c.tangential_force;
@@ -175,8 +176,9 @@ void AnalysisOutputs::after_step(double t, double h, double end, bool last, cons
     if (files) {
       std::vector<ContactEntry> rows = list;
       orient_and_sort(rows);
-      write_contacts_vtu(dir_ / name, rows, t, prm.output.format);
-      write_contacts_csv(dir_ / fmt::format("contacts_csv/contacts_{:06d}.csv", contact_snapshots_), rows, t);
+      const bool bodies = !model_.clumps.empty();  // the members' body ids
+      write_contacts_vtu(dir_ / name, rows, t, prm.output.format, bodies);
+      write_contacts_csv(dir_ / fmt::format("contacts_csv/contacts_{:06d}.csv", contact_snapshots_), rows, t, bodies);
       contacts_pvd_->add(t, name);
     }
     ++contact_snapshots_;

@@ -11,6 +11,7 @@
 
 #include "core/input_error.hpp"
 #include "core/input_file.hpp"
+#include "io/csv_log.hpp"
 #include "io/csv_table.hpp"
 #include "model/derived_limits.hpp"
 #include "model/body_members.hpp"
@@ -74,7 +75,9 @@ void read_clump_templates(const TomlSection& root, const std::filesystem::path& 
     t.origin = root.file();
     t.line = s.line();
     t.name = s.require(s.string("name"), "name");
-    if (t.name.empty()) s.fail("name", "expected a template name, got an empty string");
+    // The name is a field of the body CSV snapshots (io/body_csv_writer.hpp).
+    if (!is_column_name(t.name))
+      s.fail("name", "expected a template name without ',', '\"' or line breaks, got \"" + t.name + "\"");
     if (model.clump_index(t.name) >= 0) s.fail("name", "clump '" + t.name + "' is defined twice");
     if (!s.has("members")) s.fail("members", "missing required key");
     std::vector<ClumpMember> members;
@@ -110,9 +113,13 @@ void read_clump_templates(const TomlSection& root, const std::filesystem::path& 
 }
 
 void read_clump_bodies(const std::filesystem::path& file, const Model& model, int material, int clump, Particles& out) {
-  static constexpr std::array<std::string_view, 18> kColumns = {"id", "x",  "y",     "z",           "q0",     "q1",
-                                                                "q2", "q3", "vx",    "vy",          "vz",     "wx",
-                                                                "wy", "wz", "fixed", "temperature", "charge", "radius"};
+  // The columns read (by position in this list: col[] below), then the ones accepted and ignored:
+  // `radius` (a sphere CSV's), and a body CSV snapshot's descriptive columns (io/body_csv_writer.hpp:
+  // time, the template's name, the mass and principal moments, which the template and material give),
+  // so that a snapshot seeds a new scene as it is.
+  static constexpr std::array<std::string_view, 24> kColumns = {
+      "id", "x",  "y",     "z",           "q0",     "q1",     "q2",   "q3",    "vx",   "vy", "vz", "wx",
+      "wy", "wz", "fixed", "temperature", "charge", "radius", "time", "clump", "mass", "I1", "I2", "I3"};
   const CsvTable t = CsvTable::read(file, kColumns.size());
   t.check_known(kColumns);
   for (std::string_view c : {"id", "x", "y", "z"}) t.require(c);

@@ -18,7 +18,8 @@ void read_clump_templates(const TomlSection& root, const std::filesystem::path& 
 // Appends the bodies of the body CSV `file` (columns: id, x, y, z of the centre of mass; optional
 // q0, q1, q2, q3 (unit quaternion w, x, y, z: the template's frame as written -> world; identity
 // by default, so a body stands as its template is written), vx, vy, vz, wx, wy, wz, fixed,
-// temperature, charge; `radius` is accepted and ignored) of template `clump` and material
+// temperature, charge; `radius` and a body CSV snapshot's time, clump, mass, I1, I2, I3 are accepted
+// and ignored: io/body_csv_writer.hpp) of template `clump` and material
 // `material` to out.bodies, and their members to `out`'s particles (ids assigned later:
 // assign_member_ids). Body ids must be >= 0 and unique across the body files read so far (the
 // bodies already in out). Throws InputError naming file, line and column.

@@ -50,7 +50,7 @@ struct BarrierSource {
 struct Model {
   Params params;
   std::vector<Material> materials;
-  std::vector<ClumpTemplate> clumps;  // [[clump]] templates, in file order
+  std::vector<ClumpTemplate> clumps;                  // [[clump]] templates, in file order
   int material_index(const std::string& name) const;  // -1 when unknown
   int clump_index(const std::string& name) const;     // -1 when unknown
 };

@@ -75,6 +75,7 @@ void read_clump_templates(const TomlSection& root, const std::filesystem::path& 
     t.origin = root.file();
     t.line = s.line();
     t.name = s.require(s.string("name"), "name");
+    if (t.name.empty()) s.fail("name", "expected a template name, got an empty string");
     // The name is a field of the body CSV snapshots (io/body_csv_writer.hpp).
     if (!is_column_name(t.name))
       s.fail("name", "expected a template name without ',', '\"' or line breaks, got \"" + t.name + "\"");

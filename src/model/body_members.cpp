@@ -10,21 +10,24 @@ template <bool kPositions>
 void set_members(const std::vector<ClumpTemplate>& clumps, Particles& p) {
   Bodies& B = p.bodies;
   B.index_members(p);
-  const std::size_t nb = B.size();
+  const std::size_t nb = B.size(), n = p.size();
+  // Each body's rotation once, then the members in particle order (the particle arrays stream;
+  // the body arrays, a quarter of their size or less, take the random reads).
+  std::vector<Mat3>& R = B.rotation;
+  R.resize(nb);
 #pragma omp parallel for schedule(static) if (nb > kParallelThreshold / 4)
-  for (std::size_t b = 0; b < nb; ++b) {
-    const Mat3 R = quat_matrix(B.q[b]);
-    const std::vector<ClumpMember>& m = clumps[static_cast<std::size_t>(B.clump[b])].members();
-    for (std::uint32_t k = 0; k < B.first[b + 1] - B.first[b]; ++k) {
-      const std::size_t i = B.index[B.first[b] + k];
-      const Vec3 d = mat_apply(R, m[k].x);  // m, member centre relative to the centre of mass
-      p.v[i] = B.v[b] + cross(B.w[b], d);
-      p.w[i] = B.w[b];
-      if constexpr (kPositions) {
-        p.x[i] = B.x[b] + d;
-        p.q[i] = B.q[b];
-        p.T[i] = B.T[b];
-      }
+  for (std::size_t b = 0; b < nb; ++b) R[b] = quat_matrix(B.q[b]);
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (p.body[i] == kNoBody) continue;
+    const std::size_t b = B.owner[i];
+    const Vec3 d = mat_apply(R[b], clumps[static_cast<std::size_t>(B.clump[b])].members()[p.member[i]].x);  // m
+    p.v[i] = B.v[b] + cross(B.w[b], d);
+    p.w[i] = B.w[b];
+    if constexpr (kPositions) {
+      p.x[i] = B.x[b] + d;
+      p.q[i] = B.q[b];
+      p.T[i] = B.T[b];
     }
   }
 }

@@ -37,7 +37,7 @@ void Bodies::index_members(const Particles& p) {
   // Members per body, counted, then placed at first[b] + their template index.
   first.assign(nb + 1, 0);
   held.assign(n, 0);
-  std::vector<std::uint32_t> owner(n, 0);
+  owner.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     held[i] = p.fixed[i];
     if (p.body[i] == kNoBody) continue;

@@ -50,7 +50,15 @@ struct Bodies {
   // [N particles] 1 for a member sphere or a fixed free sphere: the sphere integrators leave its
   // velocity alone (a member's comes from its body)
   std::vector<std::uint8_t> held;
+  // [N particles] the index of the body a member sphere belongs to (0 for a free sphere): loops in
+  // particle order reach the (fewer, smaller) body arrays instead of scattering over the particles'
+  std::vector<std::uint32_t> owner;
   bool stale = true;  // the particles changed order or number since index_members
+  // Scratch of the member loops (not state): R(q) per body [B]; per member slot [members] its
+  // force (N), torque about the body's centre (N m) and heat flow (W).
+  std::vector<Mat3> rotation;
+  std::vector<Vec3> slot_force, slot_torque;
+  std::vector<double> slot_heat;
 
   std::size_t size() const { return id.size(); }
   bool empty() const { return id.empty(); }

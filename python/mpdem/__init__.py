@@ -9,6 +9,7 @@
 
 from ._core import InputError, RunError, __version__
 from .scene import Scene
+from .bodies import Bodies
 from .simulation import Particles, Simulation
 
-__all__ = ["InputError", "RunError", "Particles", "Scene", "Simulation", "__version__"]
+__all__ = ["Bodies", "InputError", "RunError", "Particles", "Scene", "Simulation", "__version__"]

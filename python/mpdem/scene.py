@@ -237,6 +237,15 @@ class Scene:
         self._add("coarse_grain", keys)
         return self
 
+    def clump(self, name, members, **keys):
+        """One [[clump]] template: name, members (rows of x, y, z, radius in m, in the template's
+        frame, or the name of a member CSV file), mass (kg) and inertia [I1, I2, I3] (kg m^2)
+        overrides. particles(file=..., clump=name) reads its bodies from a body CSV."""
+        if not isinstance(members, str):
+            members = numbers("members", members, (-1, 4), reshape=True).tolist()
+        self._add("clump", dict(name=name, members=members, **keys))
+        return self
+
     def particles(self, position=None, radius=None, *, file=None, generate=None, material=None, fixed=None,
                   velocity=None, angular_velocity=None, id=None, temperature=None, charge=None, density=None,
                   **keys):

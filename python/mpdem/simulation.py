@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from . import _core
+from .bodies import Bodies
 from .scene import _scene_of, input_error, integers, numbers
 
 __all__ = ["Simulation", "Particles"]
@@ -129,6 +130,7 @@ class Simulation:
                                                       write_output=write_output, progress=progress,
                                                       resume=str(_resume) if _resume is not None else ""))
         self.particles = Particles(self._core)
+        self.bodies = Bodies(self._core)
         self.barriers = Barriers(self._core)
 
     @classmethod

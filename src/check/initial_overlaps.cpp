@@ -21,7 +21,10 @@ std::vector<PairOverlap> particle_overlaps(const Particles& p, double min_ratio)
   std::vector<PairOverlap> found;
   if (p.size() < 2) return found;
   VerletList list;  // without skin it lists exactly the pairs closer than R_i + R_j
-  list.build(p.x, p.radius, 0.0);
+  // The members of one rigid body overlap by design: only members of different bodies count.
+  list.build(p.x, p.radius, 0.0, 0.0, p.size(), {}, [&] {
+    if (p.has_bodies()) list.drop_pairs_within_groups(p.body);
+  });
   for (std::size_t i = 0; i < p.size(); ++i)
     for (const std::uint32_t j : list.neighbors(i)) {
       const double overlap = p.radius[i] + p.radius[j] - norm(p.x[i] - p.x[j]);
@@ -87,6 +90,17 @@ std::string consequence(const Limit& limit) {
                        : "the contacts would push the particles apart violently at the first steps";
 }
 
+// " (bodies 3 and 4)", " (body 3 and a free sphere)" or "" for two free spheres.
+std::string bodies_text(const Particles& p, std::size_t i, std::size_t j) {
+  const auto one = [&](std::size_t k) {
+    return p.body[k] == kNoBody ? std::string("a free sphere") : fmt::format("body {}", p.body[k]);
+  };
+  if (p.body[i] == kNoBody && p.body[j] == kNoBody) return "";
+  if (p.body[i] != kNoBody && p.body[j] != kNoBody)
+    return fmt::format(" (members of bodies {} and {})", p.body[i], p.body[j]);
+  return " (member of " + one(p.body[i] == kNoBody ? j : i) + " and " + one(p.body[i] == kNoBody ? i : j) + ")";
+}
+
 void report_pairs(const Scene& scene, const Limit& limit, SceneProblems& out) {
   const Particles& p = scene.particles;
   std::map<std::pair<int, int>, std::vector<PairOverlap>> groups;  // by the two particles' sources
@@ -101,8 +115,8 @@ void report_pairs(const Scene& scene, const Limit& limit, SceneProblems& out) {
                                                                  particle_source_location(scene, sources.second).name;
     std::string list;
     for (std::size_t k = 0; k < pairs.size() && k < kListedIds; ++k)
-      list += fmt::format("{}ids {} and {} by {:.3g} m ({:.3g}%)", k ? ", " : "", p.id[pairs[k].i], p.id[pairs[k].j],
-                          pairs[k].overlap, 100.0 * pairs[k].ratio);
+      list += fmt::format("{}ids {} and {}{} by {:.3g} m ({:.3g}%)", k ? ", " : "", p.id[pairs[k].i], p.id[pairs[k].j],
+                          bodies_text(p, pairs[k].i, pairs[k].j), pairs[k].overlap, 100.0 * pairs[k].ratio);
     if (pairs.size() > kListedIds) list += fmt::format(" and {} more pairs", pairs.size() - kListedIds);
     SceneProblem pr = problem_at(a, limit);
     pr.message = fmt::format(
@@ -125,8 +139,10 @@ void report_barriers(const Scene& scene, const Limit& limit, SceneProblems& out)
     const SourceLocation par = particle_source_location(scene, sources.second);
     std::string list;
     for (std::size_t k = 0; k < contacts.size() && k < kListedIds; ++k)
-      list += fmt::format("{}particle id {} and element id {} by {:.3g} m ({:.3g}%)", k ? ", " : "",
-                          p.id[contacts[k].i], b.id[contacts[k].e], contacts[k].overlap, 100.0 * contacts[k].ratio);
+      list += fmt::format(
+          "{}particle id {}{} and element id {} by {:.3g} m ({:.3g}%)", k ? ", " : "", p.id[contacts[k].i],
+          p.body[contacts[k].i] == kNoBody ? "" : fmt::format(" (member of body {})", p.body[contacts[k].i]),
+          b.id[contacts[k].e], contacts[k].overlap, 100.0 * contacts[k].ratio);
     if (contacts.size() > kListedIds) list += fmt::format(" and {} more", contacts.size() - kListedIds);
     SceneProblem pr = problem_at(bar, limit);
     pr.message = fmt::format(

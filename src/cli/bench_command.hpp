@@ -21,6 +21,9 @@ struct BenchArgs {
   std::filesystem::path output;
   long snapshot_every = 0;        // steps between particle VTU snapshots (0: none; needs output)
   std::string format = "binary";  // their VTK format: "ascii", "binary" or "compressed"
+  // Each sphere of the bed becomes a rigid tetrahedral clump of four overlapping spheres inscribed
+  // in the bed's smallest sphere, turned at random (from its id): the clumps' cost per member-step.
+  bool clumps = false;
 };
 
 // Runs the benchmark and prints the results on stdout (a human-readable block and one

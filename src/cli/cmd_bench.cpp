@@ -17,6 +17,10 @@
 #include "io/output_folder.hpp"
 #include "core/input_error.hpp"
 #include "io/lammps_data.hpp"
+#include "model/body_members.hpp"
+#include "physics/clump_mass.hpp"
+#include "scene/clump_reader.hpp"
+#include "core/random.hpp"
 #include "io/vtk_xml.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "parallel/gather.hpp"
@@ -50,6 +54,33 @@ void add_wall(Barriers& b, std::int64_t& next_id, int group, const Vec3& a, cons
   b.add(next_id++, a, c, d, group, kYoung, kPoisson, MotionLaw{}, 0.0, insulated);
 }
 
+void add_walls(const LammpsData& d, Barriers& b);
+
+// The clump bed (--clumps): at every sphere of the data file a tetrahedral clump of four spheres of
+// radius 0.55 r (r the file's smallest radius) with centres 0.26 r from its centre along the
+// diagonals of a cube (inscribed in the sphere r: no overlaps at the start), turned by a rotation
+// drawn from its id, at rest.
+void add_clump_bed(const LammpsData& d, Scene& s) {
+  double r = std::numeric_limits<double>::infinity();
+  for (const LammpsAtom& at : d.atoms) r = std::min(r, 0.5 * at.diameter);
+  const double a = 0.26 * r, rm = 0.55 * r;  // m
+  ClumpTemplate t;
+  t.name = "tetra";
+  t.shape = clump_mass_properties({{{a, a, a}, rm}, {{a, -a, -a}, rm}, {{-a, a, -a}, rm}, {{-a, -a, a}, rm}});
+  s.model.clumps.push_back(t);
+  s.particles.reserve(4 * d.atoms.size());
+  for (const LammpsAtom& at : d.atoms) {
+    Rng rng(static_cast<std::uint64_t>(at.id));
+    BodyInit init;
+    init.id = at.id;
+    init.x = at.x;
+    init.q = quat_normalized({rng.normal(), rng.normal(), rng.normal(), rng.normal()});  // uniform on SO(3)
+    init.T = s.model.materials.front().temperature;
+    add_body(s.model, 0, 0, init, s.particles);
+  }
+  assign_member_ids(s.particles, "bench");
+}
+
 // The reference scene: particles of the data file, five walls x = lo, hi; y = lo, hi; z = lo
 // (no lid) up to the box top, gravity, Hertz-Mindlin, e = 0.5, mu = 0.5, no rolling friction.
 void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
@@ -77,6 +108,10 @@ void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
   s.model.materials.push_back(m);
 
   Particles& p = s.particles;
+  if (a.clumps) {
+    add_clump_bed(d, s);
+    return add_walls(d, s.barriers);
+  }
   p.reserve(d.atoms.size());
   for (const LammpsAtom& at : d.atoms) {
     p.add(at.id, 0, 0.5 * at.diameter, at.density, at.x, Vec3{});
@@ -84,8 +119,10 @@ void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
     p.charge[i] = 0.0;
     p.T[i] = m.temperature;
   }
+  add_walls(d, s.barriers);
+}
 
-  Barriers& b = s.barriers;
+void add_walls(const LammpsData& d, Barriers& b) {
   const int g = b.group_index("walls");
   const Vec3 lo = d.lo, hi = d.hi;
   const double h = hi.z;
@@ -99,7 +136,9 @@ void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
 
 double kinetic_energy(const Particles& p) {
   double e = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) e += 0.5 * p.mass[i] * norm2(p.v[i]);
+  for (std::size_t b = 0; b < p.bodies.size(); ++b) e += 0.5 * p.bodies.mass[b] * norm2(p.bodies.v[b]);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.body[i] == kNoBody) e += 0.5 * p.mass[i] * norm2(p.v[i]);
   return e;
 }
 

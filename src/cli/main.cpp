@@ -59,14 +59,18 @@ int dispatch(int argc, char** argv) {
   bench_cmd->add_option("--dt", bench.dt, "time step [s]")->check(CLI::PositiveNumber);
   bench_cmd->add_option("--skin", bench.skin, "Verlet skin [m]")->check(CLI::NonNegativeNumber);
   bench_cmd->add_option("--output", bench.output, "write the run's files there (a fresh or empty folder)");
+  bench_cmd->add_flag("--clumps", bench.clumps,
+                      "each sphere becomes a clump of 4 overlapping spheres (tetrahedron) inscribed in the bed's "
+                      "smallest sphere; particles = members");
   bench_cmd->add_option("--snapshot-every", bench.snapshot_every, "steps between particle VTU snapshots (0: none)")
       ->check(CLI::NonNegativeNumber);
   bench_cmd->add_option("--format", bench.format, "VTK format of the snapshots")
       ->check(CLI::IsMember({"ascii", "binary", "compressed"}));
 
-  mpdem::cli::ToolAction tool;  // set by `generate` / `mesh` when selected
+  mpdem::cli::ToolAction tool;  // set by `generate` / `mesh` / `clump` when selected
   mpdem::cli::add_generate_command(app, tool);
   mpdem::cli::add_mesh_command(app, tool);
+  mpdem::cli::add_clump_command(app, tool);
   mpdem::cli::add_validate_command(app, tool);
   mpdem::cli::add_plot_command(app, tool);
 

@@ -1,5 +1,7 @@
 #include "cli/scene_summary.hpp"
 
+#include "model/body_members.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -7,7 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "check/clump_summary.hpp"
 #include "contact/contact_table.hpp"
+#include "model/body_members.hpp"
 #include "physics/barrier_moduli.hpp"
 #include "physics/time_step_estimate.hpp"
 #include "sim/simulation.hpp"
@@ -119,7 +123,7 @@ void print_summary(const Scene& scene) {
   const Params& prm = scene.model.params;
   double mass = 0.0, rmin = std::numeric_limits<double>::infinity(), rmax = 0.0, q = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    mass += p.mass[i];
+    mass += represented_mass(scene.model, p, i);  // a member: its share of the body's
     rmin = std::min(rmin, p.radius[i]);
     rmax = std::max(rmax, p.radius[i]);
     q += p.charge[i];
@@ -134,6 +138,7 @@ void print_summary(const Scene& scene) {
   for (const Material& m : scene.model.materials)
     fmt::print("  {:<16} density {:.6g} kg/m^3  E {}  nu {:.4g}\n", m.name, m.density,
                is_rigid(m) ? std::string("rigid") : fmt::format("{:.6g} Pa", m.young), m.poisson);
+  for (const std::string& line : clump_summary_lines(scene)) fmt::print("{}\n", line);
   fmt::print("barriers: {} triangles in {} groups\n", b.size(), b.group_names.size());
   for (std::size_t g = 0; g < b.group_names.size(); ++g) {
     std::size_t n = 0, rigid = 0;

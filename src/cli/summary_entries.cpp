@@ -68,6 +68,7 @@ void print_entries(const Scene& scene) {
              o.log_every, every_text(o.particles_every, "s"), every_text(o.particle_csv_every, "s"),
              every_text(o.barriers_every, "s"), every_text(o.barrier_log_every, "s"), every_text(o.contacts_every, "s"),
              every_text(o.checkpoint_every, "steps"));
+  if (!scene.model.clumps.empty()) fmt::print("  body CSV {}\n", every_text(o.body_csv_every, "s"));
 }
 
 }  // namespace mpdem::cli

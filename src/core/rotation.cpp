@@ -35,6 +35,26 @@ Mat3 quat_matrix(const Quat& q) {
                {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}}};
 }
 
+Quat quat_from_matrix(const Mat3& m) {
+  const double tr = m[0][0] + m[1][1] + m[2][2];
+  Quat q;
+  if (tr >= m[0][0] && tr >= m[1][1] && tr >= m[2][2]) {
+    const double s = 2.0 * std::sqrt(1.0 + tr);  // 4 w
+    q = {0.25 * s, (m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s};
+  } else if (m[0][0] >= m[1][1] && m[0][0] >= m[2][2]) {
+    const double s = 2.0 * std::sqrt(1.0 + 2.0 * m[0][0] - tr);  // 4 x
+    q = {(m[2][1] - m[1][2]) / s, 0.25 * s, (m[0][1] + m[1][0]) / s, (m[0][2] + m[2][0]) / s};
+  } else if (m[1][1] >= m[2][2]) {
+    const double s = 2.0 * std::sqrt(1.0 + 2.0 * m[1][1] - tr);  // 4 y
+    q = {(m[0][2] - m[2][0]) / s, (m[0][1] + m[1][0]) / s, 0.25 * s, (m[1][2] + m[2][1]) / s};
+  } else {
+    const double s = 2.0 * std::sqrt(1.0 + 2.0 * m[2][2] - tr);  // 4 z
+    q = {(m[1][0] - m[0][1]) / s, (m[0][2] + m[2][0]) / s, (m[1][2] + m[2][1]) / s, 0.25 * s};
+  }
+  if (q.w < 0.0) q = {-q.w, -q.x, -q.y, -q.z};
+  return q;
+}
+
 Quat quat_from_rodrigues(const Vec3& a) { return quat_normalized({1.0, 0.5 * a.x, 0.5 * a.y, 0.5 * a.z}); }
 
 Vec3 rodrigues_from_rotation_vector(const Vec3& theta) {

@@ -32,6 +32,11 @@ inline Quat quat_multiply(const Quat& a, const Quat& b) {
 
 Quat quat_normalized(const Quat& q);
 Mat3 quat_matrix(const Quat& q);
+// Inverse of quat_matrix for a proper rotation matrix m (orthonormal, det +1): the unit
+// quaternion with w >= 0 (Shepperd's method: the largest of 1 + trace and 1 + 2 m_ii - trace
+// under the square root, so no component comes from a small difference). Exact for the
+// signed permutations whose quaternion components are 0, 1/2 or 1.
+Quat quat_from_matrix(const Mat3& m);
 // A rescaled Rodrigues vector alpha = 2 tan(theta/2) e is the quaternion (1, alpha/2) up to
 // normalisation; exact, no trigonometry.
 Quat quat_from_rodrigues(const Vec3& alpha);

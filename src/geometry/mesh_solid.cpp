@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -54,15 +55,9 @@ void fill_csr(std::size_t items, std::size_t cells, Range range, std::vector<std
 }  // namespace
 
 MeshSolid::MeshSolid(const TriangleMesh& mesh) {
-  if (mesh.size() == 0) throw std::invalid_argument("the region mesh has no triangles");
-  const EdgeCounts e = count_edges(mesh);
-  if (e.boundary > 0 || e.non_manifold > 0)
-    throw std::invalid_argument("the region mesh is not closed: " + std::to_string(e.boundary) +
-                                " edge(s) belong to one triangle only and " + std::to_string(e.non_manifold) +
-                                " to three or more (every edge must join exactly two triangles)");
-  if (e.inconsistent > 0)
-    throw std::invalid_argument("the region mesh is not consistently oriented: " + std::to_string(e.inconsistent) +
-                                " edge(s) are traversed in the same direction by both their triangles");
+  if (mesh.size() == 0) throw std::invalid_argument("the surface has no triangles");
+  if (const std::string p = closed_surface_problem(mesh); !p.empty())
+    throw std::invalid_argument("the surface is " + p);
   tri_ = soup(mesh);
   volume_ = std::abs(signed_volume(mesh));
   lo_ = hi_ = tri_[0][0];
@@ -73,7 +68,7 @@ MeshSolid::MeshSolid(const TriangleMesh& mesh) {
     }
   const Vec3 ext = hi_ - lo_;
   if (!(ext.x > 0.0 && ext.y > 0.0 && ext.z > 0.0 && volume_ > 0.0))
-    throw std::invalid_argument("the region mesh encloses no volume");
+    throw std::invalid_argument("the surface encloses no volume");
 
   // Columns: about sqrt(T) per axis keeps a handful of triangles per column.
   const int nc = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(tri_.size()))), 1, 256);
@@ -151,11 +146,31 @@ bool MeshSolid::contains(const Vec3& p) const {
   return inside;
 }
 
-bool MeshSolid::clear_of_surface(const Vec3& p, double d) const {
+std::uint32_t MeshSolid::next_query() const {
   if (++query_ == 0) {  // stamp wrap-around: start afresh
     std::fill(stamp_.begin(), stamp_.end(), 0);
     query_ = 1;
   }
+  return query_;
+}
+
+// Passes f the squared distance (m^2) from p to each triangle of cell (i, j, k) that this query has
+// not tested yet; stops and returns false as soon as f returns false.
+template <class F>
+bool MeshSolid::each_new_distance2(const Vec3& p, int i, int j, int k, F&& f) const {
+  const std::size_t c = (static_cast<std::size_t>(i) * n_[1] + j) * n_[2] + k;
+  for (std::uint32_t m = cell_start_[c]; m < cell_start_[c + 1]; ++m) {
+    const std::uint32_t t = cell_tri_[m];
+    if (stamp_[t] == query_) continue;
+    stamp_[t] = query_;
+    const auto& tr = tri_[t];
+    if (!f(norm2(closest_point_on_triangle(p, tr[0], tr[1], tr[2]).point - p))) return false;
+  }
+  return true;
+}
+
+bool MeshSolid::clear_of_surface(const Vec3& p, double d) const {
+  next_query();
   std::array<int, 3> c0{}, c1{};
   for (int a = 0; a < 3; ++a) {
     if (p[a] + d < lo_[a] || p[a] - d > hi_[a]) return true;  // the sphere misses the bounding box
@@ -166,16 +181,42 @@ bool MeshSolid::clear_of_surface(const Vec3& p, double d) const {
   for (int i = c0[0]; i <= c1[0]; ++i)
     for (int j = c0[1]; j <= c1[1]; ++j)
       for (int k = c0[2]; k <= c1[2]; ++k) {
-        const std::size_t c = (static_cast<std::size_t>(i) * n_[1] + j) * n_[2] + k;
-        for (std::uint32_t m = cell_start_[c]; m < cell_start_[c + 1]; ++m) {
-          const std::uint32_t t = cell_tri_[m];
-          if (stamp_[t] == query_) continue;
-          stamp_[t] = query_;
-          const auto& tr = tri_[t];
-          if (norm2(closest_point_on_triangle(p, tr[0], tr[1], tr[2]).point - p) < d2) return false;
-        }
+        if (!each_new_distance2(p, i, j, k, [&](double e2) { return e2 >= d2; })) return false;
       }
   return true;
+}
+
+double MeshSolid::distance_to_surface(const Vec3& p) const {
+  next_query();
+  const std::array<int, 3> c{cell(p.x, 0), cell(p.y, 1), cell(p.z, 2)};
+  int k_max = 0;
+  for (int a = 0; a < 3; ++a) k_max = std::max({k_max, c[a], n_[a] - 1 - c[a]});
+  double best2 = std::numeric_limits<double>::infinity();  // m^2
+  const auto visit = [&](int i, int j, int l) {
+    each_new_distance2(p, i, j, l, [&](double e2) {
+      best2 = std::min(best2, e2);
+      return true;
+    });
+  };
+  for (int k = 0; k <= k_max; ++k) {
+    // Shell k: the cells whose largest index offset from c is k. A cell outside shells 0..k is
+    // at least k cell sizes from p (p lies in, or beyond, its clamped cell).
+    const int i0 = std::max(c[0] - k, 0), i1 = std::min(c[0] + k, n_[0] - 1);
+    const int j0 = std::max(c[1] - k, 0), j1 = std::min(c[1] + k, n_[1] - 1);
+    const int l0 = std::max(c[2] - k, 0), l1 = std::min(c[2] + k, n_[2] - 1);
+    for (int i = i0; i <= i1; ++i)
+      for (int j = j0; j <= j1; ++j) {
+        if (std::abs(i - c[0]) == k || std::abs(j - c[1]) == k) {
+          for (int l = l0; l <= l1; ++l) visit(i, j, l);
+        } else {
+          if (c[2] - k >= 0) visit(i, j, c[2] - k);
+          if (k > 0 && c[2] + k < n_[2]) visit(i, j, c[2] + k);
+        }
+      }
+    const double reach = k * h_;
+    if (best2 <= reach * reach) break;
+  }
+  return std::sqrt(best2);
 }
 
 }  // namespace mpdem

@@ -24,6 +24,11 @@ class MeshSolid {
   bool contains(const Vec3& p) const;  // p strictly inside (points on the surface: either)
   // True when no point of the surface is closer to p than d (m).
   bool clear_of_surface(const Vec3& p, double d) const;
+  // Distance (m) from p to the nearest point of the surface: the cells in shells of growing
+  // Chebyshev distance k around p's cell, until the nearest triangle found is no farther than
+  // k cell sizes (no unvisited cell can hold a nearer one). Cost grows with the distance over the
+  // cell size (about 4 triangles per cell).
+  double distance_to_surface(const Vec3& p) const;
 
  private:
   std::vector<std::array<Vec3, 3>> tri_;  // m, triangles
@@ -43,6 +48,9 @@ class MeshSolid {
   int column_y(double y) const;
   int column_z(double z) const;
   int cell(double v, int axis) const;
+  std::uint32_t next_query() const;  // a fresh stamp for the triangles a query tests
+  template <class F>
+  bool each_new_distance2(const Vec3& p, int i, int j, int k, F&& f) const;
   bool ray_crosses(const std::array<Vec3, 3>& t, const Vec3& p) const;
 };
 

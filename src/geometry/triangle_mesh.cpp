@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <map>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -75,6 +76,17 @@ EdgeCounts count_edges(const TriangleMesh& mesh) {
     else ++c.non_manifold;
   }
   return c;
+}
+
+std::string closed_surface_problem(const TriangleMesh& mesh) {
+  const EdgeCounts e = count_edges(mesh);
+  if (e.boundary > 0 || e.non_manifold > 0)
+    return "not closed: " + std::to_string(e.boundary) + " edge(s) belong to one triangle only and " +
+           std::to_string(e.non_manifold) + " to three or more (every edge must join exactly two triangles)";
+  if (e.inconsistent > 0)
+    return "not consistently oriented: " + std::to_string(e.inconsistent) +
+           " edge(s) are traversed in the same direction by both their triangles";
+  return "";
 }
 
 double signed_volume(const TriangleMesh& mesh) {

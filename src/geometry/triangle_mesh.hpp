@@ -4,6 +4,7 @@
 // side their normal points to, as in the barrier CSV.
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "core/vec3.hpp"
@@ -45,6 +46,9 @@ std::vector<std::array<Vec3, 3>> soup(const TriangleMesh& mesh);
 double total_area(const TriangleMesh& mesh);  // m^2
 // Edge census by vertex index; a closed, consistently oriented surface has only manifold edges.
 EdgeCounts count_edges(const TriangleMesh& mesh);
+// "" for a closed, consistently oriented surface; else what is wrong, to follow "the surface is "
+// ("not closed: 3 edge(s) belong to one triangle only ...").
+std::string closed_surface_problem(const TriangleMesh& mesh);
 // Signed enclosed volume sum (a . (b x c)) / 6, m^3: positive when normals point outward.
 double signed_volume(const TriangleMesh& mesh);
 

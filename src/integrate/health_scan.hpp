@@ -46,6 +46,11 @@ inline constexpr int kScanSums = 6;  // kinetic, rotational, potential, electric
 void scan_range(const Particles& p, std::size_t lo, std::size_t hi, const FieldParams& fields,
                 const DomainParams& domain, std::array<double, kScanSums>& acc);
 
+// The clump bodies' energies (kinetic, rotational, potential: their members add none in
+// scan_range) and non-finite states added to acc; serial, in body order. Periodic clumps are not
+// supported, so the centre of mass is the unwrapped one.
+void scan_bodies(const Particles& p, const FieldParams& fields, std::array<double, kScanSums>& acc);
+
 inline HealthScan scan_from_sums(const std::array<double, kScanSums>& s) {
   return {{s[0], s[1], s[2]}, s[3], static_cast<std::size_t>(s[4]), static_cast<std::size_t>(s[5])};
 }

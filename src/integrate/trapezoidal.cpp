@@ -10,6 +10,7 @@
 
 #include "core/deterministic_sum.hpp"
 #include "integrate/trapezoidal_update.hpp"
+#include "model/body_members.hpp"
 
 namespace mpdem {
 
@@ -87,8 +88,8 @@ void TrapezoidalIntegrator::save_start(Particles& p) {
     copy_range(p.force, force0_, lo, hi);
     copy_range(p.torque, torque0_, lo, hi);
     with_flag(any_fixed_, [&](auto kFixed) {
-      start_rates<kFixed()>(p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(), p.fixed.data(),
-                            a0_.data(), b0_.data(), lo, hi);
+      start_rates<kFixed()>(p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(), held_, a0_.data(),
+                            b0_.data(), lo, hi);
     });
     if (!thermal) continue;
     copy_range(p.heat, heat0_, lo, hi);
@@ -131,16 +132,23 @@ void TrapezoidalIntegrator::accept_midpoint(Particles& p) {
       p.q[i] = rotate_by_increment(p.q[i], alpha_[i]);  // p.q is the start orientation until the commit
     }
   }
+  if (p.has_bodies()) bodies_.accept_midpoint(p, model_);
 }
 
 StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& f, double t, double dt, int max_iter) {
   EvalRequest req{t + dt, dt, policy(params_).phi, false};
   StepReport rep;
-  // Checked once per step: without fixed particles the update never reads their flags.
-  any_fixed_ = p.any_fixed();
+  // Checked once per step: without fixed particles the update never reads their flags. With
+  // clumps the members are held like fixed particles: their bodies move them.
+  const bool bodies = p.has_bodies();
+  if (bodies) p.bodies.index_members(p);
+  held_ = bodies ? p.bodies.held.data() : p.fixed.data();
+  any_fixed_ = bodies || p.any_fixed();
   free_ = p.size();
   if (any_fixed_)
-    for (std::size_t i = 0; i < p.size(); ++i) free_ -= p.fixed[i] ? 1 : 0;
+    for (std::size_t i = 0; i < p.size(); ++i) free_ -= held_[i] ? 1 : 0;
+  if (bodies) bodies_.save_start(p, model_);
+  free_ += bodies ? bodies_.free_bodies() : 0;
   predict(p, dt, f.build_positions(p, b));
   if (req.phi > 0.0) {  // phi = 0 is explicit: the predictor is the end state
     rep.converged = false;
@@ -158,6 +166,7 @@ StepReport TrapezoidalIntegrator::step(Particles& p, Barriers& b, Interactions& 
   commit(p, b, f, req, rep);
   ++rep.evaluations;
   history_.remember(std::span<const std::int64_t>(p.id.data(), p.size()), a0_, b0_, dt);
+  if (bodies) bodies_.remember(dt);
   return rep;
 }
 
@@ -196,7 +205,7 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
                  p.heat.data(),
                  p.material.data(),
                  heat_capacity_.data(),
-                 p.fixed.data(),
+                 held_,
                  dt,
                  params_.time.phi};
   if (predictor && history_.align(std::span<const std::int64_t>(p.id.data(), p.size()), a0_, b0_)) {
@@ -231,6 +240,11 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
         });
       });
     displacement2_ = x_build ? far : -1.0;
+    if (p.has_bodies()) {
+      Sums none{};
+      bodies_.update(p, model_, dt, true, none);
+      displacement2_ = -1.0;  // the members moved after the measurement: the evaluation checks
+    }
     return {};
   }
   std::atomic<double> far{0.0};
@@ -251,6 +265,12 @@ TrapezoidalIntegrator::Sums TrapezoidalIntegrator::update(Particles& p, double d
   });
   swap_iterates();
   displacement2_ = x_build ? far.load() : -1.0;
+  if (p.has_bodies()) {
+    Sums with_bodies = sums;
+    bodies_.update(p, model_, dt, false, with_bodies);
+    displacement2_ = -1.0;
+    return with_bodies;
+  }
   return sums;
 }
 
@@ -355,6 +375,7 @@ void TrapezoidalIntegrator::reject(Particles& p, StepReport& rep) const {
                          }).first.id;
   }
   restore_start(p);
+  if (p.has_bodies()) bodies_.restore_start(p, model_);
 }
 
 void TrapezoidalIntegrator::commit(Particles& p, Barriers& b, Interactions& f, const EvalRequest& req,
@@ -365,6 +386,7 @@ void TrapezoidalIntegrator::commit(Particles& p, Barriers& b, Interactions& f, c
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
     for (std::size_t i = 0; i < n; ++i) p.q[i] = rotate_by_increment(p.q[i], alpha_[i]);  // from the start's
   }
+  if (p.has_bodies()) place_members(model_.clumps, p);  // a member's orientation is its body's
   EvalRequest end = req;
   end.commit = true;
   end.iteration = 0;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "integrate/rate_history.hpp"
+#include "integrate/trapezoidal_bodies.hpp"
 #include "interact/step_policy.hpp"
 #include "integrate/step_report.hpp"
 #include "model/params.hpp"
@@ -37,6 +38,9 @@ class TrapezoidalIntegrator {
   // The predictor's history: the last accepted step's start rates, by particle id.
   RateHistory& rate_history() { return history_; }
   const RateHistory& rate_history() const { return history_; }
+  // The clumps' bodies' part of the step (and of the predictor's history).
+  TrapezoidalBodies& bodies() { return bodies_; }
+  const TrapezoidalBodies& bodies() const { return bodies_; }
 
  private:
   // Per field: sums of |y_K - y_(K-1)|^2, |y_K - y(t)|^2, |y_K - y_(K-2)|^2 and |y_K|^2.
@@ -64,6 +68,8 @@ class TrapezoidalIntegrator {
   // are free (the mechanical fields' norms are over those).
   bool any_fixed_ = false;
   std::size_t free_ = 0;
+  // [N] the flags the update reads: Particles::fixed, or with clumps Bodies::held (members too).
+  const std::uint8_t* held_ = nullptr;
   // m^2, the largest squared displacement of the positions in p.x from the lists' build positions,
   // measured by the pass that wrote them and handed to the next evaluation; -1: not measured.
   double displacement2_ = -1.0;
@@ -77,6 +83,7 @@ class TrapezoidalIntegrator {
   std::vector<Vec3> xp_, vp_, wp_, alphap_;  // m, m/s, rad/s, rad
   std::vector<double> Tp_;                   // K
   RateHistory history_;
+  TrapezoidalBodies bodies_;           // the clumps' bodies (scenes with clumps only)
   std::vector<double> heat_capacity_;  // [materials] J/(kg K), the materials' (save_start(), each step)
 };
 

@@ -5,6 +5,8 @@
 
 #include "core/deterministic_sum.hpp"
 #include "core/parallel.hpp"
+#include "integrate/health_scan.hpp"
+#include "integrate/rigid_bodies.hpp"
 #include "interact/verlet_drift.hpp"
 
 namespace mpdem {
@@ -52,15 +54,15 @@ void kick_range(Vec3* __restrict v, Vec3* __restrict w, const Vec3* __restrict f
 }
 
 template <bool kRotation, bool kFixed>
-void kick_drift(Particles& p, double dt) {
+void kick_drift(Particles& p, const std::uint8_t* fixed, double dt) {
   constexpr std::size_t kChunk = 1024;  // particles per call
   const std::size_t n = p.size(), chunks = (n + kChunk - 1) / kChunk;
   std::size_t fast = 0;
 #pragma omp parallel for schedule(static) reduction(+ : fast) if (n > kParallelThreshold)
   for (std::size_t c = 0; c < chunks; ++c)
     fast += kick_drift_range<kRotation, kFixed>(p.x.data(), p.v.data(), p.w.data(), p.q.data(), p.force.data(),
-                                                p.torque.data(), p.mass.data(), p.inertia.data(), p.fixed.data(),
-                                                c * kChunk, std::min(n, (c + 1) * kChunk), dt);
+                                                p.torque.data(), p.mass.data(), p.inertia.data(), fixed, c * kChunk,
+                                                std::min(n, (c + 1) * kChunk), dt);
   if (fast == 0) return;
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i) {
@@ -76,16 +78,26 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
   const bool thermal = params_.analysis.thermal;
   const std::size_t n = p.size();
   const double half = 0.5 * dt;
-  // Checked once per step: scenes without fixed particles keep the plain loops.
-  const bool any_fixed = p.any_fixed();
-  if (rotation) any_fixed ? kick_drift<true, true>(p, dt) : kick_drift<true, false>(p, dt);
-  else any_fixed ? kick_drift<false, true>(p, dt) : kick_drift<false, false>(p, dt);
+  // Checked once per step: scenes without fixed particles keep the plain loops. With clumps the
+  // member spheres are held too: their motion is their bodies' (integrate/rigid_bodies.hpp).
+  const bool bodies = p.has_bodies();
+  if (bodies) p.bodies.index_members(p);
+  const bool any_fixed = bodies || p.any_fixed();
+  const std::uint8_t* held = bodies ? p.bodies.held.data() : p.fixed.data();
+  if (rotation) any_fixed ? kick_drift<true, true>(p, held, dt) : kick_drift<true, false>(p, held, dt);
+  else any_fixed ? kick_drift<false, true>(p, held, dt) : kick_drift<false, false>(p, held, dt);
+  if (bodies) bodies_kick_drift(p, model_.clumps, dt, rotation);
   if (thermal) {
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
     for (std::size_t i = 0; i < n; ++i)
       p.T[i] += dt * p.heat[i] / (p.mass[i] * model_.materials[static_cast<std::size_t>(p.material[i])].heat_capacity);
+    if (bodies) bodies_heat(p, model_.materials, dt);
   }
   f.evaluate(p, b, EvalRequest{t + dt, dt, policy().phi, true});
+  if (bodies) {
+    p.bodies.index_members(p);  // a rebuild within the evaluation keeps the order, but checks it
+    bodies_kick(p, model_.clumps, dt, rotation);
+  }
   // Second kick, with the health scan of the end state (integrate/health_scan.hpp) and the next step's
   // neighbour-list check (the drift of a step of the same length) in the same pass.
   const FieldParams& fields = params_.fields;
@@ -94,7 +106,7 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
   const auto sums = deterministic_block_sums<kScanSums + 1>(
       n, [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums + 1>& acc) {
         // A block at a time: the kick vectorises, and the scan then reads what is still in cache.
-        const std::uint8_t* fixed = any_fixed ? p.fixed.data() : nullptr;
+        const std::uint8_t* fixed = any_fixed ? held : nullptr;
         if (any_fixed)
           kick_range<true>(p.v.data(), p.w.data(), p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(),
                            fixed, lo, hi, half, rotation);
@@ -110,6 +122,7 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
       });
   std::array<double, kScanSums> scan{};
   std::copy_n(sums.begin(), kScanSums, scan.begin());
+  if (bodies) scan_bodies(p, fields, scan);
   f.record_next_drift(next, p, static_cast<std::size_t>(sums[kScanSums]));
   StepReport rep;
   rep.scan = scan_from_sums(scan);

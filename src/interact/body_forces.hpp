@@ -10,7 +10,8 @@
 //                    evaluation, booked by the trapezoid over committed steps into
 //                    InteractionStats::field_dissipated (interact/interaction_stats.hpp)
 //   on()             whether the scene turns it on (an entry that is off reads nothing)
-//   force(p, i)      N, its force on owned particle i at the evaluated state
+//   force(p, i)      N, its force on owned particle i at the evaluated state (p: Particles, or
+//                    Bodies for the clumps' bodies, which have the same arrays: mass, charge, v, fixed)
 // Adding a body force: its formula in physics/field_forces.hpp, its key in FieldParams and the
 // scene reader, one struct here and its name in BodyForces (docs/architecture.md).
 #include <array>
@@ -31,7 +32,10 @@ struct GravityBodyForce {
   Vec3 g;                                                       // m/s^2
   explicit GravityBodyForce(const FieldParams& f) : g(f.gravity) {}
   static bool on() { return true; }  // the first entry: it starts every force sum
-  Vec3 force(const Particles& p, std::size_t i) const { return gravity_force(p.mass[i], g); }
+  template <class P>
+  Vec3 force(const P& p, std::size_t i) const {
+    return gravity_force(p.mass[i], g);
+  }
 };
 
 struct ElectricBodyForce {
@@ -39,7 +43,10 @@ struct ElectricBodyForce {
   Vec3 E;                                                       // V/m
   explicit ElectricBodyForce(const FieldParams& f) : E(f.electric) {}
   bool on() const { return norm2(E) > 0.0; }
-  Vec3 force(const Particles& p, std::size_t i) const { return electric_force(p.charge[i], E); }
+  template <class P>
+  Vec3 force(const P& p, std::size_t i) const {
+    return electric_force(p.charge[i], E);
+  }
 };
 
 struct MagneticBodyForce {
@@ -47,7 +54,10 @@ struct MagneticBodyForce {
   Vec3 B;  // T
   explicit MagneticBodyForce(const FieldParams& f) : B(f.magnetic) {}
   bool on() const { return norm2(B) > 0.0; }
-  Vec3 force(const Particles& p, std::size_t i) const { return magnetic_force(p.charge[i], p.v[i], B); }
+  template <class P>
+  Vec3 force(const P& p, std::size_t i) const {
+    return magnetic_force(p.charge[i], p.v[i], B);
+  }
 };
 
 // Fixed particles keep their prescribed motion: the drag leaves them alone.
@@ -56,7 +66,10 @@ struct DragBodyForce {
   double c;  // N s/m
   explicit DragBodyForce(const FieldParams& f) : c(f.drag) {}
   bool on() const { return c > 0.0; }
-  Vec3 force(const Particles& p, std::size_t i) const { return p.fixed[i] ? Vec3{} : drag_force(c, p.v[i]); }
+  template <class P>
+  Vec3 force(const P& p, std::size_t i) const {
+    return p.fixed[i] ? Vec3{} : drag_force(c, p.v[i]);
+  }
 };
 
 template <class... E>
@@ -75,10 +88,14 @@ class BodyForceList {
   }
   // Some entry that dissipates acts: the pass sums its power.
   bool any_dissipated() const { return any_dissipated(std::index_sequence_for<E...>{}); }
-  Vec3 first_force(const Particles& p, std::size_t i) const { return std::get<0>(entries_).force(p, i); }
+  template <class P>
+  Vec3 first_force(const P& p, std::size_t i) const {
+    return std::get<0>(entries_).force(p, i);
+  }
   // N, the sum of the acting entries' forces on particle i, as a right fold over the list
   // (f0 + (f1 + (f2 + ...))); adds their dissipated power -F.v (W) to `lost`.
-  Vec3 force(const Particles& p, std::size_t i, double& lost) const {
+  template <class P>
+  Vec3 force(const P& p, std::size_t i, double& lost) const {
     Vec3 sum{};
     bool any = false;
     fold_right(p, i, lost, sum, any, std::index_sequence_for<E...>{});
@@ -90,17 +107,16 @@ class BodyForceList {
   bool any_dissipated(std::index_sequence<I...>) const {
     return ((on_[I] && std::tuple_element_t<I, std::tuple<E...>>::kEnergy == BodyEnergy::dissipated) || ...);
   }
-  template <std::size_t I>
-  void add(const Particles& p, std::size_t i, double& lost, Vec3& sum, bool& any) const {
+  template <std::size_t I, class P>
+  void add(const P& p, std::size_t i, double& lost, Vec3& sum, bool& any) const {
     if (!on_[I]) return;
     const Vec3 f = std::get<I>(entries_).force(p, i);
     if constexpr (std::tuple_element_t<I, std::tuple<E...>>::kEnergy == BodyEnergy::dissipated) lost -= dot(f, p.v[i]);
     sum = any ? f + sum : f;
     any = true;
   }
-  template <std::size_t... I>
-  void fold_right(const Particles& p, std::size_t i, double& lost, Vec3& sum, bool& any,
-                  std::index_sequence<I...>) const {
+  template <class P, std::size_t... I>
+  void fold_right(const P& p, std::size_t i, double& lost, Vec3& sum, bool& any, std::index_sequence<I...>) const {
     (add<kCount - 1 - I>(p, i, lost, sum, any), ...);  // last entry first
   }
 

@@ -19,6 +19,7 @@
 #include "interact/body_forces.hpp"
 #include "core/run_error.hpp"
 #include "contact/particle_contacts.hpp"
+#include "interact/body_sums.hpp"
 
 namespace mpdem {
 
@@ -284,6 +285,10 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     ScopedTimer timer(times_.exchange);
     search_->fold_ghosts(p);  // what the periodic images received goes to their sources
   }
+  if (p.has_bodies()) {
+    ScopedTimer timer(times_.other);
+    field_power += sum_onto_bodies(p, model_.params.fields, heat_ != nullptr);
+  }
 
   stats_.contacts_pp = pp.contacts;
   stats_.contacts_pb = pb.contacts;
@@ -310,7 +315,9 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     stats_.drive_power = drive;
     // A fixed particle's velocity is held against the force and torque acting on it (contacts
     // and fields): the holding force -F does the work -F.v (and -T.w) on the system.
-    const double held = p.any_fixed() ? fixed_particle_power(p, model_.params.analysis.rotation) : 0.0;  // W
+    const bool rotation = model_.params.analysis.rotation;
+    const double held = (p.any_fixed() ? fixed_particle_power(p, rotation) : 0.0) +
+                        (p.has_bodies() ? fixed_body_power(p, rotation) : 0.0);  // W
     stats_.fixed_work += 0.5 * req.dt * (stats_.fixed_power + held);
     stats_.fixed_power = held;
     const double pushed = external_.empty() ? 0.0
@@ -354,6 +361,16 @@ double Interactions::start_accumulators(Particles& p) const {
   const BodyForces forces(model_.params.fields);
   const bool thermal = heat_ != nullptr;
   const std::size_t n = p.size();
+  if (p.has_bodies()) {
+    // Clumps: the body forces act on the bodies (interact/body_sums.hpp), not on their members.
+    return deterministic_block_sums<1>(n, [&](std::size_t lo, std::size_t hi, std::array<double, 1>& lost) {
+      for (std::size_t i = lo; i < hi; ++i) {
+        p.force[i] = p.body[i] == kNoBody ? forces.force(p, i, lost[0]) : Vec3{};
+        p.torque[i] = Vec3{};
+        if (thermal) p.heat[i] = 0.0;
+      }
+    })[0];
+  }
   if (forces.only_first()) {
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
     for (std::size_t i = 0; i < n; ++i) {

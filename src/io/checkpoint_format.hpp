@@ -21,7 +21,8 @@ namespace mpdem {
 
 // 13: the scene fingerprint names contact laws by their list names and keys (contact/laws/), so a
 // format-12 file would fail its fingerprint with a misleading "contact laws changed".
-inline constexpr std::uint32_t kCheckpointFormat = 13;
+// 14: particle arrays body and member (clumps), and the bodies' sections bodies/<array>.
+inline constexpr std::uint32_t kCheckpointFormat = 14;
 
 class CheckpointWriter {
  public:

@@ -49,6 +49,26 @@ void drop_partial_last_line(const std::filesystem::path& file, const std::string
 
 }  // namespace
 
+void write_csv_snapshot(const std::filesystem::path& file, std::string_view header, std::size_t rows,
+                        const std::function<void(std::string& line, std::size_t k)>& row) {
+  constexpr std::size_t kFlushBytes = 1 << 16;  // bounds the buffered text of a large snapshot
+  write_file_atomically(
+      file,
+      [&](std::ostream& os) {
+        std::string line(header);
+        line += '\n';
+        for (std::size_t k = 0; k < rows; ++k) {
+          row(line, k);
+          if (line.size() >= kFlushBytes) {
+            os << line;
+            line.clear();
+          }
+        }
+        os << line;
+      },
+      Durability::kill);
+}
+
 void append_csv_number(std::string& out, double v) {
   char buf[32];
   std::to_chars_result r;

@@ -5,6 +5,7 @@
 // print as integers (step counts, ids, contact counts read naturally).
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string_view>
 #include <string>
@@ -14,6 +15,12 @@ namespace mpdem {
 
 // Appends v to out: an integer when v is integral and |v| < 2^53, else "%.17g" (locale free).
 void append_csv_number(std::string& out, double v);
+
+// Writes a CSV snapshot as a complete file, atomically (core/atomic_file.hpp, Durability::kill):
+// `header` and a line break, then rows k = 0 .. rows-1, each appended by row(line, k) with its line
+// break; the text is handed to the file in pieces of about 64 KiB (a large snapshot is not held whole).
+void write_csv_snapshot(const std::filesystem::path& file, std::string_view header, std::size_t rows,
+                        const std::function<void(std::string& line, std::size_t k)>& row);
 
 // A name usable in a CSV header: non-empty, without ',', '"' or line breaks. Names that become
 // log columns (inlets, sinks, barrier groups) are checked with it when the scene is read.

@@ -3,19 +3,15 @@
 #include <algorithm>
 #include <charconv>
 #include <numeric>
-#include <ostream>
 #include <type_traits>
 #include <vector>
 
-#include "core/atomic_file.hpp"
 #include "io/csv_log.hpp"
 #include "state/particle_columns.hpp"
 
 namespace mpdem {
 
 namespace {
-
-constexpr std::size_t kFlushBytes = 1 << 16;  // bounds the buffered text of a large snapshot
 
 // Storage indices in ascending id order: a snapshot's rows are in the same order whatever the
 // engine's storage order (it reorders at rebuilds) and however many ranks gathered them.
@@ -59,31 +55,22 @@ std::string particle_csv_header(bool periodic) {
 
 void write_particles_csv(const std::filesystem::path& file, const Particles& p, double time, const Vec3& period) {
   const bool periodic = period.x > 0.0 || period.y > 0.0 || period.z > 0.0;
-  write_file_atomically(
-      file,
-      [&](std::ostream& os) {
-        std::string line = particle_csv_header(periodic) + '\n';
-        for (const std::size_t i : ascending_ids(p)) {
-          append_value(line, time);
-          for_each_particle_column([&](const auto& c) {
-            if (!in_csv(c.csv_role, periodic)) return;
-            const auto& v = (p.*c.array)[i];
-            for (std::size_t k = 0; k < c.components; ++k) append_value(line, component(v, k));
-            if (c.csv_role == CsvRole::periodic) {  // the image counts: the unwrapped centre follows
-              const auto& im = p.image[i];
-              const Vec3 unwrapped = p.x[i] + Vec3{im[0] * period.x, im[1] * period.y, im[2] * period.z};  // m
-              for (std::size_t k = 0; k < 3; ++k) append_value(line, component(unwrapped, k));
-            }
-          });
-          line.back() = '\n';
-          if (line.size() >= kFlushBytes) {
-            os << line;
-            line.clear();
-          }
-        }
-        os << line;
-      },
-      Durability::kill);
+  const std::vector<std::size_t> order = ascending_ids(p);
+  write_csv_snapshot(file, particle_csv_header(periodic), order.size(), [&](std::string& line, std::size_t r) {
+    const std::size_t i = order[r];
+    append_value(line, time);
+    for_each_particle_column([&](const auto& c) {
+      if (!in_csv(c.csv_role, periodic)) return;
+      const auto& v = (p.*c.array)[i];
+      for (std::size_t k = 0; k < c.components; ++k) append_value(line, component(v, k));
+      if (c.csv_role == CsvRole::periodic) {  // the image counts: the unwrapped centre follows
+        const auto& im = p.image[i];
+        const Vec3 unwrapped = p.x[i] + Vec3{im[0] * period.x, im[1] * period.y, im[2] * period.z};  // m
+        for (std::size_t k = 0; k < 3; ++k) append_value(line, component(unwrapped, k));
+      }
+    });
+    line.back() = '\n';
+  });
 }
 
 }  // namespace mpdem

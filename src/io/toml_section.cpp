@@ -1,5 +1,6 @@
 #include "io/toml_section.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "core/closest_name.hpp"
@@ -162,13 +163,27 @@ std::optional<std::vector<double>> TomlSection::numbers(std::string_view k, std:
 }
 
 std::optional<std::vector<std::array<double, 2>>> TomlSection::number_pairs(std::string_view k) const {
+  static constexpr std::array<std::string_view, 2> kColumns = {"a", "b"};
+  const auto rows = number_rows(k, kColumns, {}, "[[0.0, 0.0], [1.0, 2.0]]");
+  if (!rows) return std::nullopt;
+  std::vector<std::array<double, 2>> out;
+  for (const std::vector<double>& r : *rows) out.push_back({r[0], r[1]});
+  return out;
+}
+
+std::optional<std::vector<std::vector<double>>> TomlSection::number_rows(std::string_view k,
+                                                                         std::span<const std::string_view> columns,
+                                                                         std::span<const Range> ranges,
+                                                                         std::string_view example) const {
   const toml::node* n = node(k);
   if (!n) return std::nullopt;
   const auto* a = n->as_array();
-  const std::string want = "expected an array of [a, b] rows of numbers, e.g. [[0.0, 0.0], [1.0, 2.0]]";
+  std::string want = "expected an array of [";
+  for (std::size_t c = 0; c < columns.size(); ++c) want += (c ? ", " : "") + std::string(columns[c]);
+  want += "] rows of numbers, e.g. " + std::string(example);
   if (!a) fail(k, want + ", got " + type_name(*n));
   if (a->empty()) fail(k, want + ", got an empty array");
-  std::vector<std::array<double, 2>> out;
+  std::vector<std::vector<double>> out;
   for (std::size_t j = 0; j < a->size(); ++j) {
     const toml::node& row = *a->get(j);
     const std::string at = ", row " + std::to_string(j + 1);
@@ -181,16 +196,19 @@ std::optional<std::vector<std::array<double, 2>>> TomlSection::number_pairs(std:
     };
     const auto* r = row.as_array();
     if (!r) bad("is " + type_name(row));
-    if (r->size() != 2) bad("has " + std::to_string(r->size()) + " elements");
-    std::array<double, 2> v{};
-    for (std::size_t c = 0; c < 2; ++c) {
+    if (r->size() != columns.size()) bad("has " + std::to_string(r->size()) + " elements");
+    std::vector<double> v(columns.size());
+    for (std::size_t c = 0; c < columns.size(); ++c) {
       const toml::node& e = *r->get(c);
+      const std::string element = "element " + std::to_string(c + 1);
       if (const auto* i = e.as_integer()) v[c] = static_cast<double>(i->get());
       else if (const auto* f = e.as_floating_point()) v[c] = f->get();
-      else bad("element " + std::to_string(c + 1) + " is " + type_name(e));
-      if (!std::isfinite(v[c])) bad("element " + std::to_string(c + 1) + " is not finite");
+      else bad(element + " is " + type_name(e));
+      if (!std::isfinite(v[c])) bad(element + " is not finite");
+      if (!ranges.empty() && !ranges[c].contains(v[c]))
+        bad(element + " (" + std::string(columns[c]) + ") is " + number_text(v[c]) + ", expected " + ranges[c].text());
     }
-    out.push_back(v);
+    out.push_back(std::move(v));
   }
   return out;
 }

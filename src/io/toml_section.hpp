@@ -51,6 +51,13 @@ class TomlSection {
   std::optional<std::vector<double>> numbers(std::string_view k, std::size_t min_count, std::size_t max_count) const;
   // A non-empty array of [a, b] rows of finite numbers; a bad row is reported at its own line.
   std::optional<std::vector<std::array<double, 2>>> number_pairs(std::string_view k) const;
+  // A non-empty array of rows of finite numbers, one element per name in `columns`, element c
+  // within ranges[c] (ranges empty: any); a bad row is reported at its own line ("expected an
+  // array of [x, y, z, radius] rows of numbers, e.g. EXAMPLE, row 2 has 3 elements").
+  std::optional<std::vector<std::vector<double>>> number_rows(std::string_view k,
+                                                              std::span<const std::string_view> columns,
+                                                              std::span<const Range> ranges,
+                                                              std::string_view example) const;
   // Sub-table (standard or inline); "expected a table" when k holds anything else.
   std::optional<TomlSection> table(std::string_view k, std::initializer_list<std::string_view> known) const;
   std::optional<TomlSection> table(std::string_view k, std::span<const std::string_view> known) const;
@@ -73,9 +80,11 @@ class TomlSection {
   }
   // Throws InputError at key k's line (or the table's line when k is absent).
   [[noreturn]] void fail(std::string_view k, const std::string& message) const;
+  // The raw value of key k (null when absent), for shapes the typed getters do not cover (an
+  // array of rows); the caller reports its problems with fail(k, ...).
+  const toml::node* node(std::string_view k) const { return table_->get(k); }
 
  private:
-  const toml::node* node(std::string_view k) const { return table_->get(k); }
   const std::string* file_;
   const toml::table* table_;
   std::string path_;

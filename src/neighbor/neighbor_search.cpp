@@ -110,7 +110,15 @@ void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Ba
     x = x_all;
   }
   const std::span<const double> radius(p.radius.data(), owned);
-  list_.build(x, p.radius, skin_, extra_, owned, p.id, after_list);
+  if (p.has_bodies()) {
+    // Clumps: a body's members never interact with each other (ghosts carry their body's id).
+    list_.build(x, p.radius, skin_, extra_, owned, p.id, [&] {
+      list_.drop_pairs_within_groups(p.body);
+      if (after_list) after_list();
+    });
+  } else {
+    list_.build(x, p.radius, skin_, extra_, owned, p.id, after_list);
+  }
   broad_.build(x.first(owned), radius, b, skin_);
   barrier_offsets_build_ = b.offset;
   rotating_build_ = b.rotating();

@@ -164,6 +164,22 @@ std::vector<std::uint32_t> VerletList::compact(const std::vector<char>& keep) {
   return from;
 }
 
+void VerletList::drop_pairs_within_groups(std::span<const std::int64_t> group) {
+  if (group.size() + 1 != offset_.size()) throw std::logic_error("VerletList: groups do not match the particles");
+  std::uint32_t written = 0, begin = 0;
+  for (std::size_t i = 0; i < group.size(); ++i) {
+    const std::uint32_t end = offset_[i + 1];  // read before it is overwritten
+    const std::int64_t g = group[i];
+    for (std::uint32_t k = begin; k < end; ++k) {
+      const std::uint32_t j = index_[k];
+      if (g == kNoGroup || g != group[j]) index_[written++] = j;
+    }
+    offset_[i + 1] = written;
+    begin = end;
+  }
+  index_.resize(written);
+}
+
 void VerletList::release_build_positions() {
   release(x_build_);
   built_ = false;

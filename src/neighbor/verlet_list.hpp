@@ -46,6 +46,11 @@ class VerletList {
   // (a pair list only loses pairs when particles go) and stays valid as long as the rebuild rule
   // says. Returns the old slot of every kept slot, ascending.
   std::vector<std::uint32_t> compact(const std::vector<char>& keep);
+  // Drops the pairs of two particles of one group (group[i] == group[j] != kNoGroup; group [N],
+  // ghosts included): the member spheres of one rigid body never touch each other. Kept pairs stay
+  // in order. Call between the build's listing and its after_pairs hook.
+  static constexpr std::int64_t kNoGroup = -1;
+  void drop_pairs_within_groups(std::span<const std::int64_t> group);
   // Frees the build positions before a rebuild (peak memory): the pairs stay readable, the list
   // counts as not built (needs_rebuild) until the next build.
   void release_build_positions();

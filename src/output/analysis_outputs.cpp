@@ -9,6 +9,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "model/body_members.hpp"
 #include "output/cg_writer.hpp"
 #include "output/contact_writer.hpp"
 #include "io/csv_log.hpp"
@@ -29,13 +30,17 @@ namespace {
 double next_multiple(double every, double u) { return (std::floor(u / every) + 1.0) * every; }
 
 // The owned particles as coarse-graining input (contacts not yet counted) and their ids.
-void cg_particles(const Particles& p, std::vector<CgParticle>& particles, std::vector<std::int64_t>& ids) {
+// A clump's member stands for its share of the body's mass, moving with the body's velocity
+// (model/body_members.hpp).
+void cg_particles(const Model& model, const Particles& p, std::vector<CgParticle>& particles,
+                  std::vector<std::int64_t>& ids) {
   const std::size_t n = p.size();
   particles.resize(n);
   ids.assign(p.id.begin(), p.id.begin() + static_cast<std::ptrdiff_t>(n));
   for (std::size_t i = 0; i < n; ++i) {
     const double r = p.radius[i];
-    particles[i] = {p.x[i], p.v[i], p.mass[i], 4.0 / 3.0 * std::numbers::pi * r * r * r, 0};
+    particles[i] = {p.x[i], represented_velocity(p, i), represented_mass(model, p, i),
+                    4.0 / 3.0 * std::numbers::pi * r * r * r, 0};
   }
 }
 
@@ -65,6 +70,7 @@ void orient_and_sort(std::vector<ContactEntry>& list) {
   for (ContactEntry& c : list)
     if (c.second >= 0 && c.second < c.first) {
       std::swap(c.first, c.second);
+      std::swap(c.first_body, c.second_body);
       c.normal = -c.normal;
       c.normal_force = -c.normal_force;
       c.tangential_force = -c.tangential_force;
@@ -155,7 +161,7 @@ void AnalysisOutputs::after_step(double t, double h, double end, bool last, cons
   std::vector<ContactEntry> list = contact_list(p, b, in);
   std::vector<CgParticle> particles;
   std::vector<std::int64_t> ids;
-  if (fields_due) cg_particles(p, particles, ids);
+  if (fields_due) cg_particles(model_, p, particles, ids);
   if (comm_ && comm_->size() > 1) {
     list = gather_values<ContactEntry>(*comm_, list, 0);
     if (fields_due) {
@@ -170,8 +176,9 @@ void AnalysisOutputs::after_step(double t, double h, double end, bool last, cons
     if (files) {
       std::vector<ContactEntry> rows = list;
       orient_and_sort(rows);
-      write_contacts_vtu(dir_ / name, rows, t, prm.output.format);
-      write_contacts_csv(dir_ / fmt::format("contacts_csv/contacts_{:06d}.csv", contact_snapshots_), rows, t);
+      const bool bodies = !model_.clumps.empty();  // the members' body ids
+      write_contacts_vtu(dir_ / name, rows, t, prm.output.format, bodies);
+      write_contacts_csv(dir_ / fmt::format("contacts_csv/contacts_{:06d}.csv", contact_snapshots_), rows, t, bodies);
       contacts_pvd_->add(t, name);
     }
     ++contact_snapshots_;

@@ -29,6 +29,8 @@ std::vector<ContactEntry> contact_list(const Particles& p, const Barriers& b, co
       e.first_index = i;
       e.centre = p.x[i];
       e.branch = p.x[i] - p.x[j];
+      e.first_body = p.body[i];
+      e.second_body = p.body[j];
       out.push_back(e);
     }
   }
@@ -52,6 +54,7 @@ std::vector<ContactEntry> contact_list(const Particles& p, const Barriers& b, co
       e.first_index = i;
       e.centre = p.x[i];
       e.branch = p.x[i] - e.point;
+      e.first_body = p.body[i];
       out.push_back(e);
     }
   }

@@ -8,6 +8,7 @@
 
 #include "core/vec3.hpp"
 #include "interact/interactions.hpp"
+#include "state/bodies.hpp"
 
 namespace mpdem {
 
@@ -24,6 +25,9 @@ struct ContactEntry {
   std::size_t first_index = 0;  // index of `first` in the particle arrays (of the listing)
   Vec3 centre;                  // m, first's centre
   Vec3 branch;  // m, centre - the other's centre (its image across a periodic boundary) or - the contact point
+  // Clumps: the ids of the bodies `first` and `second` are members of (kNoBody: a free sphere, or
+  // no second particle)
+  std::int64_t first_body = kNoBody, second_body = kNoBody;
 };
 
 // Pairs first (by slot), then barrier contacts (by particle); empty of pairs when recording is off.

@@ -1,5 +1,6 @@
 #include "output/contact_writer.hpp"
 
+#include <charconv>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -12,11 +13,11 @@
 namespace mpdem {
 
 void write_contacts_vtu(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time,
-                        VtkFormat format) {
+                        VtkFormat format, bool bodies) {
   const std::size_t n = contacts.size();
   std::vector<Vec3> points(2 * n), point(n), normal(n), fn(n), ft(n);  // m, m, -, N, N
   std::vector<double> overlap(n), f_mag(n), fn_mag(n);                 // m, N, N
-  std::vector<std::int64_t> first(n), second(n), element(n);
+  std::vector<std::int64_t> first(n), second(n), element(n), first_body(n), second_body(n);
   std::vector<std::uint8_t> sliding(n);
   for (std::size_t k = 0; k < n; ++k) {
     const ContactEntry& c = contacts[k];
@@ -32,6 +33,8 @@ void write_contacts_vtu(const std::filesystem::path& file, std::span<const Conta
     first[k] = c.first;
     second[k] = c.second;
     element[k] = c.element;
+    first_body[k] = c.first_body;
+    second_body[k] = c.second_body;
     sliding[k] = c.sliding ? 1 : 0;
   }
   VtkXmlDocument d(format, "UnstructuredGrid");
@@ -48,6 +51,10 @@ void write_contacts_vtu(const std::filesystem::path& file, std::span<const Conta
   d.array({"force_magnitude", "Float64", 0}, std::span<const double>(f_mag));          // N
   d.array({"normal_force_magnitude", "Float64", 0}, std::span<const double>(fn_mag));  // N
   d.array({"sliding", "UInt8", 0}, std::span<const std::uint8_t>(sliding));            // 1: at the Coulomb limit
+  if (bodies) {
+    d.array({"first_body", "Int64", 0}, std::span<const std::int64_t>(first_body));    // -, body id or -1
+    d.array({"second_body", "Int64", 0}, std::span<const std::int64_t>(second_body));  // -, body id or -1
+  }
   d.text("      </CellData>\n      <Points>\n");
   d.array(kVtuPoints, std::span<const Vec3>(points));  // m: first's centre, then the other end
   d.text("      </Points>\n");
@@ -57,11 +64,13 @@ void write_contacts_vtu(const std::filesystem::path& file, std::span<const Conta
       file, [&](std::ostream& os) { d.write(os); }, Durability::kill);
 }
 
-void write_contacts_csv(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time) {
+void write_contacts_csv(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time,
+                        bool bodies) {
   write_file_atomically(
       file,
       [&](std::ostream& os) {
-        std::string line = "time,first,second,element,px,py,pz,nx,ny,nz,overlap,fnx,fny,fnz,ftx,fty,ftz,sliding\n";
+        std::string line = "time,first,second,element,px,py,pz,nx,ny,nz,overlap,fnx,fny,fnz,ftx,fty,ftz,sliding";
+        line += bodies ? ",first_body,second_body\n" : "\n";
         for (const ContactEntry& c : contacts) {
           const double v[] = {time,
                               static_cast<double>(c.first),
@@ -85,6 +94,12 @@ void write_contacts_csv(const std::filesystem::path& file, std::span<const Conta
             if (k) line += ',';
             append_csv_number(line, v[k]);
           }
+          if (bodies)
+            for (const std::int64_t b : {c.first_body, c.second_body}) {
+              char buf[24];  // an id as an integer: a double would round ids beyond 2^53
+              line += ',';
+              line.append(buf, std::to_chars(buf, buf + sizeof buf, b).ptr);
+            }
           line += '\n';
           if (line.size() > (1u << 16)) {
             os << line;

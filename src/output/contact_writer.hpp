@@ -15,12 +15,15 @@ namespace mpdem {
 // image across a periodic boundary, so the line is the branch vector) or to the contact point (a
 // barrier contact). CellData: first, second (-1 for a barrier), element (-1 for a pair), point,
 // normal, overlap, normal_force, tangential_force, force_magnitude, normal_force_magnitude,
-// sliding. FieldData TimeValue.
+// sliding, and with `bodies` (a scene with clumps) first_body, second_body (the members' body ids,
+// -1 for a free sphere or no second particle). FieldData TimeValue.
 void write_contacts_vtu(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time,
-                        VtkFormat format);
+                        VtkFormat format, bool bodies = false);
 
 // Columns: time,first,second,element,px,py,pz,nx,ny,nz,overlap,fnx,fny,fnz,ftx,fty,ftz,sliding
-// (s, -, -, -, m, -, m, N, N, -).
-void write_contacts_csv(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time);
+// (s, -, -, -, m, -, m, N, N, -), and with `bodies` first_body,second_body (-, -) after them: a
+// scene of spheres keeps its columns.
+void write_contacts_csv(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time,
+                        bool bodies = false);
 
 }  // namespace mpdem

@@ -11,13 +11,21 @@ namespace mpdem {
 
 ParticleTotals particle_totals(const Model& model, const Particles& p) {
   const HealthScan scan = scan_state(p, model.params.fields, DomainParams{});
-  return {scan.energy, scan.electric, static_cast<double>(p.size()),
-          model.params.analysis.thermal ? thermal_energy(model, p) : 0.0};
+  ParticleTotals t{scan.energy, scan.electric, static_cast<double>(p.size()),
+                   model.params.analysis.thermal ? thermal_energy(model, p) : 0.0};
+  if (p.has_bodies()) {
+    t.bodies = static_cast<double>(p.bodies.size());
+    t.members = static_cast<double>(std::count_if(p.body.begin(),
+                                                  p.body.begin() + static_cast<std::ptrdiff_t>(p.size()),
+                                                  [](std::int64_t b) { return b != kNoBody; }));
+  }
+  return t;
 }
 
 GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
                                  const std::vector<std::string>& open_system_columns) {
   thermal_ = model.params.analysis.thermal;
+  bodies_ = !model.clumps.empty();
   const bool driven = std::any_of(barriers.motion.begin(), barriers.motion.end(),
                                   [](const MotionLaw& m) { return !m.is_static(); });
   for (std::size_t k = 0; k < kStatCount; ++k) {
@@ -32,6 +40,7 @@ GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
   }
   columns_ = {"step",         "time",      "dt",     "iterations", "evaluations", "evaluations_total",
               "redone_steps", "particles", "removed"};
+  if (bodies_) columns_.insert(columns_.end() - 1, {"bodies", "members"});  // after particles
   const auto stat_columns = [&](StatSlot slot) {
     for (std::size_t k = 0; k < kStatCount; ++k)
       if (logged_[k] && kStats[k].slot == slot) columns_.push_back(kStats[k].column);
@@ -58,6 +67,7 @@ std::vector<double> GlobalLogLayout::values(const GlobalLogRow& r, const Particl
                           static_cast<double>(r.redone_steps),
                           t.count,
                           static_cast<double>(r.removed_total)};
+  if (bodies_) row.insert(row.end() - 1, {t.bodies, t.members});
   const auto stat_values = [&](StatSlot slot) {
     std::size_t k = 0;
     for_each_stat(s, [&](const StatInfo& info, const auto& v) {

@@ -33,6 +33,8 @@ struct ParticleTotals {
   double electric = 0.0;  // J, potential in the uniform electric field
   double count = 0.0;     // particles
   double thermal = 0.0;   // J, sum m c T (with [analysis] thermal; else 0)
+  double bodies = 0.0;    // clump bodies
+  double members = 0.0;   // member spheres of the bodies (counted in `count` too)
 };
 ParticleTotals particle_totals(const Model& model, const Particles& p);
 
@@ -53,6 +55,7 @@ class GlobalLogLayout {
   // physics the scene turns on), by row of kStats.
   std::array<bool, kStatCount> logged_{};
   bool thermal_ = false;  // log the thermal energy (after the heat exchanged with the outside)
+  bool bodies_ = false;   // log the clumps' bodies and members (a scene with clump templates)
 };
 
 }  // namespace mpdem

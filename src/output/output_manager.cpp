@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/atomic_file.hpp"
+#include "io/body_csv_writer.hpp"
 #include "io/csv_log.hpp"
 #include "io/particle_csv_writer.hpp"
 #include "io/pvd_index.hpp"
@@ -62,6 +63,7 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
   barriers_vtu_.every = o.barriers_every;
   particles_csv_.every = o.particle_csv_every;
   barrier_log_.every = o.barrier_log_every;
+  bodies_csv_.every = model.clumps.empty() ? 0.0 : o.body_csv_every;
   fs::create_directories(dir_);
   if (particles_vtu_.every > 0.0) {
     fs::create_directories(dir_ / "particles");
@@ -72,6 +74,7 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
     barriers_pvd_ = pvd(dir_ / "barriers.pvd");
   }
   if (particles_csv_.every > 0.0) fs::create_directories(dir_ / "particles_csv");
+  if (bodies_csv_.every > 0.0) fs::create_directories(dir_ / "bodies_csv");
   log_ = log(dir_ / "log.csv", log_layout_.columns());
   group_count_ = barriers.group_names.size();
   if (barrier_log_.every > 0.0 && group_count_ > 0) {
@@ -96,6 +99,7 @@ void OutputManager::save(BinaryWriter& w) const {
   for (const Series* s : {&particles_vtu_, &barriers_vtu_, &particles_csv_, &barrier_log_}) w.value(*s);
   vtu_means_.save(w);
   log_means_.save(w);
+  if (bodies_csv_.every > 0.0) w.value(bodies_csv_);
 }
 
 void OutputManager::restore(BinaryReader& r) {
@@ -106,6 +110,11 @@ void OutputManager::restore(BinaryReader& r) {
   }
   vtu_means_.restore(r);
   log_means_.restore(r);
+  if (!r.at_end()) {  // the body CSV series of a run that wrote one (save)
+    const double every = bodies_csv_.every;
+    bodies_csv_ = r.value<Series>();
+    bodies_csv_.every = every;
+  }
 }
 
 void OutputManager::accumulate_barrier_loads(const Barriers& b, double h) {
@@ -132,10 +141,11 @@ bool OutputManager::due(Series& s, double t, double dt, double end, bool force) 
 
 ParticleSnapshotsDue OutputManager::particles_due(double t, double dt, bool force) const {
   const double end = model_.params.time.duration;
-  Series vtu = particles_vtu_, csv = particles_csv_;
+  Series vtu = particles_vtu_, csv = particles_csv_, bodies = bodies_csv_;
   ParticleSnapshotsDue d;
   d.vtu = particles_pvd_ && due(vtu, t, dt, end, force);
   d.csv = csv.every > 0.0 && due(csv, t, dt, end, force);
+  d.body_csv = bodies.every > 0.0 && due(bodies, t, dt, end, force);
   if (d.vtu) d.vtu_index = vtu.count - 1;
   return d;
 }
@@ -170,6 +180,9 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
     write_particles_csv(dir_ / fmt::format("particles_csv/particles_{:06d}.csv", particles_csv_.count - 1), p, t,
                         PeriodicImages(model_.params.domain).period());
   }
+  if (bodies_csv_.every > 0.0 && due(bodies_csv_, t, dt, end, force))
+    write_bodies_csv(dir_ / fmt::format("bodies_csv/bodies_{:06d}.csv", bodies_csv_.count - 1), p.bodies, model_.clumps,
+                     t);
   if (groups_ && due(barrier_log_, t, dt, end, force)) {
     const BarrierLoads l = means ? log_means_.mean(b) : current_loads(b);
     log_means_.clear();

@@ -1,9 +1,9 @@
 #pragma once
 // OutputManager: decides when each output is due and writes it - particle and barrier VTU
-// series with their .pvd indexes, particle CSV snapshots, the global log and the barrier-group
-// log. Intervals are in simulated seconds (the global log: in steps). docs/output.md lists
-// every file and column. On several ranks rank 0 alone has one; the ranks write the pieces of
-// each particle VTU snapshot themselves (io/pvtu_writer.hpp) and this writes their .pvtu index.
+// series with their .pvd indexes, particle CSV snapshots, body CSV snapshots of the clumps, the
+// global log and the barrier-group log. Intervals are in simulated seconds (the global log: in steps). docs/output.md
+// lists every file and column. On several ranks rank 0 alone has one; the ranks write the pieces of each particle VTU
+// snapshot themselves (io/pvtu_writer.hpp) and this writes their .pvtu index.
 #include <type_traits>
 #include <cstdint>
 #include <filesystem>
@@ -34,6 +34,8 @@ struct ParticleSnapshotsDue {
   bool vtu = false;             // a particle VTU snapshot (on several ranks: its pieces and .pvtu)
   bool csv = false;             // a particle CSV snapshot
   std::uint64_t vtu_index = 0;  // -, its counter NNNNNN in the file names, when vtu
+  // A body CSV snapshot (the clumps' bodies; a run on several ranks has none: clumps run on one).
+  bool body_csv = false;
 };
 
 class OutputManager {
@@ -52,7 +54,8 @@ class OutputManager {
   // Writes whatever is due at time t (force = write every snapshot output now: the start and the
   // end of the run, which is written at the final time even when a periodic snapshot falls within
   // half a step of it). With pieces > 1 a due particle VTU snapshot is written as its .pvtu index
-  // (the ranks have written its pieces), and p is read for the CSV snapshot only.
+  // (the ranks have written its pieces), and p is read for the CSV snapshots only (p.bodies: the
+  // body CSV's).
   void snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force);
   // After every accepted step of length h (s): its end-of-step barrier loads enter the means
   // that the barrier outputs write ([output] barrier_loads = "mean").
@@ -96,6 +99,9 @@ class OutputManager {
   std::optional<double> resume_time_;  // s, set when continuing a resumed run
   int pieces_ = 1;                     // -, pieces per particle VTU snapshot (the ranks)
   Series particles_vtu_, barriers_vtu_, particles_csv_, barrier_log_;
+  // The body CSV series: on only in a scene with clump templates; checkpointed after the others
+  // only then, so that the output state of a scene of spheres keeps its bytes.
+  Series bodies_csv_;
   std::unique_ptr<PvdIndex> particles_pvd_, barriers_pvd_;
   std::unique_ptr<CsvLog> log_, groups_, removed_, balance_;
   // dir_/name for the rows of this run: replaced, or after a resume kept up to its time and appended to.

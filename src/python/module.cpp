@@ -12,6 +12,7 @@
 #include "check/scene_checks.hpp"
 #include "core/input_error.hpp"
 #include "python/barrier_groups.hpp"
+#include "python/body_arrays.hpp"
 #include "python/particle_arrays.hpp"
 #include "python/py_simulation.hpp"
 #include "core/run_error.hpp"
@@ -137,8 +138,24 @@ PYBIND11_MODULE(_core, m) {
             python::set_array(s.engine().particles(), name, values, ids);
             s.state_changed();
           },
+          py::arg("name"), py::arg("values"), py::arg("ids") = py::none())
+      .def_property_readonly("body_count", [](PySimulation& s) { return s.engine().particles().bodies.size(); })
+      .def("body_get",
+           [](PySimulation& s, const std::string& name) {
+             return python::body_array(s.engine().model(), s.engine().particles(), name);
+           })
+      .def(
+          "body_set",
+          [](PySimulation& s, const std::string& name,
+             const py::array_t<double, py::array::c_style | py::array::forcecast>& values, const py::object& ids) {
+            python::set_body_array(s.engine().model(), s.engine().particles(), name, values, ids);
+            s.state_changed();
+          },
           py::arg("name"), py::arg("values"), py::arg("ids") = py::none());
   m.attr("particle_arrays") = python::particle_array_names();
   m.attr("settable_arrays") = python::settable_array_names();
   m.attr("particle_array_docs") = python::particle_array_docs();
+  m.attr("body_arrays") = python::body_array_names();
+  m.attr("settable_body_arrays") = python::settable_body_array_names();
+  m.attr("body_array_docs") = python::body_array_docs();
 }

@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "core/input_error.hpp"
+#include "python/numpy_layout.hpp"
 #include "state/particle_columns.hpp"
 
 namespace mpdem::python {
@@ -44,34 +45,6 @@ bool with_array(Particles& p, const std::string& name, F&& f) {
   std::string known;
   for (const std::string& n : particle_array_names()) known += (known.empty() ? "" : ", ") + n;
   throw py::value_error("no particle array '" + name + "' (known: " + known + ")");
-}
-
-// Element type and components of one array entry.
-template <class T>
-struct Layout {
-  using Scalar = T;
-  static constexpr py::ssize_t width = 1;
-};
-template <>
-struct Layout<Vec3> {
-  using Scalar = double;
-  static constexpr py::ssize_t width = 3;
-};
-template <>
-struct Layout<Quat> {
-  using Scalar = double;
-  static constexpr py::ssize_t width = 4;
-};
-template <>
-struct Layout<std::array<std::int32_t, 3>> {
-  using Scalar = std::int32_t;
-  static constexpr py::ssize_t width = 3;
-};
-
-template <class T>
-std::vector<py::ssize_t> shape_of(std::size_t n) {
-  if (Layout<T>::width == 1) return {static_cast<py::ssize_t>(n)};
-  return {static_cast<py::ssize_t>(n), Layout<T>::width};
 }
 
 // Every value finite, and a temperature >= 0 (the particle CSV's range), before any is set: a
@@ -178,6 +151,14 @@ void set_array(Particles& p, const std::string& name,
                                               ? id_order(p)
                                               : indices_of(
                                                     p, py::array_t<std::int64_t, py::array::forcecast>::ensure(ids));
+  // A member sphere of a clump moves with its body (model/body_members.hpp): a state of its own
+  // would be overwritten at the next step, and the forces evaluated at it would be wrong.
+  for (std::size_t k = 0; k < target.size(); ++k)
+    if (p.body[target[k]] != kNoBody)
+      throw InputError("", 0, name,
+                       fmt::format("particle id {} (row {}) is a member of clump body {} and moves with it: set "
+                                   "sim.bodies.velocity or angular_velocity, or give the ids of free spheres",
+                                   p.id[target[k]], k, p.body[target[k]]));
   with_array(p, name, [&](auto& a) {
     using T = typename std::decay_t<decltype(a)>::value_type;
     if constexpr (std::is_same_v<T, Vec3> || std::is_same_v<T, double>) {

@@ -27,8 +27,8 @@ py::array id_ordered(const Particles& p, const std::string& name);
 py::array storage_view(Particles& p, const std::string& name, const py::object& owner);
 // Sets array `name` from `values` (float64, (N,) or (N, 3)): for the particles `ids`, or for every
 // particle in id order when ids is None. Throws ValueError for an unknown id or a wrong shape,
-// InputError (a ValueError, key = name) for a value that is not finite or a temperature < 0 K;
-// nothing is set then.
+// InputError (a ValueError, key = name) for a value that is not finite, a temperature < 0 K or a
+// member sphere of a clump (its state is its body's: python/body_arrays.hpp); nothing is set then.
 void set_array(Particles& p, const std::string& name,
                const py::array_t<double, py::array::c_style | py::array::forcecast>& values, const py::object& ids);
 // Index of every particle of `ids` (ValueError naming the first unknown one).

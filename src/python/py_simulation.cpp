@@ -301,6 +301,15 @@ py::dict PySimulation::contacts() const {
   d["normal_force"] = fn;
   d["tangential_force"] = ft;
   d["sliding"] = sliding;
+  if (!sim_->model().clumps.empty()) {  // the members' bodies, as the contact files name them
+    py::array_t<std::int64_t> body_i(m), body_j(m);
+    for (py::ssize_t k = 0; k < m; ++k) {
+      body_i.mutable_data()[k] = list[static_cast<std::size_t>(k)].first_body;
+      body_j.mutable_data()[k] = list[static_cast<std::size_t>(k)].second_body;
+    }
+    d["body_i"] = body_i;
+    d["body_j"] = body_j;
+  }
   return d;
 }
 

@@ -28,6 +28,7 @@
 #include "model/material_variants.hpp"
 #include "model/scene.hpp"
 #include "generate/generated_particles.hpp"
+#include "scene/clump_reader.hpp"
 
 namespace mpdem {
 
@@ -173,9 +174,32 @@ std::filesystem::path existing_file(const TomlSection& s, std::string_view k, co
   return p;
 }
 
+// ": known clumps: a, b" (or that none is defined), for an unknown clump name.
+std::string known_clumps(const Model& model) {
+  if (model.clumps.empty()) return " (no [[clump]] is defined)";
+  std::string out = " (known:";
+  for (const ClumpTemplate& c : model.clumps) out += " " + c.name;
+  return out + ")";
+}
+
+// What clumps do not run with yet: named at the first [[particles]] entry with a clump.
+void check_clump_support(const TomlSection& root, const Scene& scene) {
+  for (const ParticleSource& src : scene.particle_sources) {
+    if (src.clump.empty()) continue;
+    const Params& p = scene.model.params;
+    const auto refuse = [&](const std::string& what) {
+      throw InputError(root.file(), src.line, "particles.clump", "clumps do not run with " + what + " yet");
+    };
+    if (p.domain.bounded && p.domain.any_periodic()) refuse("periodic boundaries");
+    if (!p.inlets.empty()) refuse("[[inlet]] entries");
+    if (!p.sinks.empty()) refuse("[[sink]] entries");
+    return;
+  }
+}
+
 void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene) {
   std::size_t entry = 0;
-  for (const TomlSection& s : root.tables("particles", {"file", "generate", "material", "fixed"})) {
+  for (const TomlSection& s : root.tables("particles", {"file", "generate", "material", "fixed", "clump"})) {
     if (scene.model.materials.empty())
       throw InputError(root.file(), s.line(), "material",
                        "at least one [[material]] is required when particles are given");
@@ -195,6 +219,12 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
     s.get("material", src.material);
     if (!src.material.empty()) check_material(s, "material", src.material, scene.model);
     s.get("fixed", src.fixed);
+    s.get("clump", src.clump);
+    if (s.has("clump")) {
+      if (scene.model.clump_index(src.clump) < 0)
+        s.fail("clump", "unknown clump '" + src.clump + "'" + known_clumps(scene.model));
+      if (src.generate) s.fail("clump", "generated clumps are not supported yet: give the bodies in a CSV file");
+    }
     scene.particle_sources.push_back(src);
   }
   for (const TomlSection& s :
@@ -281,7 +311,7 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
   }
   if (const auto s = root.table("output", {"dir", "particles_every", "barriers_every", "particle_csv_every",
                                            "barrier_log_every", "log_every", "checkpoint_every", "progress_every",
-                                           "format", "contacts_every", "barrier_loads"})) {
+                                           "format", "contacts_every", "barrier_loads", "body_csv_every"})) {
     s->get("dir", p.output.dir);
     if (p.output.dir.empty()) s->fail("dir", "expected a non-empty folder name");
     for (const auto& part : std::filesystem::path(p.output.dir))  // each a name in the file system
@@ -294,6 +324,7 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     s->get("particles_every", p.output.particles_every, kNonNegative);
     s->get("barriers_every", p.output.barriers_every, kNonNegative);
     s->get("particle_csv_every", p.output.particle_csv_every, kNonNegative);
+    s->get("body_csv_every", p.output.body_csv_every, kNonNegative);
     s->get("barrier_log_every", p.output.barrier_log_every, kNonNegative);
     s->get("log_every", p.output.log_every, 1);
     s->get("checkpoint_every", p.output.checkpoint_every, 0);
@@ -334,20 +365,22 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& fil
   scene.file = std::filesystem::absolute(file).lexically_normal();
   scene.dir = scene.file.parent_path();
   const TomlSection root(name, doc, "",
-                         {"time", "tolerance", "analysis", "gravity", "fields", "near_field", "contact", "thermal",
-                          "material", "particles", "barriers", "domain", "neighbor", "output", "checks", "inlet",
-                          "sink", "parallel", "coarse_grain"});
+                         {"time",    "tolerance", "analysis",  "gravity",  "fields",       "near_field", "contact",
+                          "thermal", "material",  "particles", "barriers", "domain",       "neighbor",   "output",
+                          "checks",  "inlet",     "sink",      "parallel", "coarse_grain", "clump"});
   Params& p = scene.model.params;
   read_time(root, p.time);
   read_tolerance(root, p.tolerance);
   read_analysis_and_fields(root, p);
   read_materials(root, scene.model);
+  read_clump_templates(root, scene.dir, scene.model);
   read_contact_and_thermal(root, scene.model, p);
   read_near_field(root, scene.model, p.near_field);
   read_sources(root, doc, scene);
   read_inlets_and_sinks(root, doc, scene.model);
   read_domain_neighbor_output(root, p);
   read_coarse_grain(root, scene.model);
+  check_clump_support(root, scene);
   return scene;
 }
 
@@ -361,13 +394,22 @@ Scene load_sources(Scene scene) {
   for (ParticleSource& src : scene.particle_sources) {
     const int mat = src.material.empty() ? 0 : scene.model.material_index(src.material);
     src.first = scene.particles.size();
+    const std::size_t first_body = scene.particles.bodies.size();
     if (src.generate) add_generated_particles(*src.generate, scene.model, mat, scene.particles);
+    else if (!src.clump.empty())
+      read_clump_bodies(src.file, scene.model, mat, scene.model.clump_index(src.clump), scene.particles);
     else read_particle_csv(src.file, scene.model, mat, scene.particles);
     src.count = scene.particles.size() - src.first;
     // The entry's flag on top of a CSV `fixed` column or the generator's own.
-    if (src.fixed)
+    // A clump entry's flag fixes its bodies (their members follow them).
+    if (src.fixed && src.clump.empty())
       std::fill(scene.particles.fixed.begin() + static_cast<std::ptrdiff_t>(src.first), scene.particles.fixed.end(), 1);
+    if (src.fixed && !src.clump.empty()) {
+      std::vector<std::uint8_t>& body_fixed = scene.particles.bodies.fixed;
+      std::fill(body_fixed.begin() + static_cast<std::ptrdiff_t>(first_body), body_fixed.end(), 1);
+    }
   }
+  assign_member_ids(scene.particles, scene.file.string());
   for (BarrierSource& src : scene.barrier_sources) {
     src.first = scene.barriers.size();
     if (!src.stl.empty()) read_stl_barriers(src, scene.model, scene.barriers);

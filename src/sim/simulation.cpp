@@ -224,9 +224,10 @@ void Simulation::log_row(GlobalLogRow row) {
 ParticleTotals Simulation::totals() const {
   ParticleTotals t = particle_totals(scene_.model, scene_.particles);
   if (comm_) {  // reduced, never gathered: a log row costs the same on any number of ranks
-    double v[] = {t.energy.kinetic, t.energy.rotational, t.energy.potential, t.electric, t.count, t.thermal};
+    double v[] = {t.energy.kinetic, t.energy.rotational, t.energy.potential, t.electric,
+                  t.count,          t.thermal,           t.bodies,           t.members};
     comm_->sum(v);
-    t = {{v[0], v[1], v[2]}, v[3], v[4], v[5]};
+    t = {{v[0], v[1], v[2]}, v[3], v[4], v[5], v[6], v[7]};
   }
   return t;
 }
@@ -255,7 +256,7 @@ void Simulation::snapshots(double h, bool force) {
   // CSV snapshot gathers the particles to rank 0. The barriers are the same on every rank (their
   // loads summed): rank 0 writes them as they are.
   if (due.vtu) write_piece(due.vtu_index);
-  const Particles all = due.csv ? gathered() : Particles{};
+  const Particles all = due.csv || due.body_csv ? gathered() : Particles{};
   if (output_) output_->snapshots(time_, h, all, scene_.barriers, force);
 }
 

@@ -15,6 +15,8 @@
 #include "parallel/gather.hpp"
 #include "parallel/particle_buffer.hpp"
 #include "sim/simulation.hpp"
+
+#include "core/run_error.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "sim/inlets.hpp"
 #include "sim/step_collective.hpp"
@@ -24,6 +26,7 @@ namespace mpdem {
 
 void Simulation::decompose(const Communicator& comm) {
   Particles& p = scene_.particles;
+  if (p.has_bodies()) throw RunError("clumps do not run on several ranks yet: run on one rank");
   const DomainParams& d = scene_.model.params.domain;
   // The bricks tile the domain; without one, the particles' bounding box (the outer bricks reach
   // to infinity, so this only places the cuts). Every rank loaded the whole scene: the same box.

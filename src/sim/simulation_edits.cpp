@@ -34,6 +34,8 @@ std::int64_t Simulation::next_free_id() const {
 
 void Simulation::add_particles(Particles fresh) {
   refuse_several_ranks(comm_, "adding particles");
+  if (scene_.particles.has_bodies())
+    throw InputError("", 0, "clump", "adding particles to a scene with clumps is not supported yet");
   if (fresh.size() == 0) return;
   Particles& p = scene_.particles;
   std::unordered_set<std::int64_t> taken(p.id.begin(), p.id.begin() + static_cast<std::ptrdiff_t>(p.size()));
@@ -50,6 +52,8 @@ void Simulation::add_particles(Particles fresh) {
 }
 
 void Simulation::remove_particles(const std::vector<std::int64_t>& ids) {
+  if (scene_.particles.has_bodies())
+    throw InputError("", 0, "clump", "removing particles from a scene with clumps is not supported yet");
   refuse_several_ranks(comm_, "removing particles");
   const Particles& p = scene_.particles;
   std::unordered_set<std::int64_t> gone(ids.begin(), ids.end());

@@ -104,6 +104,15 @@ inline constexpr auto kParticleColumns = std::tuple{
     ParticleColumn<double>{"mass", &Particles::mass, "kg", "mass"},
     ParticleColumn<double>{"inertia", &Particles::inertia, "kg m^2", "moment of inertia"},
     ParticleColumn<double>{"heat", &Particles::heat, "W", "heat flow into the particle of the last evaluation"},
+    ParticleColumn<std::int64_t>{"body",
+                                 &Particles::body,
+                                 "-",
+                                 "id of the clump body the sphere is a member of, -1 for a free sphere",
+                                 {"body"},
+                                 CsvRole::output,
+                                 11},
+    ParticleColumn<std::uint32_t>{"member", &Particles::member, "-",
+                                  "index among its body's members (template order), 0 for a free sphere"},
 };
 
 // The CSV columns that are not a Particles array: the snapshot's time (s) first, and with a

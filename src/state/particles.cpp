@@ -27,6 +27,8 @@ void Particles::drop_ghosts() {
 
 void Particles::resize(std::size_t n) {
   refuse_ghosts(*this, "resize");
+  body.resize(n, kNoBody);  // new particles are free spheres
+  bodies.stale = true;
   for_each_array([n](const char*, auto& a) { a.resize(n); });
 }
 
@@ -76,6 +78,7 @@ void Particles::permute(const std::vector<std::uint32_t>& order) {
     for (std::size_t k = 0; k < n; ++k) std::memcpy(out + k * sizeof(Item), &a[order[k]], sizeof(Item));
     std::memcpy(a.data(), out, n * sizeof(Item));
   });
+  bodies.stale = true;
 }
 
 bool Particles::any_fixed() const {
@@ -94,6 +97,7 @@ void Particles::compact(const std::vector<char>& keep) {
       if (keep[i]) a[k++] = a[i];
     a.resize(k);
   });
+  bodies.stale = true;
 }
 
 }  // namespace mpdem

@@ -18,6 +18,7 @@
 
 #include "core/rotation.hpp"
 #include "core/vec3.hpp"
+#include "state/bodies.hpp"
 
 namespace mpdem {
 
@@ -36,6 +37,10 @@ struct Particles {
   std::vector<double> charge;    // C
   // -, 1: prescribed motion (v and w constant, x advanced by v dt; forces do not act), 0: free
   std::vector<std::uint8_t> fixed;
+  // Clumps (state/bodies.hpp): the id of the body this sphere is a member of (kNoBody: a free
+  // sphere), and its index among the body's members (template order; 0 for a free sphere).
+  std::vector<std::int64_t> body;
+  std::vector<std::uint32_t> member;
   // --- state [N] ---
   std::vector<Vec3> x;    // m, centre
   std::vector<Vec3> v;    // m/s, velocity
@@ -48,6 +53,9 @@ struct Particles {
   std::vector<Vec3> force;   // N, total force
   std::vector<Vec3> torque;  // N m, total torque about the centre
   std::vector<double> heat;  // W, total heat flow into the particle
+
+  // The rigid bodies the member spheres belong to (empty in a scene of spheres only).
+  Bodies bodies;
 
   // Ghosts appended after the owned particles (see above); 0 outside the interactions' rebuilds.
   std::size_t n_ghost = 0;
@@ -71,6 +79,8 @@ struct Particles {
   void compact(const std::vector<char>& keep);
   // True when some owned particle is fixed: the integrators take their masked paths only then.
   bool any_fixed() const;
+  // True when the scene has clumps: the integrators and interactions take their body paths.
+  bool has_bodies() const { return !bodies.empty(); }
 
   // f(name, array) for every per-particle array: the one list that resizing, reordering,
   // removal, checkpoints (one section per array, by name) and later MPI packing use, so that an
@@ -84,6 +94,8 @@ struct Particles {
     f("inertia", inertia);
     f("charge", charge);
     f("fixed", fixed);
+    f("body", body);
+    f("member", member);
     f("x", x);
     f("v", v);
     f("w", w);

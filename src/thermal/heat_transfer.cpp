@@ -8,13 +8,15 @@
 #include "core/deterministic_sum.hpp"
 #include "core/parallel.hpp"
 #include "physics/barrier_contact_detect.hpp"
+#include "model/body_members.hpp"
 #include "physics/heat.hpp"
 
 namespace mpdem {
 
 double thermal_energy(const Model& model, const Particles& p) {
   return deterministic_sums<1>(p.size(), [&](std::size_t i, std::array<double, 1>& acc) {
-    acc[0] += p.mass[i] * model.materials[static_cast<std::size_t>(p.material[i])].heat_capacity * p.T[i];
+    acc[0] += represented_mass(model, p, i) * model.materials[static_cast<std::size_t>(p.material[i])].heat_capacity *
+              p.T[i];
   })[0];
 }
 

@@ -60,10 +60,10 @@ TEST(SnapshotSeed, APeriodicRunsSnapshotSeedsANewScene) {
   ASSERT_EQ(first.status, 0) << first.err;
   const fs::path snapshot = d / "output" / "particles_csv" / "particles_000002.csv";
   ASSERT_NE(slurp(snapshot).find(",ix,iy,iz,xu,yu,zu"), std::string::npos);
-  // Columns: time,id,x,...,fixed (19), then ix,iy,iz,xu,yu,zu, then tx,ty,tz. Particle 4 crossed the face once:
+  // Columns: time,id,x,...,fixed (19), then ix,iy,iz,xu,yu,zu, then tx,ty,tz, body. Particle 4 crossed the face once:
   // x = 0.035 m less one period.
   const std::vector<std::string> end = row_of(snapshot, "4");
-  ASSERT_EQ(end.size(), 28u);
+  ASSERT_EQ(end.size(), 29u);
   EXPECT_NEAR(std::stod(end[0]), 0.02, 1e-12);  // s, the end (time as a sum of steps: round-off)
   EXPECT_EQ(end[19], "1");
   EXPECT_NEAR(std::stod(end[22]), 0.035, 1e-12);
@@ -78,7 +78,7 @@ TEST(SnapshotSeed, APeriodicRunsSnapshotSeedsANewScene) {
   // The seeded run starts where the first ended: its first snapshot holds particle 4's state
   // (x..radius, printed with round-trip digits) at t = 0, with image counts 0.
   const std::vector<std::string> start = row_of(d / "again" / "particles_csv" / "particles_000000.csv", "4");
-  ASSERT_EQ(start.size(), 28u);
+  ASSERT_EQ(start.size(), 29u);
   EXPECT_EQ(start[0], "0");
   for (std::size_t c = 2; c <= 11; ++c) EXPECT_EQ(start[c], end[c]) << "column " << c;
   EXPECT_EQ(start[19], "0");

@@ -127,3 +127,32 @@ TEST(Rotation, IncrementSeriesAgreesWithTrigonometry) {
   // A few units of round-off of unit-sized components (2^-52 = 2.2e-16).
   EXPECT_LT(worst, 1e-15);
 }
+
+// quat_from_matrix inverts quat_matrix (up to the sign of q: w >= 0), including rotations by
+// about pi where the trace is near -1, and gives the exact quaternion of axis permutations.
+TEST(Quaternion, FromMatrixInvertsQuatMatrix) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> angle(0.0, std::numbers::pi);
+  for (int k = 0; k < 200; ++k) {
+    Vec3 axis = random_vec(rng, 1.0);
+    axis = axis / norm(axis);
+    const double a = k % 10 == 0 ? std::numbers::pi - 1e-9 * k : angle(rng);
+    const Mat3 m = axis_angle_matrix(axis, a);
+    const Quat q = quat_from_matrix(m);
+    EXPECT_GE(q.w, 0.0);
+    EXPECT_NEAR(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z, 1.0, 1e-15);
+    EXPECT_LT(max_abs_diff(quat_matrix(q), m), 1e-15);
+  }
+  const Mat3 cyclic{{{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}};  // x -> y -> z -> x
+  const Quat c = quat_from_matrix(cyclic);
+  EXPECT_EQ(c.w, 0.5);
+  EXPECT_EQ(c.x, 0.5);
+  EXPECT_EQ(c.y, 0.5);
+  EXPECT_EQ(c.z, 0.5);
+  EXPECT_EQ(max_abs_diff(quat_matrix(c), cyclic), 0.0);
+  const Mat3 half_turn{{{-1, 0, 0}, {0, 1, 0}, {0, 0, -1}}};  // pi about y
+  const Quat h = quat_from_matrix(half_turn);
+  EXPECT_EQ(h.w, 0.0);
+  EXPECT_EQ(h.y, 1.0);
+  EXPECT_EQ(max_abs_diff(quat_matrix(h), half_turn), 0.0);
+}

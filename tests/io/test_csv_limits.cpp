@@ -70,7 +70,7 @@ TEST(CsvLimits, HeaderIsCappedByTheKnownColumns) {
   Model m = one_material();
   Particles out;
   const std::string msg = error_of([&] { read_particle_csv(f, m, 0, out); });
-  expect_contains(msg, {f.string() + ":1: more than 42 columns in the header; at most 34 columns are known"});
+  expect_contains(msg, {f.string() + ":1: more than 43 columns in the header; at most 35 columns are known"});
 }
 
 // The cap is on the line, inclusive: kMaxLineLength characters pass, one more does not; a long

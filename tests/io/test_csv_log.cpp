@@ -75,10 +75,11 @@ TEST_F(OutputTest, ParticleCsvSnapshotRoundTrips) {
   EXPECT_EQ(files_in(dir), std::vector<fs::path>{"particles_000001.csv"});
   const auto lines = lines_of(slurp(file));
   ASSERT_EQ(lines.size(), p.size() + 1);
-  EXPECT_EQ(lines[0], "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed,tx,ty,tz");
+  EXPECT_EQ(lines[0],
+            "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed,tx,ty,tz,body");
   for (std::size_t i = 0; i < p.size(); ++i) {
     const auto f = split(lines[i + 1], ',');
-    ASSERT_EQ(f.size(), 22u) << lines[i + 1];
+    ASSERT_EQ(f.size(), 23u) << lines[i + 1];
     EXPECT_EQ(f[18], "0");  // free (tests/io/test_fixed_particle_input.cpp writes fixed ones)
     const double expected[18] = {time,     0.0,      p.x[i].x,    p.x[i].y,     p.x[i].z,     p.v[i].x,
                                  p.v[i].y, p.v[i].z, p.w[i].x,    p.w[i].y,     p.w[i].z,     p.radius[i],

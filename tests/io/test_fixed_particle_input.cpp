@@ -109,10 +109,10 @@ TEST(FixedParticleInput, SnapshotsCarryTheFlag) {
   const std::string csv = test::slurp(d.path / "p.csv");
   const auto first = csv.find('\n');
   EXPECT_EQ(csv.substr(0, first),
-            "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed,tx,ty,tz");
+            "time,id,x,y,z,vx,vy,vz,wx,wy,wz,radius,material,temperature,charge,fx,fy,fz,fixed,tx,ty,tz,body");
   const auto second = csv.find('\n', first + 1);
-  EXPECT_EQ(csv.substr(second - 8, 8), ",1,0,0,0");  // fixed, then the torque (none)
-  EXPECT_EQ(csv.substr(csv.size() - 9), ",0,0,0,0\n");
+  EXPECT_EQ(csv.substr(second - 11, 11), ",1,0,0,0,-1");  // fixed, then the torque (none), the body (none)
+  EXPECT_EQ(csv.substr(csv.size() - 12), ",0,0,0,0,-1\n");
   write_particles_vtu(d.path / "p.vtu", p, 0.5, {VtkFormat::Ascii, {}});
   const std::string vtu = test::slurp(d.path / "p.vtu");
   const auto at = vtu.find("type=\"UInt8\" Name=\"fixed\"");

@@ -148,6 +148,7 @@ TEST_F(OutputTest, ParticleVtuRoundTripsThroughMeshio) {
                                                   "field_data/material:glass",
                                                   "field_data/material:steel",
                                                   "point_data/angular_velocity",
+                                                  "point_data/body",
                                                   "point_data/charge",
                                                   "point_data/fixed",
                                                   "point_data/force",
@@ -227,7 +228,7 @@ TEST_F(OutputTest, EmptyParticleVtuIsWellFormed) {
     EXPECT_EQ(count, name == "TimeValue" ? 1u : 0u) << lines[k];
     ++arrays;
   }
-  EXPECT_EQ(arrays, 1 + 11 + 1 + 3);  // time, 11 point arrays, points, 3 cell arrays
+  EXPECT_EQ(arrays, 1 + 12 + 1 + 3);  // time, 12 point arrays, points, 3 cell arrays
 }
 
 TEST_F(OutputTest, BarrierVtuHasMovedTrianglesAndLoads) {

@@ -19,6 +19,7 @@
 #include "state/barriers.hpp"
 #include "support/barrier_meshes.hpp"
 #include "support/closest_point_oracle.hpp"
+#include "support/solid_meshes.hpp"
 #include "support/vec3_near.hpp"
 
 namespace mpdem {
@@ -165,36 +166,9 @@ TEST(BarrierContacts, LargeSphereRestsOnHoleRim) {
 // convex polyhedron, so a sphere outside it has exactly one local minimum of distance, i.e.
 // exactly one contact, whose overlap is R minus the distance to the nearest triangle (brute force).
 Mesh geodesic_sphere() {
-  const double g = (1 + std::sqrt(5.0)) / 2;
-  std::vector<Vec3> v = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
-                         {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
-  std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                       {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                       {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                       {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (auto& p : v) p = p / norm(p);
-  for (int level = 0; level < 2; ++level) {
-    std::map<std::pair<int, int>, int> mid;  // one midpoint vertex per edge, so it is shared exactly
-    auto midpoint = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      const auto it = mid.find(key);
-      if (it != mid.end()) return it->second;
-      const Vec3 m = (v[key.first] + v[key.second]) * 0.5;
-      v.push_back(m / norm(m));
-      return mid[key] = static_cast<int>(v.size() - 1);
-    };
-    std::vector<std::array<int, 3>> nf;
-    for (const auto& t : f) {
-      const int a = midpoint(t[0], t[1]), b = midpoint(t[1], t[2]), c = midpoint(t[2], t[0]);
-      nf.push_back({t[0], a, c});
-      nf.push_back({t[1], b, a});
-      nf.push_back({t[2], c, b});
-      nf.push_back({a, b, c});
-    }
-    f = nf;
-  }
+  const TriangleMesh s = icosphere(2, 1.0);
   Mesh m;
-  for (const auto& t : f) m.tri(v[t[0]], v[t[1]], v[t[2]]);
+  for (std::size_t t = 0; t < s.size(); ++t) m.tri(s.corner(t, 0), s.corner(t, 1), s.corner(t, 2));
   return m;
 }
 

@@ -70,3 +70,52 @@ def test_recording_changes_nothing_and_is_needed(tmp_path):
         b.contacts()
     b.step(1)
     assert len(b.contacts()["i"]) == b.log()["contacts_pp"] + b.log()["contacts_pb"]
+
+
+CLUMP_SCENE = """[time]
+duration = 6e-4
+integrator = "verlet"
+dt = 2e-6
+[gravity]
+vector = [0.0, 0.0, 0.0]
+[contact.particle_particle]
+restitution = 0.5
+mu_static = 0.5
+mu_dynamic = 0.4
+[[material]]
+name = "glass"
+density = 2500.0
+young = 1e7
+poisson = 0.3
+[[clump]]
+name = "ell"
+members = [[0.0, 0.0, 0.0, 0.001], [0.002, 0.0, 0.0, 0.001], [0.0, 0.0018, 0.0, 0.0007]]
+[[particles]]
+file = "bodies.csv"
+clump = "ell"
+[[particles]]
+file = "spheres.csv"
+[checks]
+max_overlap = 0.3
+"""
+
+
+def test_contacts_name_the_members_bodies(tmp_path):
+    """With clumps, contacts() adds body_i and body_j: each the body of the member sphere i or j
+    (sim.particles.body of that id), -1 for the free sphere. Two L-shaped clumps (body 7 runs into
+    body 1) and a free sphere running into body 1 (tests/output/test_body_csv.cpp's scene)."""
+    (tmp_path / "bodies.csv").write_text(
+        "id,x,y,z,vx,vy,vz,wx,wy,wz\n1,0.01,0.01,0.01,0,0,0,0,0,0\n7,0.00599,0.01,0.01,0.5,0,0,0,0,3\n")
+    (tmp_path / "spheres.csv").write_text("id,x,y,z,vx,radius\n100,0.0131564,0.0097365,0.01,-0.5,0.001\n")
+    (tmp_path / "scene.toml").write_text(CLUMP_SCENE)
+    sim = mpdem.Simulation(mpdem.Scene.from_toml(tmp_path / "scene.toml"), threads=1, write_output=False)
+    sim.record_contacts = True
+    sim.step(50)
+    c = sim.contacts()
+    body_of = dict(zip(sim.particles.id.tolist(), sim.particles.body.tolist()))
+    assert len(c["i"]) == 2  # body 7 - body 1, sphere 100 - body 1
+    assert c["body_i"].dtype == np.int64
+    assert [body_of[i] for i in c["i"].tolist()] == c["body_i"].tolist()
+    assert [body_of[j] for j in c["j"].tolist()] == c["body_j"].tolist()
+    pairs = {frozenset(p) for p in zip(c["body_i"].tolist(), c["body_j"].tolist())}
+    assert pairs == {frozenset((1, 7)), frozenset((-1, 1))}

@@ -41,10 +41,10 @@ def test_state_arrays_match_the_clis_csv(tmp_path, bed_toml):
         assert np.array_equal(getattr(p, name), expected), name  # the CSV prints round-trip digits
 
 
-def test_torque_is_the_clis_csv_and_vtu_column(bed_toml):
-    """The torque column (N m, one row of src/state/particle_columns.hpp): sim.particles.torque
-    after the run equals the CLI's last particle CSV columns tx, ty, tz and its last particle VTU
-    array "torque" (read with meshio), value for value (both print round-trip digits or bits)."""
+def cli_and_python_ends(bed_toml):
+    """The bed run by the CLI and in Python: the CLI's last particle CSV rows (by id), its last
+    particle VTU's arrays by name (in id order, read with meshio), and the Python simulation after
+    its run."""
     import meshio
 
     assert run_cli("run", bed_toml, "--quiet", "--threads", "1").returncode == 0
@@ -53,13 +53,33 @@ def test_torque_is_the_clis_csv_and_vtu_column(bed_toml):
         rows = sorted(csv.DictReader(f), key=lambda r: int(r["id"]))
     sim = mpdem.Simulation(mpdem.Scene.from_toml(bed_toml), threads=1, write_output=False)
     sim.run()
+    vtu = meshio.read(out / "particles" / "particles_000004.vtu")
+    order = np.argsort(np.asarray(vtu.point_data["id"]).ravel())
+    return rows, lambda name: np.asarray(vtu.point_data[name])[order], sim
+
+
+def test_torque_is_the_clis_csv_and_vtu_column(bed_toml):
+    """The torque column (N m, one row of src/state/particle_columns.hpp): sim.particles.torque
+    after the run equals the CLI's last particle CSV columns tx, ty, tz and its last particle VTU
+    array "torque" (read with meshio), value for value (both print round-trip digits or bits)."""
+    rows, vtu_array, sim = cli_and_python_ends(bed_toml)
     torque = sim.particles.torque
     assert torque.shape == (len(rows), 3) and torque.dtype == np.float64
     assert np.any(torque != 0.0)  # frictional contacts: real torques, not an empty column
     assert np.array_equal(torque, np.array([[float(r[k]) for k in ("tx", "ty", "tz")] for r in rows]))
-    vtu = meshio.read(out / "particles" / "particles_000004.vtu")
-    order = np.argsort(np.asarray(vtu.point_data["id"]).ravel())
-    assert np.array_equal(np.asarray(vtu.point_data["torque"])[order], torque)
+    assert np.array_equal(vtu_array("torque"), torque)
+
+
+def test_body_is_the_clis_csv_and_vtu_column(bed_toml):
+    """The body column (int64, one row of src/state/particle_columns.hpp): sim.particles.body
+    equals the CLI's last particle CSV column "body" and its last particle VTU array "body", -1 for
+    every sphere of a scene without clumps."""
+    rows, vtu_array, sim = cli_and_python_ends(bed_toml)
+    body = sim.particles.body
+    assert body.shape == (len(rows),) and body.dtype == np.int64
+    assert np.array_equal(body, np.array([int(r["body"]) for r in rows]))
+    assert np.all(body == -1)
+    assert np.array_equal(vtu_array("body").ravel(), body)
 
 
 @pytest.mark.parametrize("integrator", ["verlet", "trapezoidal"])

@@ -6,14 +6,6 @@
 
 namespace mpdem {
 
-namespace {
-
-// A body whose three principal moments are equal kicks w like a sphere (w += dt/2 T / I, the
-// same operations: a one-member clump follows the sphere's trajectory) and rotates with it.
-bool spherical(const Vec3& I) { return I.x == I.y && I.y == I.z; }
-
-}  // namespace
-
 void bodies_kick_drift(Particles& p, const std::vector<ClumpTemplate>& clumps, double dt, bool rotation) {
   Bodies& B = p.bodies;
   const double half = 0.5 * dt;
@@ -28,7 +20,7 @@ void bodies_kick_drift(Particles& p, const std::vector<ClumpTemplate>& clumps, d
     B.v[b] += (half / B.mass[b]) * B.force[b];
     B.x[b] += dt * B.v[b];
     if (!rotation) continue;
-    if (spherical(B.inertia[b])) {
+    if (spherical_body(B.inertia[b])) {  // w += dt/2 T / I, as a sphere's
       B.w[b] += (half / B.inertia[b].x) * B.torque[b];
       B.q[b] = rotate_by_increment(B.q[b], dt * B.w[b]);
       continue;
@@ -49,7 +41,7 @@ void bodies_kick(Particles& p, const std::vector<ClumpTemplate>& clumps, double 
     if (B.fixed[b]) continue;
     B.v[b] += (half / B.mass[b]) * B.force[b];
     if (!rotation) continue;
-    if (spherical(B.inertia[b])) {
+    if (spherical_body(B.inertia[b])) {  // w += dt/2 T / I, as a sphere's
       B.w[b] += (half / B.inertia[b].x) * B.torque[b];
       continue;
     }

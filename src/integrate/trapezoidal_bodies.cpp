@@ -12,8 +12,6 @@ namespace mpdem {
 namespace {
 
 // m^2, the body's reach squared: the rotational norms' unit (a sphere's is its radius).
-bool spherical(const Vec3& I) { return I.x == I.y && I.y == I.z; }
-
 double reach2(const Model& model, const Bodies& B, std::size_t b) {
   const double r = model.clumps[static_cast<std::size_t>(B.clump[b])].reach();
   return r * r;
@@ -40,7 +38,7 @@ void TrapezoidalBodies::save_start(const Particles& p, const Model& model) {
   for (std::size_t b = 0; b < nb; ++b) {
     L0_[b] = angular_momentum(B.q[b], B.inertia[b], B.w[b]);
     a0_[b] = B.fixed[b] ? Vec3{} : B.force[b] / B.mass[b];
-    r0_[b] = spherical(B.inertia[b]) ? B.torque[b] / B.inertia[b].x : B.torque[b];
+    r0_[b] = spherical_body(B.inertia[b]) ? B.torque[b] / B.inertia[b].x : B.torque[b];
     free_ += B.fixed[b] ? 0 : 1;
     h0_[b] = B.heat[b] / (B.mass[b] * model.materials[static_cast<std::size_t>(B.material[b])].heat_capacity);
   }
@@ -77,7 +75,7 @@ void TrapezoidalBodies::update(Particles& p, const Model& model, double dt, bool
     Vec3 w = w0_[b], alpha = dt * w0_[b];
     if (rotation && !held) {
       const Vec3 I = B.inertia[b];
-      if (spherical(I)) {  // a sphere's update, operation for operation
+      if (spherical_body(I)) {  // a sphere's update, operation for operation
         const Vec3 b1 = predictor ? r1 : r1 / I.x;
         w = w0_[b] + dt * (keep * r0 + phi * b1);
       } else {

@@ -21,7 +21,7 @@ Quat free_rotation(const Quat& q, const Vec3& I, const Vec3& L, double h) {
   // Two equal moments (I_a = I_b): the free rotation is exact in closed form as a precession of
   // the body about L (rate |L| / I_a) composed with a spin about the symmetry axis s. The
   // spherical case is one rotation by h L / I.
-  if (I.x == I.y && I.y == I.z) return rotate_by_increment(q, (h / I.x) * L);
+  if (spherical_body(I)) return rotate_by_increment(q, (h / I.x) * L);
   int s = -1;  // the symmetry axis: the one whose moment differs from the two equal ones
   if (I.y == I.z) s = 0;
   else if (I.x == I.z) s = 1;

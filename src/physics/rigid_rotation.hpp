@@ -18,6 +18,10 @@
 
 namespace mpdem {
 
+// Whether the three principal moments (kg m^2) are equal: such a body has no gyroscopic term and
+// the integrators move it with a sphere's operations (a one-member clump follows the sphere).
+inline bool spherical_body(const Vec3& I) { return I.x == I.y && I.y == I.z; }
+
 // q rotated by the angle a (rad) about its own body axis k (0, 1, 2): q (cos(a/2), sin(a/2) e_k).
 inline Quat rotate_about_body_axis(const Quat& q, int k, double a) {
   const double c = std::cos(0.5 * a), s = std::sin(0.5 * a);

@@ -15,6 +15,12 @@ namespace mpdem {
 // optional mass (kg) and inertia ([I1, I2, I3], kg m^2). Throws InputError naming file, line and key.
 void read_clump_templates(const TomlSection& root, const std::filesystem::path& dir, Model& model);
 
+// " (known: a b)" (or that no [[clump]] is defined): the tail of an unknown clump name's message.
+std::string known_clumps(const Model& model);
+// Refuses, at the first [[particles]] entry with a clump, what clumps do not run with yet
+// (periodic boundaries, inlets, sinks). `root` names the scene file.
+void check_clump_support(const TomlSection& root, const Scene& scene);
+
 // Appends the bodies of the body CSV `file` (columns: id, x, y, z of the centre of mass; optional
 // q0, q1, q2, q3 (unit quaternion w, x, y, z: the template's frame as written -> world; identity
 // by default, so a body stands as its template is written), vx, vy, vz, wx, wy, wz, fixed,

@@ -174,29 +174,6 @@ std::filesystem::path existing_file(const TomlSection& s, std::string_view k, co
   return p;
 }
 
-// ": known clumps: a, b" (or that none is defined), for an unknown clump name.
-std::string known_clumps(const Model& model) {
-  if (model.clumps.empty()) return " (no [[clump]] is defined)";
-  std::string out = " (known:";
-  for (const ClumpTemplate& c : model.clumps) out += " " + c.name;
-  return out + ")";
-}
-
-// What clumps do not run with yet: named at the first [[particles]] entry with a clump.
-void check_clump_support(const TomlSection& root, const Scene& scene) {
-  for (const ParticleSource& src : scene.particle_sources) {
-    if (src.clump.empty()) continue;
-    const Params& p = scene.model.params;
-    const auto refuse = [&](const std::string& what) {
-      throw InputError(root.file(), src.line, "particles.clump", "clumps do not run with " + what + " yet");
-    };
-    if (p.domain.bounded && p.domain.any_periodic()) refuse("periodic boundaries");
-    if (!p.inlets.empty()) refuse("[[inlet]] entries");
-    if (!p.sinks.empty()) refuse("[[sink]] entries");
-    return;
-  }
-}
-
 void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene) {
   std::size_t entry = 0;
   for (const TomlSection& s : root.tables("particles", {"file", "generate", "material", "fixed", "clump"})) {

@@ -1,9 +1,10 @@
 #pragma once
 // Rigid bodies generated from a scene's `[[particles]] generate = {...}, clump = "name"` entry
-// (docs/scene.md "Clumps"): each body is placed by its bounding sphere (radius
-// ClumpTemplate::reach() about its centre of mass) with the sphere generator, so no member of one
-// body overlaps a member of another or leaves the region, whatever the orientations; each body then
-// gets a uniformly random orientation from the seed.
+// (docs/scene.md "Generated bodies"). placement = bounding: each body is placed by its bounding
+// sphere (radius ClumpTemplate::reach() about its centre of mass) with the sphere generator, so no
+// member of one body overlaps a member of another or leaves the region, whatever the orientations;
+// each body then gets a uniformly random orientation from the seed. placement = members (denser):
+// random sequential addition of whole bodies (centre and orientation), tested member by member.
 #include "model/generate_spec.hpp"
 #include "model/scene.hpp"
 

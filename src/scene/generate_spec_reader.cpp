@@ -135,7 +135,7 @@ GenerateSpec read_generate_spec(const std::string& file, const toml::table& tabl
                                 const std::filesystem::path& dir, bool clump) {
   const TomlSection g(file, table, path,
                       {"region", "min", "max", "base", "axis", "cylinder_radius", "mesh", "count", "solid_fraction",
-                       "radius", "seed", "gap", "material", "velocity", "speed", "max_attempts", "fixed"});
+                       "radius", "seed", "gap", "material", "velocity", "speed", "max_attempts", "fixed", "placement"});
   GenerateSpec spec;
   spec.origin = file;
   spec.line = g.line();
@@ -172,6 +172,11 @@ GenerateSpec read_generate_spec(const std::string& file, const toml::table& tabl
   if (!clump) spec.radius = read_radius(g, table);
   else if (g.has("radius"))
     g.fail("radius", "does not apply with clump: the clump template fixes the bodies' size and shape");
+  if (const auto p = g.string("placement")) {
+    if (!clump) g.fail("placement", "applies only with clump (how bodies are kept apart)");
+    if (*p == "members") spec.placement = BodyPlacement::Members;
+    else if (*p != "bounding") g.fail("placement", "expected \"bounding\" or \"members\", got \"" + *p + "\"");
+  }
   if (const auto s = g.integer("seed", 0, std::numeric_limits<std::int64_t>::max()))
     spec.seed = static_cast<std::uint64_t>(*s);
   g.get("gap", spec.gap, kNonNegative);

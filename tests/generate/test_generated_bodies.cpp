@@ -52,17 +52,10 @@ Scene load(const std::string& generate) {
 
 }  // namespace
 
-TEST(GeneratedBodies, BoxOfTetrahedraHasNoMemberOverlapsAndStaysInside) {
-  constexpr std::size_t kN = 400;
-  const Scene s = load("count = 400, seed = 7, velocity = [0.1, 0, 0]");
-  const Particles& p = s.particles;
-  const Bodies& B = p.bodies;
-  ASSERT_EQ(B.size(), kN);
-  ASSERT_EQ(p.size(), 4 * kN);
-  for (std::size_t b = 0; b < kN; ++b) {
-    EXPECT_EQ(B.id[b], static_cast<std::int64_t>(b));  // ids after the largest so far (none): 0, 1, ...
-    EXPECT_EQ(B.v[b].x, 0.1);
-  }
+namespace {
+
+// Every member inside the box, and every pair of members of different bodies apart, by brute force.
+void expect_apart_and_inside(const Particles& p) {
   // Every pair of members of different bodies, by brute force: distance >= r_i + r_j (round-off).
   std::size_t pairs = 0;
   double worst = INFINITY;  // m, smallest surface gap
@@ -79,8 +72,25 @@ TEST(GeneratedBodies, BoxOfTetrahedraHasNoMemberOverlapsAndStaysInside) {
       worst = std::min(worst, norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j]);
     }
   }
-  EXPECT_EQ(pairs, 16 * kN * (kN - 1) / 2);
+  const std::size_t n = p.bodies.size();
+  EXPECT_EQ(pairs, 16 * n * (n - 1) / 2);
   EXPECT_GE(worst, -kRoundOff);
+}
+
+}  // namespace
+
+TEST(GeneratedBodies, BoxOfTetrahedraHasNoMemberOverlapsAndStaysInside) {
+  constexpr std::size_t kN = 400;
+  const Scene s = load("count = 400, seed = 7, velocity = [0.1, 0, 0]");
+  const Particles& p = s.particles;
+  const Bodies& B = p.bodies;
+  ASSERT_EQ(B.size(), kN);
+  ASSERT_EQ(p.size(), 4 * kN);
+  for (std::size_t b = 0; b < kN; ++b) {
+    EXPECT_EQ(B.id[b], static_cast<std::int64_t>(b));  // ids after the largest so far (none): 0, 1, ...
+    EXPECT_EQ(B.v[b].x, 0.1);
+  }
+  expect_apart_and_inside(p);
   // Member ids are unique (assign_member_ids).
   std::vector<std::int64_t> ids(p.id.begin(), p.id.end());
   std::sort(ids.begin(), ids.end());
@@ -141,4 +151,43 @@ TEST(GeneratedBodies, SolidFractionIsOfTheBodiesVolume) {
 TEST(GeneratedBodies, RadiusIsRefusedWithClump) {
   const std::string msg = error_of([] { load("count = 3, radius = 0.001"); });
   expect_contains(msg, {"scene.toml:13: 'particles.generate.radius'", "does not apply with clump"});
+}
+
+// placement = "members": a bodies' fraction of 0.2 is beyond the bounding spheres' jamming (0.38 of
+// bounding spheres is 0.17 of these bodies, docs/scene.md) but is reached member by member, still
+// without overlaps, inside the box, with uniform orientations and bitwise reproducible.
+TEST(GeneratedBodies, MemberPlacementIsDenserAndStillApart) {
+  const std::string spec = "solid_fraction = 0.2, seed = 9";
+  const std::string bounding = error_of([&] { load(spec); });
+  expect_contains(bounding, {"scene.toml:13: 'generate'", "clump 'tetra' bodies placed by their bounding spheres",
+                             "could not place", "placement = \"members\" packs denser"});
+  const Scene s = load(spec + ", placement = \"members\"");
+  const std::size_t n = s.particles.bodies.size();
+  EXPECT_NEAR(static_cast<double>(n) * s.model.clumps[0].shape.volume / (kL * kL * kL), 0.2,
+              0.5 * s.model.clumps[0].shape.volume / (kL * kL * kL));
+  ASSERT_EQ(s.particles.size(), 4 * n);
+  expect_apart_and_inside(s.particles);
+  Mat3 mean{};
+  for (std::size_t b = 0; b < n; ++b) {
+    const Mat3 R = quat_matrix(s.particles.bodies.q[b]);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) mean[i][j] += R[i][j] / static_cast<double>(n);
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_LT(std::abs(mean[i][j]), 3.0 / std::sqrt(static_cast<double>(n)));
+  const Scene again = load(spec + ", placement = \"members\"");
+  ASSERT_EQ(again.particles.size(), s.particles.size());
+  EXPECT_EQ(std::memcmp(again.particles.x.data(), s.particles.x.data(), s.particles.size() * sizeof(Vec3)), 0);
+}
+
+TEST(GeneratedBodies, PlacementKeyIsCheckedAndOnlyWithClump) {
+  expect_contains(error_of([] { load("count = 3, placement = \"tight\""); }),
+                  {"scene.toml:13: 'particles.generate.placement'", "expected \"bounding\" or \"members\""});
+  TempDir d("mpdem_gen_bodies");
+  const std::string spheres =
+      "[time]\nduration = 0.01\ndt = 1e-6\n[[material]]\nname = \"glass\"\ndensity = 2500\n[[particles]]\n"
+      "generate = { region = \"box\", min = [0, 0, 0], max = [0.06, 0.06, 0.06], count = 3, radius = 0.001, "
+      "placement = \"members\" }\n";
+  expect_contains(error_of([&] { load_scene(d.write("scene.toml", spheres)); }),
+                  {"'particles.generate.placement'", "applies only with clump"});
 }

@@ -24,6 +24,12 @@ struct RegionSpec {
   std::filesystem::path mesh;  // Mesh: closed surface, STL or barrier CSV
 };
 
+// How generated clump bodies are kept apart (docs/scene.md "Generated bodies").
+enum class BodyPlacement {
+  Bounding,  // by their bounding spheres (any orientation fits)
+  Members,   // each candidate's members tested against the placed members (denser)
+};
+
 struct GenerateSpec {
   RegionSpec region;
   RadiusDistribution radius;
@@ -36,8 +42,9 @@ struct GenerateSpec {
   double speed = 0.0;                 // m/s, > 0: random directions with this magnitude instead
   bool fixed = false;                 // the particles keep their initial velocity (Particles::fixed)
   std::size_t max_attempts = 100000;  // random positions tried per particle before giving up
-  std::string origin = "generate";    // file (or "generate") named by error messages
-  std::size_t line = 0;               // line in `origin`, 0 = none
+  BodyPlacement placement = BodyPlacement::Bounding;  // clump bodies only (`placement` key)
+  std::string origin = "generate";                    // file (or "generate") named by error messages
+  std::size_t line = 0;                               // line in `origin`, 0 = none
 };
 
 }  // namespace mpdem

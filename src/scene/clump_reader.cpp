@@ -15,6 +15,7 @@
 #include "io/csv_table.hpp"
 #include "model/derived_limits.hpp"
 #include "model/body_members.hpp"
+#include "generate/generated_bodies.hpp"
 
 namespace mpdem {
 
@@ -199,6 +200,14 @@ void read_clump_bodies(const std::filesystem::path& file, const Model& model, in
     add_body(model, material, clump, init, out);
   }
   if (t.rows().empty()) throw InputError(t.file(), t.header_line(), "", "expected at least one body row");
+}
+
+void generate_clump_bodies(const GenerateSpec& spec, const Model& model, int material, int clump, Particles& out) {
+  if (!spec.material.empty()) material = model.material_index(spec.material);  // checked when read
+  const Material& mat = model.materials[static_cast<std::size_t>(material)];
+  if (const std::string why = body_mass_problem(model.clumps[static_cast<std::size_t>(clump)], mat); !why.empty())
+    throw InputError(spec.origin, spec.line, "particles.generate", why);
+  add_generated_bodies(spec, model, material, clump, out);
 }
 
 void assign_member_ids(Particles& p, const std::string& origin) {

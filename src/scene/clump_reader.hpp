@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "io/toml_section.hpp"
+#include "model/generate_spec.hpp"
 #include "model/scene.hpp"
 
 namespace mpdem {
@@ -30,6 +31,11 @@ void check_clump_support(const TomlSection& root, const Scene& scene);
 // assign_member_ids). Body ids must be >= 0 and unique across the body files read so far (the
 // bodies already in out). Throws InputError naming file, line and column.
 void read_clump_bodies(const std::filesystem::path& file, const Model& model, int material, int clump, Particles& out);
+
+// Appends the bodies that `spec` generates (generate/generated_bodies.hpp) of template `clump`
+// and material spec.material (else `material`), after checking that the body's mass and moments
+// are usable (the message names the entry's generate table).
+void generate_clump_bodies(const GenerateSpec& spec, const Model& model, int material, int clump, Particles& out);
 
 // Gives the member spheres ids after the largest id of the free spheres, in body order and then
 // template order (a member's id names it in the contact output); checks that body ids are unique.

@@ -132,10 +132,10 @@ RegionSpec read_cylinder_region(const TomlSection& g) {
 }
 
 GenerateSpec read_generate_spec(const std::string& file, const toml::table& table, const std::string& path,
-                                const std::filesystem::path& dir) {
+                                const std::filesystem::path& dir, bool clump) {
   const TomlSection g(file, table, path,
                       {"region", "min", "max", "base", "axis", "cylinder_radius", "mesh", "count", "solid_fraction",
-                       "radius", "seed", "gap", "material", "velocity", "speed", "max_attempts", "fixed"});
+                       "radius", "seed", "gap", "material", "velocity", "speed", "max_attempts", "fixed", "placement"});
   GenerateSpec spec;
   spec.origin = file;
   spec.line = g.line();
@@ -169,7 +169,14 @@ GenerateSpec read_generate_spec(const std::string& file, const toml::table& tabl
   if (const auto n = g.integer("count", 1, std::numeric_limits<std::int64_t>::max()))
     spec.count = static_cast<std::size_t>(*n);
   if (const auto f = g.number("solid_fraction", Range{0.0, 1.0, false, false})) spec.solid_fraction = *f;
-  spec.radius = read_radius(g, table);
+  if (!clump) spec.radius = read_radius(g, table);
+  else if (g.has("radius"))
+    g.fail("radius", "does not apply with clump: the clump template fixes the bodies' size and shape");
+  if (const auto p = g.string("placement")) {
+    if (!clump) g.fail("placement", "applies only with clump (how bodies are kept apart)");
+    if (*p == "members") spec.placement = BodyPlacement::Members;
+    else if (*p != "bounding") g.fail("placement", "expected \"bounding\" or \"members\", got \"" + *p + "\"");
+  }
   if (const auto s = g.integer("seed", 0, std::numeric_limits<std::int64_t>::max()))
     spec.seed = static_cast<std::uint64_t>(*s);
   g.get("gap", spec.gap, kNonNegative);

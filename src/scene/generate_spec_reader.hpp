@@ -33,8 +33,9 @@ void check_cylinder_sizes(const TomlSection& g, const Vec3& axis, double radius,
                           std::string_view radius_key);
 
 // `path` is the table's dotted key ("particles.generate"); a relative `mesh` file is resolved
-// against `dir` (the scene file's folder) and must exist.
+// against `dir` (the scene file's folder) and must exist. `clump`: the entry places clump bodies,
+// whose template fixes their size, so a `radius` is refused instead of required.
 GenerateSpec read_generate_spec(const std::string& file, const toml::table& table, const std::string& path,
-                                const std::filesystem::path& dir);
+                                const std::filesystem::path& dir, bool clump = false);
 
 }  // namespace mpdem

@@ -187,7 +187,7 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
       // The generator table is read from the raw TOML (arrays of radii and fractions).
       const toml::node* g = doc["particles"].as_array()->get(entry)->as_table()->get("generate");
       if (!g->is_table()) s.fail("generate", "expected a table, e.g. generate = { region = \"box\", ... }");
-      src.generate = read_generate_spec(root.file(), *g->as_table(), "particles.generate", scene.dir);
+      src.generate = read_generate_spec(root.file(), *g->as_table(), "particles.generate", scene.dir, s.has("clump"));
       if (!src.generate->material.empty()) check_material(s, "generate", src.generate->material, scene.model);
     } else {
       src.file = existing_file(s, "file", scene.dir);
@@ -200,7 +200,6 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
     if (s.has("clump")) {
       if (scene.model.clump_index(src.clump) < 0)
         s.fail("clump", "unknown clump '" + src.clump + "'" + known_clumps(scene.model));
-      if (src.generate) s.fail("clump", "generated clumps are not supported yet: give the bodies in a CSV file");
     }
     scene.particle_sources.push_back(src);
   }
@@ -372,7 +371,9 @@ Scene load_sources(Scene scene) {
     const int mat = src.material.empty() ? 0 : scene.model.material_index(src.material);
     src.first = scene.particles.size();
     const std::size_t first_body = scene.particles.bodies.size();
-    if (src.generate) add_generated_particles(*src.generate, scene.model, mat, scene.particles);
+    if (src.generate && !src.clump.empty())
+      generate_clump_bodies(*src.generate, scene.model, mat, scene.model.clump_index(src.clump), scene.particles);
+    else if (src.generate) add_generated_particles(*src.generate, scene.model, mat, scene.particles);
     else if (!src.clump.empty())
       read_clump_bodies(src.file, scene.model, mat, scene.model.clump_index(src.clump), scene.particles);
     else read_particle_csv(src.file, scene.model, mat, scene.particles);

@@ -336,6 +336,24 @@ TEST(ClumpReader, DuplicateBodyIdAcrossEntriesNamesTheSecondRow) {
       msg, {(d.path / "more.csv").string() + ":3: 'id'", "body id 1 is given twice", "earlier [[particles]] entry"});
 }
 
+// Generated bodies (tests/generate/test_generated_bodies.cpp checks placement and orientations):
+// the entry gives bodies of its template after the CSV's, with ids after the largest so far.
+TEST(ClumpReader, GenerateGivesBodiesOfTheTemplate) {
+  TempDir d("mpdem_clump");
+  const Scene s = load(
+      d, scene_text(kDumbbell, kBodies + "[[particles]]\nclump = \"dumbbell\"\ngenerate = { region = \"box\", "
+                                         "min = [0, 0, 0], max = [0.1, 0.1, 0.1], count = 3 }\n"));
+  const Bodies& B = s.particles.bodies;
+  ASSERT_EQ(B.size(), 4u);
+  ASSERT_EQ(s.particles.size(), 8u);
+  EXPECT_EQ(B.id[0], 1);
+  for (std::size_t b = 1; b < 4; ++b) {
+    EXPECT_EQ(B.id[b], static_cast<std::int64_t>(b + 1));
+    EXPECT_EQ(B.clump[b], 0);
+    expect_rel(B.mass[b], dumbbell_mass(), kExact);
+  }
+}
+
 TEST(ClumpReader, BadParticlesEntriesNameLineAndKey) {
   struct Case {
     const char* what;
@@ -356,12 +374,6 @@ TEST(ClumpReader, BadParticlesEntriesNameLineAndKey) {
        "",
        "scene.toml:13: 'particles.clump'",
        {"expected a string"}},
-      {"generate",
-       "[[particles]]\nclump = \"dumbbell\"\ngenerate = { region = \"box\", min = [0, 0, 0], "
-       "max = [0.1, 0.1, 0.1], count = 3, radius = 0.001 }\n",
-       "",
-       "scene.toml:12: 'particles.clump'",
-       {"generated clumps are not supported yet"}},
       {"periodic",
        entry,
        "[domain]\nmin = [-1, -1, -1]\nmax = [1, 1, 1]\nperiodic = [\"x\"]\n",

@@ -2,7 +2,8 @@
 // sink; each is removed whole at the step its centre of mass enters (not when its lower member
 // does), the sink counts its members and its mass once, removed.csv names its members, the energy
 // it took along (kinetic, rotational and potential, once per body) keeps the balance closed, and a
-// run checkpointed after some removals resumes bitwise.
+// run checkpointed after some removals resumes bitwise. With domain.on_exit = "remove" a body
+// goes whole at the step its first member leaves the domain.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -171,4 +172,47 @@ TEST(ClumpSink, ResumeAfterRemovalsIsBitwise) {
     EXPECT_EQ(full.sinks()->states().at(0).removed_mass, resumed.sinks()->states().at(0).removed_mass);
     EXPECT_EQ(full.record().removed_energy, resumed.record().removed_energy);
   }
+}
+
+// domain.on_exit = "remove" with the domain's floor at z = 0: each body goes whole, at the step
+// its lower member's centre leaves the domain (long before its centre of mass would), with its
+// energy once.
+TEST(ClumpSink, BodyLeavingTheDomainGoesWholeWithItsFirstMember) {
+  const auto with_domain = [](Scene s) {
+    DomainParams& d = s.model.params.domain;
+    d.bounded = true;
+    d.min = {-0.1, -0.1, 0.0};
+    d.max = {0.1, 0.1, 0.2};
+    d.on_exit = ExitPolicy::Remove;
+    return s;
+  };
+  Simulation sim(with_domain(falling_dumbbells(Integrator::Verlet, false)), RunOptions{{}, false, false});
+  Simulation free(falling_dumbbells(Integrator::Verlet, false), RunOptions{{}, false, false});
+  const double M = sim.particles().bodies.mass[0];
+  std::set<std::int64_t> gone;
+  double taken = 0.0;  // J
+  for (int k = 0; k < kSteps; ++k) {
+    sim.advance(kDt);
+    free.advance(kDt);
+    const Particles& p = sim.particles();
+    const Particles& q = free.particles();
+    ASSERT_EQ(p.size(), 2 * p.bodies.size());
+    const Bodies& F = q.bodies;
+    for (std::size_t f = 0; f < F.size(); ++f) {
+      double lowest = INFINITY;  // m, the lower member's centre in the free fall
+      for (std::size_t i = 0; i < q.size(); ++i)
+        if (q.body[i] == F.id[f]) lowest = std::min(lowest, q.x[i].z);
+      const bool present = p.bodies.find(F.id[f]) >= 0;
+      EXPECT_EQ(present, lowest >= 0.0) << "body " << F.id[f] << " at step " << k + 1;
+      if (!present && gone.insert(F.id[f]).second) {
+        EXPECT_GT(F.x[f].z, 0.5 * kR);  // its centre is still well inside
+        taken += 0.5 * M * norm2(F.v[f]) + rotational_energy(F.q[f], F.inertia[f], F.w[f]) + M * kG * F.x[f].z;
+      }
+    }
+  }
+  std::printf("on_exit = remove: %zu of %d dumbbells left the domain, energy taken along %.9g J (expected %.9g)\n",
+              gone.size(), kBodies, sim.record().removed_energy, taken);
+  EXPECT_GE(gone.size(), 5u);
+  EXPECT_NEAR(sim.record().removed_energy, taken, 1e-12 * std::abs(taken));
+  EXPECT_NEAR(sim.record().balance, sim.record().start_balance, 1e-9 * std::abs(sim.record().start_balance));
 }

@@ -18,12 +18,12 @@ PeriodicImages::PeriodicImages(const DomainParams& d) {
 
 namespace {
 
-// Moves x along axis c into [lo, lo + L) by whole periods; returns the periods taken off.
-double wrap_coordinate(double& x, double lo, double L) {
+// Moves x into [lo, hi) by whole periods L = hi - lo; returns the periods taken off.
+double wrap_coordinate(double& x, double lo, double hi, double L) {
   double m = std::floor((x - lo) / L);
   x -= m * L;
-  // Round-off can leave x a hair outside [lo, lo + L).
-  if (x >= lo + L) {
+  // Round-off can leave x a hair outside [lo, hi).
+  if (x >= hi) {
     x -= L;
     m += 1.0;
   } else if (x < lo) {
@@ -46,7 +46,7 @@ void PeriodicImages::wrap(Particles& p) const {
     for (int c = 0; c < 3; ++c) {
       double& x = B.x[b][c];
       if (!periodic_[static_cast<std::size_t>(c)] || !std::isfinite(x) || (x >= lo_[c] && x < hi_[c])) continue;
-      const double m = wrap_coordinate(x, lo_[c], period_[c]);
+      const double m = wrap_coordinate(x, lo_[c], hi_[c], period_[c]);
       body_shift[b][c] = m * period_[c];
       B.image[b][static_cast<std::size_t>(c)] += static_cast<std::int32_t>(m);
     }
@@ -62,7 +62,8 @@ void PeriodicImages::wrap(Particles& p) const {
       if (!periodic_[static_cast<std::size_t>(c)]) continue;
       double& x = p.x[i][c];
       if (!std::isfinite(x) || (x >= lo_[c] && x < hi_[c])) continue;  // a non-finite one is reported elsewhere
-      p.image[i][static_cast<std::size_t>(c)] += static_cast<std::int32_t>(wrap_coordinate(x, lo_[c], period_[c]));
+      p.image[i][static_cast<std::size_t>(c)] += static_cast<std::int32_t>(
+          wrap_coordinate(x, lo_[c], hi_[c], period_[c]));
     }
   }
 }

@@ -1,7 +1,9 @@
 // Clumps in a periodic domain (parallel/periodic_images.hpp, docs/physics.md section 17): a body's
 // centre is wrapped and its members move with it, so a dumbbell crossing a periodic face keeps its
 // shape (member - centre = R(q) d to round-off), momentum and spin, and never meets an image of
-// itself; two dumbbells colliding across a face give the collision in the middle of the box
+// itself; a member lying outside the period by its offset from the centre meets another body's
+// member across the face (the image band widened by the offset); two dumbbells colliding across a
+// face give the collision in the middle of the box
 // (shifted by half a period) under both integrators; a periodic box of clumps does not depend on
 // the thread count and resumes from a checkpoint bitwise.
 #include <gtest/gtest.h>
@@ -12,8 +14,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <set>
+#include <utility>
 #include <vector>
 
+#include "neighbor/neighbor_search.hpp"
 #include "sim/simulation.hpp"
 #include "support/clump_scenes.hpp"
 #include "support/dense_granular_scene.hpp"
@@ -124,6 +129,67 @@ TEST(ClumpPeriodic, DumbbellCrossingAFaceKeepsItsShapeAndMomentum) {
     EXPECT_LE(shape, 1e-12);
     EXPECT_LE(flown, 1e-12);
   }
+}
+
+// The pairs a build lists, by the ids of their owned particles or ghosts' sources (smaller first).
+namespace {
+std::set<std::pair<std::int64_t, std::int64_t>> listed_pairs(const NeighborSearch& ns, const Particles& p) {
+  std::set<std::pair<std::int64_t, std::int64_t>> out;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (const std::uint32_t j : ns.pairs().neighbors(i))
+      out.insert({std::min(p.id[i], p.id[j]), std::max(p.id[i], p.id[j])});
+  return out;
+}
+}  // namespace
+
+// A stick (two spheres of radius 0.25 mm, 3 mm either side of its centre) lies along x with its
+// centre 0.5 mm inside x = kL, so its member id 1 is 2.5 mm outside the period; a ball (body 2,
+// member id 2) touches that member's image 2.95 mm from x = 0. The pair is listed once when the
+// band is widened by the member offset (3 mm), and lost without (the ball, 2.95 mm from the face,
+// would get no image, and the member's smaller id lists the pair from the member's side). A lens
+// of two overlapping members straddling the face lists no pair of its own members.
+TEST(ClumpPeriodic, MemberOutsideThePeriodMeetsTheOtherSide) {
+  Scene s = periodic_scene(Integrator::Verlet);
+  const double r = 0.25e-3, skin = 0.05e-3;  // m
+  const int stick = add_template(s, "stick", {{{0.0, -3e-3, 0.0}, r}, {{0.0, 3e-3, 0.0}, r}});
+  const int ball = add_template(s, "ball", {{{0.0, 0.0, 0.0}, r}});
+  const int lens = add_template(s, "lens", {{{0.0, -0.2e-3, 0.0}, r}, {{0.0, 0.2e-3, 0.0}, r}});
+  const Quat along_x = quat_normalized({1.0, 0.0, 0.0, -1.0});  // template y -> world +x
+  add_clump(s, 1, stick, {kL - 0.5e-3, 0.5 * kL, 0.5 * kL}, {}, {}, along_x);
+  add_clump(s, 2, ball, {2.95e-3, 0.5 * kL, 0.5 * kL});
+  add_clump(s, 3, lens, {kL - 0.05e-3, 0.3 * kL, 0.5 * kL}, {}, {}, along_x);
+  finish_clumps(s);
+  Particles& p = s.particles;
+  ASSERT_GT(p.x[1].x, kL + 2.4e-3);  // member id 1, outside the period
+  ASSERT_EQ(p.id[1], 1);
+  ASSERT_EQ(p.id[2], 2);
+  const double offset = largest_member_offset(s.model.clumps);
+  EXPECT_NEAR(offset, 3e-3, 1e-15);
+  const std::pair<std::int64_t, std::int64_t> across{1, 2};
+  {
+    NeighborSearch ns(skin, 0.0, s.model.params.domain, offset);
+    ns.rebuild(p, s.barriers);
+    const auto pairs = listed_pairs(ns, p);
+    EXPECT_EQ(pairs.count(across), 1u);
+    for (const auto& [a, b] : pairs) {
+      std::int64_t ba = -2, bb = -2;  // their bodies
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.id[i] == a) ba = p.body[i];
+        if (p.id[i] == b) bb = p.body[i];
+      }
+      EXPECT_NE(ba, bb) << "members " << a << " and " << b << " of one body are paired";
+    }
+    std::size_t listed = 0;  // the pair across the face, counted over the list's slots
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (const std::uint32_t j : ns.pairs().neighbors(i))
+        listed += std::minmax(p.id[i], p.id[j]) == std::minmax<std::int64_t>(1, 2);
+    EXPECT_EQ(listed, 1u);
+    p.drop_ghosts();
+  }
+  NeighborSearch narrow(skin, 0.0, s.model.params.domain, 0.0);
+  narrow.rebuild(p, s.barriers);
+  EXPECT_EQ(listed_pairs(narrow, p).count(across), 0u);
+  p.drop_ghosts();
 }
 
 namespace {

@@ -124,6 +124,16 @@ void TrapezoidalBodies::update(Particles& p, const Model& model, double dt, bool
   place_members(model.clumps, p);
 }
 
+void TrapezoidalBodies::compact(const std::vector<char>& keep) {
+  for (std::vector<Vec3>* a : {&a_prev_, &r_prev_}) {
+    if (a->size() != keep.size()) continue;  // no history of these bodies
+    std::size_t k = 0;
+    for (std::size_t b = 0; b < a->size(); ++b)
+      if (keep[b]) (*a)[k++] = (*a)[b];
+    a->resize(k);
+  }
+}
+
 void TrapezoidalBodies::save(BinaryWriter& w) const {
   w.value(dt_prev_);
   w.vector(a_prev_);

@@ -39,6 +39,8 @@ class TrapezoidalBodies {
     r_prev_ = r0_;
     dt_prev_ = dt;
   }
+  // Keeps the history of the bodies whose keep[b] is true (Bodies::compact, the bodies a sink removed).
+  void compact(const std::vector<char>& keep);
   // The history, for checkpoints (section "body_rate_history").
   void save(BinaryWriter& w) const;
   void restore(BinaryReader& r, std::size_t bodies);

@@ -103,7 +103,7 @@ void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Ba
   } else if (images_.active()) {
     // x_owned may be p.x, which appending the ghosts reallocates: copied first.
     x_all.assign(x_owned.begin(), x_owned.end());
-    images_.select(x_all, periodic_image_width(rmax, extra_, skin_));
+    images_.select(x_all, periodic_image_width(rmax, extra_, skin_, member_offset_));
     images_.append(p);
     x_all.reserve(owned + images_.size());
     for (std::size_t g = 0; g < images_.size(); ++g) x_all.push_back(x_all[images_.source(g)] + images_.shift(g));

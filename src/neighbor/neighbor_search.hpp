@@ -23,9 +23,10 @@ namespace mpdem {
 class NeighborSearch {
  public:
   // skin [m] > 0; extra_range [m] >= 0 adds to the contact range (near-field cutoff); the
-  // domain's periodic axes get ghost images (periodic_images.hpp).
-  NeighborSearch(double skin, double extra_range, const DomainParams& domain = {})
-      : skin_(skin), extra_(extra_range), images_(domain) {}
+  // domain's periodic axes get ghost images (periodic_images.hpp), in a band widened by
+  // member_offset [m] >= 0, the largest offset of a clump member from its body's centre.
+  NeighborSearch(double skin, double extra_range, const DomainParams& domain = {}, double member_offset = 0.0)
+      : skin_(skin), extra_(extra_range), member_offset_(member_offset), images_(domain) {}
 
   // A run over several ranks (docs/parallel.md): the ghosts are the halo of the neighbouring
   // bricks (and the periodic images, through the same exchange) instead of PeriodicImages.
@@ -118,6 +119,7 @@ class NeighborSearch {
 
   double skin_;
   double extra_;
+  double member_offset_;  // m, widens the periodic images' band (clump members outside the period)
   PeriodicImages images_;
   std::unique_ptr<HaloExchange> halo_;  // several ranks: the ghosts' source instead of images_
   double halo_width_ = 0.0;             // m, the halo's reach at the last build (several ranks)

@@ -86,9 +86,7 @@ void check_clump_support(const TomlSection& root, const Scene& scene) {
     const auto refuse = [&](const std::string& what) {
       throw InputError(root.file(), src.line, "particles.clump", "clumps do not run with " + what + " yet");
     };
-    if (p.domain.bounded && p.domain.any_periodic()) refuse("periodic boundaries");
     if (!p.inlets.empty()) refuse("[[inlet]] entries");
-    if (!p.sinks.empty()) refuse("[[sink]] entries");
     return;
   }
 }

@@ -19,7 +19,7 @@ void read_clump_templates(const TomlSection& root, const std::filesystem::path& 
 // " (known: a b)" (or that no [[clump]] is defined): the tail of an unknown clump name's message.
 std::string known_clumps(const Model& model);
 // Refuses, at the first [[particles]] entry with a clump, what clumps do not run with yet
-// (periodic boundaries, inlets, sinks). `root` names the scene file.
+// (inlets). `root` names the scene file.
 void check_clump_support(const TomlSection& root, const Scene& scene);
 
 // Appends the bodies of the body CSV `file` (columns: id, x, y, z of the centre of mass; optional

@@ -136,8 +136,9 @@ class Simulation {
   void insert_from_inlets();                    // [[inlet]]: the particles due, between steps
   // Removes the particles whose keep[i] is 0: removed.csv, their energy into the balance, the
   // others' contact history kept, the rates re-evaluated; exits: domain exits (counted, one
-  // progress line each), else a sink's. Collective on several ranks.
-  void remove_marked(const std::vector<char>& keep, bool exits);
+  // progress line each), else a sink's. A clump body goes whole (all its members when one is
+  // marked; its energy once). Collective on several ranks.
+  void remove_marked(std::vector<char> keep, bool exits);
   ParticleTotals totals() const;                      // the sums over every rank's particles for the global log
   void log_row(GlobalLogRow row);                     // a global log row, with the inlets' and sinks' columns
   std::string open_system_summary() const;            // the inlets' and sinks' line for stderr ("" = none)

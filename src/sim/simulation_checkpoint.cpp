@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 #include <type_traits>
 #include <fstream>
@@ -103,8 +104,10 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
       o.vector(std::decay_t<decltype(a)>(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(owned)));
     });
   });
-  // The clumps' bodies, one section per array (a scene with clumps runs on one rank).
-  if (p.has_bodies())
+  // The clumps' bodies, one section per array (a scene with clumps runs on one rank); in every
+  // scene with templates, so that a run whose sinks removed its bodies resumes as well.
+  const bool clumps = !scene_.model.clumps.empty();
+  if (clumps)
     p.bodies.for_each_array([&](const char* name, auto& a) {
       w.section(std::string("bodies/") + name, [&](BinaryWriter& o) { o.vector(a); });
     });
@@ -125,7 +128,7 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
     o.value(rates.dt());
     o.vector(sorted);
   });
-  if (p.has_bodies()) w.section("body_rate_history", [&](BinaryWriter& o) { trapezoidal_.bodies().save(o); });
+  if (clumps) w.section("body_rate_history", [&](BinaryWriter& o) { trapezoidal_.bodies().save(o); });
   // What decides the next insertions and the sinks' totals ([[inlet]], [[sink]]).
   if (inlets_) w.section("inlets", [&](BinaryWriter& o) { inlets_->save(o); });
   if (sinks_) w.section("sinks", [&](BinaryWriter& o) { sinks_->save(o); });
@@ -184,14 +187,24 @@ void Simulation::resume_from(const std::filesystem::path& file) {
     p.for_each_array([&](const char*, auto& a) { sizes_ok = sizes_ok && a.size() == n; });
     if (!sizes_ok) throw std::runtime_error("particle arrays of different lengths");
     check_restored(p, scene_.model.materials.size());
-    if (p.has_bodies()) {
-      const std::size_t nb = p.bodies.size();
+    const bool clumps = !scene_.model.clumps.empty();
+    if (clumps) {
+      // As many bodies as the checkpoint holds (sinks may have removed some), each with its members.
+      const std::size_t scene_bodies = p.bodies.size();
+      std::size_t nb = 0;
       p.bodies.for_each_array([&](const char* array, auto& a) {
         read(std::string("bodies/") + array,
              [&](BinaryReader& s) { a = s.template vector<typename std::decay_t<decltype(a)>::value_type>(); });
-        if (a.size() != nb) throw std::runtime_error("the checkpoint's bodies differ from the scene's in number");
+        if (std::string_view(array) == "id") nb = a.size();
+        if (a.size() != nb || nb > scene_bodies)
+          throw std::runtime_error("the checkpoint's bodies differ from the scene's in number");
       });
       p.bodies.stale = true;
+      try {
+        p.bodies.index_members(p);
+      } catch (const std::logic_error& e) {
+        throw std::runtime_error(std::string("the checkpoint's bodies and member spheres do not match: ") + e.what());
+      }
     }
     if (!(std::isfinite(time_) && time_ >= 0.0 && std::isfinite(dt_) && dt_ > 0.0))
       throw std::runtime_error(
@@ -202,8 +215,7 @@ void Simulation::resume_from(const std::filesystem::path& file) {
       const auto dt = s.value<double>();
       trapezoidal_.rate_history().set_records(s.vector<RateRecord>(), dt);
     });
-    if (p.has_bodies())
-      read("body_rate_history", [&](BinaryReader& s) { trapezoidal_.bodies().restore(s, p.bodies.size()); });
+    if (clumps) read("body_rate_history", [&](BinaryReader& s) { trapezoidal_.bodies().restore(s, p.bodies.size()); });
     if (inlets_) read("inlets", [&](BinaryReader& s) { inlets_->restore(s); });
     if (sinks_) read("sinks", [&](BinaryReader& s) { sinks_->restore(s); });
     // The output series are restored once run() has opened the outputs.

@@ -14,6 +14,17 @@ void Bodies::resize(std::size_t n) {
   stale = true;
 }
 
+void Bodies::compact(const std::vector<char>& keep) {
+  for_each_array([&keep](const char*, auto& a) {
+    std::size_t k = 0;
+    for (std::size_t b = 0; b < a.size(); ++b)
+      if (keep[b]) a[k++] = a[b];
+    a.resize(k);
+  });
+  sorted_ids_.clear();  // find() searches linearly until index_members
+  stale = true;
+}
+
 std::ptrdiff_t Bodies::find(std::int64_t body_id) const {
   if (sorted_ids_.size() != size()) {  // not indexed yet
     const auto it = std::find(id.begin(), id.end(), body_id);

@@ -374,21 +374,11 @@ TEST(ClumpReader, BadParticlesEntriesNameLineAndKey) {
        "",
        "scene.toml:13: 'particles.clump'",
        {"expected a string"}},
-      {"periodic",
-       entry,
-       "[domain]\nmin = [-1, -1, -1]\nmax = [1, 1, 1]\nperiodic = [\"x\"]\n",
-       "scene.toml:11: 'particles.clump'",
-       {"periodic boundaries", "not run with", "yet"}},
       {"inlet",
        entry,
        "[[inlet]]\nregion = \"box\"\nmin = [0, 0, 0.05]\nmax = [0.01, 0.01, 0.06]\ncount_rate = 10\nradius = 0.001\n",
        "scene.toml:11: 'particles.clump'",
        {"[[inlet]] entries"}},
-      {"sink",
-       entry,
-       "[[sink]]\nregion = \"box\"\nmin = [0, 0, -1]\nmax = [1, 1, 0]\n",
-       "scene.toml:11: 'particles.clump'",
-       {"[[sink]] entries"}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);

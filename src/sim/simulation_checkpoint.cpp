@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 #include <type_traits>
 #include <fstream>
@@ -184,14 +186,25 @@ void Simulation::resume_from(const std::filesystem::path& file) {
     p.for_each_array([&](const char*, auto& a) { sizes_ok = sizes_ok && a.size() == n; });
     if (!sizes_ok) throw std::runtime_error("particle arrays of different lengths");
     check_restored(p, scene_.model.materials.size());
-    if (p.has_bodies()) {
-      const std::size_t nb = p.bodies.size();
+    // The bodies as the checkpoint has them (an inlet adds bodies to a scene that may have none).
+    if (p.has_bodies() || r.has("bodies/id")) {
+      std::size_t nb = 0;
       p.bodies.for_each_array([&](const char* array, auto& a) {
         read(std::string("bodies/") + array,
              [&](BinaryReader& s) { a = s.template vector<typename std::decay_t<decltype(a)>::value_type>(); });
-        if (a.size() != nb) throw std::runtime_error("the checkpoint's bodies differ from the scene's in number");
+        if (std::string_view(array) == "id") nb = a.size();
+        if (a.size() != nb) throw std::runtime_error("the checkpoint's body arrays differ in length");
       });
+      for (std::size_t b = 0; b < nb; ++b)
+        if (p.bodies.clump[b] < 0 || static_cast<std::size_t>(p.bodies.clump[b]) >= scene_.model.clumps.size() ||
+            p.bodies.material[b] < 0 || static_cast<std::size_t>(p.bodies.material[b]) >= scene_.model.materials.size())
+          throw std::runtime_error("a body's template or material index is out of range");
       p.bodies.stale = true;
+      try {
+        p.bodies.index_members(p);
+      } catch (const std::logic_error& e) {
+        throw std::runtime_error(std::string("the checkpoint's bodies do not match its particles: ") + e.what());
+      }
     }
     if (!(std::isfinite(time_) && time_ >= 0.0 && std::isfinite(dt_) && dt_ > 0.0))
       throw std::runtime_error(

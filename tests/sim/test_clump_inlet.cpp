@@ -135,6 +135,39 @@ TEST(ClumpInlet, InsertsWholeBodiesApartInsideAndRigid) {
   EXPECT_NE(B.q[0].w, B.q[1].w);
 }
 
+// A rectangle face inlet in a tilted frame: every member inside the slab, and the templates drawn
+// with the number fractions: the count of tetrahedra among N bodies is binomial (N, 0.7), within
+// 3 standard deviations sqrt(N 0.7 0.3) of 0.7 N (the seed is fixed: deterministic).
+TEST(ClumpInlet, TiltedRectInletKeepsMembersInsideAndDrawsTheFractions) {
+  constexpr std::size_t kN = 1000;
+  Scene s = fed_bodies(Integrator::Verlet, 1e6, 17, true);  // 1000 bodies due at t = 0
+  InsertionVolume& vol = s.model.params.inlets[0].volume;
+  vol.shape = "rect";
+  vol.region.min = {};
+  vol.region.max = {0.1, 0.1, 0.02};  // m: edge1, edge2, depth
+  vol.origin = {0.01, -0.02, 0.03};
+  vol.u = {1.0, 0.0, 0.0};
+  vol.v = {0.0, 0.8, 0.6};
+  vol.w = {0.0, -0.6, 0.8};
+  Inlets inlets(s.model, s.particles);
+  const Particles fresh = inlets.insert(0.0, s.particles, s.barriers);
+  ASSERT_EQ(fresh.bodies.size(), kN);
+  EXPECT_EQ(inlets.states()[0].shortfall, 0.0);
+  for (std::size_t i = 0; i < fresh.size(); ++i) {
+    const Vec3 d = fresh.x[i] - vol.origin;
+    const Vec3 local{dot(vol.u, d), dot(vol.v, d), dot(vol.w, d)};  // m, in the slab's frame
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_GE(local[a] - fresh.radius[i], -kRoundOff);
+      EXPECT_LE(local[a] + fresh.radius[i], vol.region.max[a] + kRoundOff);
+    }
+  }
+  std::size_t tetra = 0;
+  for (const int c : fresh.bodies.clump) tetra += c == 0 ? 1 : 0;
+  const double sigma = std::sqrt(kN * 0.7 * 0.3);
+  EXPECT_LT(std::abs(static_cast<double>(tetra) - 0.7 * kN), 3.0 * sigma) << tetra << " tetrahedra";
+  std::printf("%zu tetrahedra of %zu bodies (0.7 N = %.0f, sigma %.1f)\n", tetra, kN, 0.7 * kN, sigma);
+}
+
 // Through a run: the inlet's totals follow its rule at every insertion time, the bodies fall as
 // rigid bodies and the neighbour lists keep a body's members out of contact with each other.
 TEST(ClumpInlet, InsertedMassAndCountFollowTheRate) {

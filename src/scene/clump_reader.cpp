@@ -104,6 +104,7 @@ ClumpMix read_clump_mix(const TomlSection& s, std::string_view k, const Model& m
     return pa.line != pb.line ? pa.line < pb.line : pa.column < pb.column;
   });
   std::vector<std::string_view> names;
+  names.reserve(entries.size());
   for (const auto& e : entries) names.push_back(e.first->str());
   const TomlSection table(s.file(), *t, s.key(k), names);
   double sum = 0.0;

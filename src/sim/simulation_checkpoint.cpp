@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -189,16 +190,18 @@ void Simulation::resume_from(const std::filesystem::path& file) {
     check_restored(p, scene_.model.materials.size());
     const bool clumps = !scene_.model.clumps.empty();
     if (clumps) {
-      // As many bodies as the checkpoint holds (sinks may have removed some), each with its members.
-      const std::size_t scene_bodies = p.bodies.size();
+      // As many bodies as the checkpoint holds (sinks remove bodies, inlets add them), each with its members.
       std::size_t nb = 0;
       p.bodies.for_each_array([&](const char* array, auto& a) {
         read(std::string("bodies/") + array,
              [&](BinaryReader& s) { a = s.template vector<typename std::decay_t<decltype(a)>::value_type>(); });
         if (std::string_view(array) == "id") nb = a.size();
-        if (a.size() != nb || nb > scene_bodies)
-          throw std::runtime_error("the checkpoint's bodies differ from the scene's in number");
+        if (a.size() != nb) throw std::runtime_error("the checkpoint's body arrays differ in length");
       });
+      for (std::size_t b = 0; b < nb; ++b)
+        if (p.bodies.clump[b] < 0 || static_cast<std::size_t>(p.bodies.clump[b]) >= scene_.model.clumps.size() ||
+            p.bodies.material[b] < 0 || static_cast<std::size_t>(p.bodies.material[b]) >= scene_.model.materials.size())
+          throw std::runtime_error("a body's template or material index is out of range");
       p.bodies.stale = true;
       try {
         p.bodies.index_members(p);

@@ -26,7 +26,10 @@ namespace mpdem {
 
 void Simulation::decompose(const Communicator& comm) {
   Particles& p = scene_.particles;
-  if (p.has_bodies()) throw RunError("clumps do not run on several ranks yet: run on one rank");
+  const auto& inlets = scene_.model.params.inlets;
+  if (p.has_bodies() ||
+      std::any_of(inlets.begin(), inlets.end(), [](const InletSpec& in) { return !in.clump.empty(); }))
+    throw RunError("clumps do not run on several ranks yet: run on one rank");
   const DomainParams& d = scene_.model.params.domain;
   // The bricks tile the domain; without one, the particles' bounding box (the outer bricks reach
   // to infinity, so this only places the cuts). Every rank loaded the whole scene: the same box.

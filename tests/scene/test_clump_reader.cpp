@@ -516,16 +516,6 @@ TEST(ClumpReader, BadFractionTablesNameLineAndKey) {
        "\"dumbbell\"\n",
        "scene.toml:19: 'inlet.clump'",
        {"bounding sphere (radius 0.002 m", "does not fit"}},
-      {"inlet with a sink",
-       kBodies,
-       inlet("clump = \"dumbbell\"\n") + "[[sink]]\nregion = \"box\"\nmin = [0, 0, -1]\nmax = [1, 1, 0]\n",
-       "scene.toml:11: 'particles.clump'",
-       {"[[sink]] entries"}},
-      {"inlet alone with a sink",
-       "",
-       inlet("clump = \"dumbbell\"\n") + "[[sink]]\nregion = \"box\"\nmin = [0, 0, -1]\nmax = [1, 1, 0]\n",
-       "scene.toml:11: 'inlet.clump'",
-       {"[[sink]] entries", "not run with"}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);

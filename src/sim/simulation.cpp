@@ -57,6 +57,7 @@ Simulation::Simulation(Scene&& scene, RunOptions options)
   // The inlets first: their first id follows every particle of the scene, whichever rank holds it.
   if (!scene_.model.params.inlets.empty()) inlets_ = std::make_unique<Inlets>(scene_.model, scene_.particles);
   if (!scene_.model.params.sinks.empty()) sinks_ = std::make_unique<Sinks>(scene_.model);
+  scene_bodies_ = scene_.particles.bodies.size();
   if (const Communicator& comm = options_.comm ? *options_.comm : Communicator::world(); !comm.serial())
     decompose(comm);
 }

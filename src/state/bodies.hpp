@@ -82,6 +82,10 @@ struct Bodies {
     f("torque", torque);
     f("heat", heat);
   }
+  // Keeps the bodies whose keep[b] is true, in order (a rank's own bodies, docs/parallel.md).
+  void compact(const std::vector<char>& keep);
+  // Reorders the bodies by ascending id (outputs that must not depend on the rank count).
+  void sort_by_id();
   // Rebuilds first/index/held from the owned particles (Particles::body, Particles::member) when
   // stale. Throws std::logic_error when a body's members are not all present exactly once.
   void index_members(const Particles& p);

@@ -55,7 +55,6 @@ class TrapezoidalBodies {
   // of B with the step length dt (s; 0: none). A body without a record has no history.
   std::vector<RateRecord> records(const Bodies& B) const;
   void set_records(std::span<const RateRecord> records, const Bodies& B, double dt);
-  double dt_prev() const { return dt_prev_; }
 
  private:
   // Start state and rates [B]: m, m/s, rad/s, orientation, kg m^2/s, K, m/s^2, N m, K/s, N, W.

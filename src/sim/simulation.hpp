@@ -112,8 +112,9 @@ class Simulation {
   Particles& particles() { return scene_.particles; }
   Barriers& barriers() { return scene_.barriers; }
   Interactions& interactions() { return *interactions_; }
-  const Inlets* inlets() const { return inlets_.get(); }  // null without [[inlet]]
-  const Sinks* sinks() const { return sinks_.get(); }     // null without [[sink]]
+  const TrapezoidalIntegrator& trapezoidal() const { return trapezoidal_; }  // its predictor's history
+  const Inlets* inlets() const { return inlets_.get(); }                     // null without [[inlet]]
+  const Sinks* sinks() const { return sinks_.get(); }                        // null without [[sink]]
   const Model& model() const { return scene_.model; }
   Model& model() { return scene_.model; }  // a material edited between steps acts at the next step
 

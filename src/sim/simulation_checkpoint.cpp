@@ -136,7 +136,10 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
       if (!comm_) return trapezoidal_.bodies().save(o);
       std::vector<RateRecord> sorted = body_records;
       std::sort(sorted.begin(), sorted.end(), [](const RateRecord& a, const RateRecord& b) { return a.id < b.id; });
-      TrapezoidalBodies::save(o, trapezoidal_.bodies().dt_prev(), sorted);
+      // The particles' step length: rank 0 may hold no body (and so no length of its own); a
+      // history that lacks a body is none.
+      const bool whole = sorted.size() == p.bodies.size();
+      TrapezoidalBodies::save(o, whole ? rates.dt() : 0.0, whole ? sorted : std::vector<RateRecord>{});
     });
   // What decides the next insertions and the sinks' totals ([[inlet]], [[sink]]).
   if (inlets_) w.section("inlets", [&](BinaryWriter& o) { inlets_->save(o); });

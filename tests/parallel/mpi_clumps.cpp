@@ -7,16 +7,25 @@
 //  - a dumbbell whose centre is on one side of the cut and whose member reaches across it hits a
 //    sphere on the other side: the member is a ghost there, the contact is the one-rank contact;
 //  - a checkpoint written on two ranks (one under -np 1) resumes on one and on all to the
-//    uninterrupted one-rank run.
+//    uninterrupted one-rank run;
+//  - the body CSV snapshots are the one-rank run's;
+//  - periodic axes with clumps are refused on several ranks.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <random>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "core/run_error.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "parallel/communicator.hpp"
 #include "sim/simulation.hpp"
@@ -119,6 +128,34 @@ Deviation across(const Communicator& world, Deviation d) {
   return d;
 }
 
+// The trapezoidal predictor's history of the bodies of `s` (this rank's) against the one-rank
+// run's, by body id: the largest deviation (to the largest acceleration and angular rate) and how
+// many bodies had one, over all ranks (collective).
+struct History {
+  double worst = 0.0;
+  std::uint64_t found = 0;
+};
+
+History history_deviation(const Communicator& world, Simulation& s, Simulation& one) {
+  std::map<std::int64_t, RateRecord> reference;
+  double scale_a = 0.0, scale_b = 0.0;  // m/s^2; rad/s^2 or N m (TrapezoidalBodies)
+  for (const RateRecord& r : one.trapezoidal().bodies().records(one.particles().bodies)) {
+    reference[r.id] = r;
+    scale_a = std::max(scale_a, norm(r.a));
+    scale_b = std::max(scale_b, norm(r.b));
+  }
+  History h;
+  for (const RateRecord& r : s.trapezoidal().bodies().records(s.particles().bodies))
+    if (const auto it = reference.find(r.id); it != reference.end()) {
+      ++h.found;
+      h.worst = std::max({h.worst, norm(r.a - it->second.a) / scale_a, norm(r.b - it->second.b) / scale_b});
+    }
+  if (reference.size() != one.particles().bodies.size()) h.worst = 1.0;  // the reference has none
+  h.worst = world.max(h.worst);
+  h.found = world.sum(h.found);
+  return h;
+}
+
 double log_value(const Simulation& s, const std::string& column) {
   for (const auto& [name, v] : s.log_values())
     if (name == column) return v;
@@ -178,6 +215,11 @@ TEST_P(ClumpsAcrossRanks, FallingBodiesFollowTheOneRankRun) {
   EXPECT_NEAR(kinetic, kinetic_ref, 1e-9 * kinetic_ref);
   if (world.size() > 1) {
     EXPECT_GT(moved, 5u);  // bodies crossed the cuts
+  }
+  if (GetParam() == Integrator::Trapezoidal) {  // the bodies' predictor history followed them
+    const History h = history_deviation(world, many, one);
+    EXPECT_EQ(h.found, ref.bodies.size());
+    EXPECT_LT(h.worst, 1e-10);
   }
 }
 
@@ -265,4 +307,91 @@ TEST_P(ClumpsAcrossRanks, CheckpointOnTwoRanksResumesOnOneAndOnAll) {
   EXPECT_EQ(dn.bodies, ref.particles().bodies.size());
   EXPECT_LT(worst1, 1e-10);
   EXPECT_LT(dn.worst, 1e-10);
+  if (GetParam() == Integrator::Trapezoidal) {  // the bodies' predictor history was restored
+    const History h1 = history_deviation(world, alone, ref), hn = history_deviation(world, all, ref);
+    EXPECT_EQ(h1.found, world.size() * ref.particles().bodies.size());  // every rank resumed alone
+    EXPECT_LT(h1.worst, 1e-10);
+    EXPECT_EQ(hn.found, ref.particles().bodies.size());
+    EXPECT_LT(hn.worst, 1e-10);
+  }
+}
+
+namespace {
+// The fields of each line of a CSV file.
+std::vector<std::vector<std::string>> csv_rows(const std::filesystem::path& file) {
+  std::vector<std::vector<std::string>> rows;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+    rows.push_back(std::move(f));
+  }
+  return rows;
+}
+}  // namespace
+
+// The body CSV snapshots of a run on all ranks are the one-rank run's: the same files, rows (ids
+// ascending) and template names, every number within 1e-10 of its column's largest magnitude.
+TEST(ClumpsAcrossRanksContact, BodyCsvSnapshotsAreTheOneRankRuns) {
+  const Communicator& world = Communicator::world();
+  const SharedTempDir dir(world, "clump_csv");
+  const auto make = [] {
+    Scene s = falling_bodies(Integrator::Verlet);
+    s.model.params.time.duration = 600 * kDt;
+    s.model.params.output.body_csv_every = 200 * kDt;
+    return s;
+  };
+  {
+    Simulation many(make(), RunOptions{dir.path / "many", false, true, &world, false});
+    many.run();
+  }
+  if (world.rank() == 0) {
+    Simulation one(make(), RunOptions{dir.path / "one", false, true, &Communicator::single(), false});
+    one.run();
+    std::size_t files = 0;
+    double worst = 0.0;
+    for (const auto& e : std::filesystem::directory_iterator(dir.path / "one" / "bodies_csv")) {
+      ++files;
+      const auto ref = csv_rows(e.path());
+      const auto got = csv_rows(dir.path / "many" / "bodies_csv" / e.path().filename());
+      ASSERT_EQ(got.size(), ref.size()) << e.path().filename();
+      ASSERT_EQ(ref.size(), 101u);  // the header and 100 bodies
+      EXPECT_EQ(got[0], ref[0]);
+      std::vector<double> scale(ref[0].size(), 0.0);
+      for (std::size_t r = 1; r < ref.size(); ++r)
+        for (std::size_t c = 0; c < ref[r].size(); ++c)
+          if (c != 2) scale[c] = std::max(scale[c], std::abs(std::stod(ref[r][c])));
+      for (std::size_t r = 1; r < ref.size(); ++r) {
+        ASSERT_EQ(got[r].size(), ref[r].size());
+        EXPECT_EQ(got[r][1], ref[r][1]);  // id
+        EXPECT_EQ(got[r][2], ref[r][2]);  // template name
+        for (std::size_t c = 0; c < ref[r].size(); ++c)
+          if (c != 2 && scale[c] > 0.0)
+            worst = std::max(worst, std::abs(std::stod(got[r][c]) - std::stod(ref[r][c])) / scale[c]);
+      }
+    }
+    std::printf("[%d ranks] %zu body CSV snapshots, max rel diff %.2e\n", world.size(), files, worst);
+    EXPECT_EQ(files, 4u);  // t = 0, 200, 400 and 600 steps
+    EXPECT_LT(worst, 1e-10);
+  }
+}
+
+// A migration wraps the particles one by one along a periodic axis, which would tear a body
+// across the period: several ranks refuse clumps with periodic axes at the start, in one message.
+TEST(ClumpsAcrossRanksContact, PeriodicAxesAreRefusedOnSeveralRanks) {
+  const Communicator& world = Communicator::world();
+  if (world.size() == 1) GTEST_SKIP() << "one rank: not decomposed";
+  Scene s = falling_bodies(Integrator::Verlet);
+  DomainParams& d = s.model.params.domain;
+  d.bounded = true;
+  d.min = {0.0, 0.0, 0.0};
+  d.max = {14e-3, 14e-3, 17e-3};
+  d.periodic = {true, false, false};
+  try {
+    Simulation sim(std::move(s), RunOptions{{}, false, false, &world});
+    ADD_FAILURE() << "not refused";
+  } catch (const RunError& e) {
+    EXPECT_STREQ(e.what(), "clumps with periodic boundaries do not run on several ranks yet: run on one rank");
+  }
 }

@@ -77,7 +77,8 @@ void NeighborSearch::restore(BinaryReader& r, Particles& p, const Barriers& b, c
   build(p, x, at_build);
 }
 
-void NeighborSearch::decompose(const Communicator& comm, BrickGrid grid, bool temperatures) {
+void NeighborSearch::decompose(const Communicator& comm, BrickGrid grid, bool temperatures, double body_margin) {
+  body_margin_ = body_margin;
   halo_ = std::make_unique<HaloExchange>(comm, std::move(grid));
   halo_->temperatures(temperatures);
 }
@@ -96,7 +97,7 @@ void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Ba
     // a checkpoint's, so the list is built over those and the ghosts' own.
     x_all.assign(x_owned.begin(), x_owned.end());
     rmax = halo_->comm().max(rmax);  // a ghost may be larger than every owned particle
-    halo_width_ = periodic_image_width(rmax, extra_, skin_);
+    halo_width_ = periodic_image_width(rmax, extra_, skin_) + body_margin_;
     halo_->build(p, halo_width_);
     x_all.insert(x_all.end(), p.x.begin() + static_cast<std::ptrdiff_t>(owned), p.x.end());
     x = x_all;

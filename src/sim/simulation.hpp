@@ -112,8 +112,9 @@ class Simulation {
   Particles& particles() { return scene_.particles; }
   Barriers& barriers() { return scene_.barriers; }
   Interactions& interactions() { return *interactions_; }
-  const Inlets* inlets() const { return inlets_.get(); }  // null without [[inlet]]
-  const Sinks* sinks() const { return sinks_.get(); }     // null without [[sink]]
+  const TrapezoidalIntegrator& trapezoidal() const { return trapezoidal_; }  // its predictor's history
+  const Inlets* inlets() const { return inlets_.get(); }                     // null without [[inlet]]
+  const Sinks* sinks() const { return sinks_.get(); }                        // null without [[sink]]
   const Model& model() const { return scene_.model; }
   Model& model() { return scene_.model; }  // a material edited between steps acts at the next step
 
@@ -216,9 +217,9 @@ class Simulation {
   std::uint64_t balance_rows_ = 0;  // load-balance measurements written to balance.csv
   RunRecord record_;                // for the end-of-run summary
   bool initialized_ = false;
-  bool started_ = false;                     // start() ran: outputs open, first snapshots written
-  StepReport last_;                          // the report of the last step()
-  std::uint64_t first_step_ = 0;             // steps_ when start() ran
+  bool started_ = false;          // start() ran: outputs open, first snapshots written
+  StepReport last_;               // the report of the last step()
+  std::uint64_t first_step_ = 0;  // steps_ when start() ran
   bool resumed_ = false;                     // state loaded from a checkpoint
   std::vector<char> resume_output_state_;    // OutputManager series from the checkpoint
   std::vector<char> resume_analysis_state_;  // AnalysisOutputs series from the checkpoint (empty: none)

@@ -87,11 +87,13 @@ struct Bodies {
     f("torque", torque);
     f("heat", heat);
   }
+  // Reorders the bodies by ascending id (outputs that must not depend on the rank count).
+  void sort_by_id();
   // Rebuilds first/index/held from the owned particles (Particles::body, Particles::member) when
   // stale. Throws std::logic_error when a body's members are not all present exactly once.
   void index_members(const Particles& p);
-  // Keeps the bodies whose keep[b] is true, in order (their members are removed from the particles
-  // by the caller); the member index is then stale.
+  // Keeps the bodies whose keep[b] is true, in order (a rank's own bodies, docs/parallel.md; those
+  // a sink left, their members removed by the caller); the member index is then stale.
   void compact(const std::vector<char>& keep);
   // Index of the body with id `body_id`, or -1.
   std::ptrdiff_t find(std::int64_t body_id) const;

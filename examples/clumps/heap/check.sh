@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Short check of the heap example for the test suite (ctest -L examples, tests/CMakeLists.txt,
 # Examples.ClumpHeapShort): the example's set-up scaled down to a disk of radius 20 mm and 150
-# bodies of each shape (settled for 0.15 s, cylinder lifted at 0.15 m/s, 1 s in all; 20-30 s on
+# bodies of each shape (settled for 0.15 s, cylinder lifted at 0.15 m/s, 1 s in all; 30-40 s on
 # one thread), then heap_angle.py's measures, asserted by check_heap.py (tolerances and their
 # reasons there). RB, COUNT, HEIGHT, SETTLE, LIFT, DURATION and SEED override the set-up.
 # Usage: check.sh path/to/mpdem WORK_DIR      (python3 with the standard library only)

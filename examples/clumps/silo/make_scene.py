@@ -1,7 +1,7 @@
 """Write one run of the silo example (examples/clumps/silo): a square flat-bottomed silo filled with
 generated bodies (tetrahedral clumps or spheres of the same volume) that settle on a lid over the
-orifice; the lid is removed at T_OPEN and the bodies fall through the orifice onto a floor well
-below. Needs the meshes run.sh makes (walls.csv, floor_D.csv, lid_D.csv, catcher.csv).
+orifice; the lid is removed at T_OPEN and the bodies fall through the orifice into an open box
+well below. Needs the meshes run.sh makes (walls.csv, floor_D.csv, lid_D.csv, catcher.csv).
 
 Usage: make_scene.py SHAPE D0 OUT_TOML OUT_DIR [options]      (SHAPE tetra or sphere; D0 in m)
 Units SI.
@@ -40,7 +40,7 @@ def main():
               else f"particle_csv_every = {a.every!r}")
     text = f"""# Flat-bottomed silo (examples/clumps/silo, written by make_scene.py): {a.count} {a.shape} bodies
 # settle on a lid over a {a.d0} m orifice, the lid is removed at t = {a.t_open} s and the bodies fall
-# onto a floor 0.1 m below. Units SI: m, s, kg, Pa.
+# into an open box 0.1 m below. Units SI: m, s, kg, Pa.
 
 {physics_toml(a.duration, a.dt)}
 {bodies_toml(a.shape, gen)}
@@ -58,7 +58,7 @@ material = "grain"
 active = [0.0, {a.t_open!r}]
 
 [[barriers]]
-file = "catcher.csv"      # z = -0.1 m: the discharged bodies come to rest here
+file = "catcher.csv"      # open box, floor at z = -0.1 m: the discharged bodies come to rest here
 material = "grain"
 
 [domain]

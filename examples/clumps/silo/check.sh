@@ -18,7 +18,7 @@ mkdir -p "$WORK"
 cd "$WORK"
 "$MPDEM" mesh box --size $L $L 0.25 -o walls_tmp.csv --group walls > /dev/null
 awk -F, 'NR <= 2 || ($1 != 0 && $1 != 1)' walls_tmp.csv > walls.csv
-"$MPDEM" mesh rect --size 0.5 0.5 --translate 0 0 -0.1 -o catcher.csv --group catcher --first-id 2000 > /dev/null
+"$MPDEM" mesh box --size 0.5 0.5 0.05 --translate 0 0 -0.1 -o catcher.csv --group catcher --first-id 2000 > /dev/null
 "$MPDEM" mesh plate --size $L $L --hole-radius 0.012 --segments 48 -o floor_24.csv --group floor --first-id 100 > /dev/null
 "$MPDEM" mesh rect --size $D $D -o lid_24.csv --group lid --first-id 1000 > /dev/null
 SECONDS=0

@@ -133,6 +133,22 @@ TEST(ClumpReader, MemberIdsFollowTheLargestFreeSphereIdInBodyThenMemberOrder) {
   EXPECT_EQ(p.id[member_of(p, 4, 1)], 21);
 }
 
+// A sphere file after a clump entry may use any id, 0 included: the members read before it have
+// no id yet (they are numbered after all free spheres at the end).
+TEST(ClumpReader, SphereFileAfterClumpEntryKeepsItsIds) {
+  TempDir d("mpdem_clump");
+  d.write("spheres.csv", "id,x,y,z,radius\n0,0.1,0,0,0.001\n1,0.2,0,0,0.001\n");
+  const Scene s = load(d, scene_text(kDumbbell, kBodies + "[[particles]]\nfile = \"spheres.csv\"\n"),
+                       "id,x,y,z\n5,0,0,0.01\n");
+  const Particles& p = s.particles;
+  EXPECT_EQ(p.id[member_of(p, 5, 0)], 2);
+  EXPECT_EQ(p.id[member_of(p, 5, 1)], 3);
+  std::vector<std::int64_t> free_ids;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.body[i] == kNoBody) free_ids.push_back(p.id[i]);
+  EXPECT_EQ(free_ids, (std::vector<std::int64_t>{0, 1}));
+}
+
 TEST(ClumpReader, FixedEntryFixesItsBodiesAndCsvColumnsApply) {
   TempDir d("mpdem_clump");
   const Scene s = load(

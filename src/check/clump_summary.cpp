@@ -15,7 +15,11 @@ std::string moments_text(const Vec3& I) { return fmt::format("{:.6g}, {:.6g}, {:
 
 int clump_material(const Scene& scene, const std::string& name) {
   for (const ParticleSource& src : scene.particle_sources)
-    if (src.clump == name) return src.material.empty() ? 0 : scene.model.material_index(src.material);
+    if (src.clump.contains(scene.model.clump_index(name)))
+      return src.material.empty() ? 0 : scene.model.material_index(src.material);
+  for (const InletSpec& in : scene.model.params.inlets)
+    if (in.clump.contains(scene.model.clump_index(name)))
+      return in.material.empty() ? 0 : scene.model.material_index(in.material);
   return -1;
 }
 

@@ -10,7 +10,8 @@
 namespace mpdem {
 
 // The density a template's bodies get: that of the material of the first [[particles]] entry
-// with `clump = "name"` (its index in model.materials), or -1 when no entry uses the template.
+// with `clump = "name"` (its index in model.materials), else of the first [[inlet]] with it, or -1
+// when no entry uses the template.
 int clump_material(const Scene& scene, const std::string& name);
 
 // One header line ("clumps: 2 templates, 10 bodies, 40 member spheres") and one line per

@@ -59,16 +59,19 @@ void check_periodic_domain(const Scene& scene, SceneProblems& out) {
   const Particles& p = scene.particles;
   if (p.size() == 0) return;
   const double rmax = *std::max_element(p.radius.begin(), p.radius.begin() + static_cast<std::ptrdiff_t>(p.size()));
+  const double offset = largest_member_offset(scene.model.clumps);  // m, clump members outside the period
   const double width = periodic_image_width(rmax, near_field_extra_range(scene.model.params.near_field, p),
-                                            default_skin(scene.model, p));
+                                            default_skin(scene.model, p), offset);
   for (int c = 0; c < 3; ++c) {
     const double L = d.max[c] - d.min[c];
     if (!d.periodic[static_cast<std::size_t>(c)] || L >= 2.0 * width) continue;
     out.push_back(domain_problem(
-        scene, fmt::format("the domain is {:.6g} m long along the periodic axis {}, shorter than twice the neighbour "
-                           "search's reach {:.6g} m (2 x the largest radius {:.6g} m + near-field reach + 2 skins): a "
-                           "particle could meet two images of another. Enlarge [domain] min/max along {}.",
-                           L, kAxes[c], width, rmax, kAxes[c])));
+        scene,
+        fmt::format("the domain is {:.6g} m long along the periodic axis {}, shorter than twice the neighbour "
+                    "search's reach {:.6g} m (2 x the largest radius {:.6g} m + near-field reach + 2 skins{}): a "
+                    "particle could meet two images of another. Enlarge [domain] min/max along {}.",
+                    L, kAxes[c], width, rmax,
+                    offset > 0.0 ? fmt::format(" + the largest clump member offset {:.6g} m", offset) : "", kAxes[c])));
   }
 }
 

@@ -34,16 +34,24 @@ void print_entries(const Scene& scene) {
   for (const InletSpec& in : prm.inlets) {
     Vec3 lo, hi;
     inlet_centre_box(in.volume, 0.0, lo, hi);
-    const std::string rate = in.mass_rate > 0.0 ? fmt::format("{:.6g} kg/s", in.mass_rate)
-                                                : fmt::format("{:.6g} particles/s", in.count_rate);
+    const std::string rate = in.mass_rate > 0.0
+                                 ? fmt::format("{:.6g} kg/s", in.mass_rate)
+                                 : fmt::format("{:.6g} {}/s", in.count_rate, in.clump.empty() ? "particles" : "bodies");
     const std::string end = in.end ? fmt::format("{:.6g} s", *in.end) : std::string("the end");
     const std::string interval = in.interval > 0.0 ? fmt::format("{:.6g} s", in.interval)
                                                    : fmt::format("{:.6g} s (100 x dt)", 100.0 * prm.time.dt);
-    fmt::print("  {:<16} {} within {} .. {} m, {} from t = {:.6g} s to {} every {}; radius {}; material '{}'; "
+    std::string size = "radius " + in.radius.describe();
+    if (!in.clump.empty()) {  // bodies: their templates and number fractions
+      size = "clump";
+      for (std::size_t k = 0; k < in.clump.clumps.size(); ++k)
+        size += fmt::format("{} '{}' {:.6g}", k ? "," : "",
+                            scene.model.clumps[static_cast<std::size_t>(in.clump.clumps[k])].name,
+                            in.clump.fractions[k]);
+    }
+    fmt::print("  {:<16} {} within {} .. {} m, {} from t = {:.6g} s to {} every {}; {}; material '{}'; "
                "velocity {} m/s",
-               in.name, in.volume.shape, vec_text(lo), vec_text(hi), rate, in.start, end, interval,
-               in.radius.describe(), in.material.empty() ? scene.model.materials.front().name : in.material,
-               vec_text(in.velocity));
+               in.name, in.volume.shape, vec_text(lo), vec_text(hi), rate, in.start, end, interval, size,
+               in.material.empty() ? scene.model.materials.front().name : in.material, vec_text(in.velocity));
     if (in.velocity_spread > 0.0) fmt::print(" +- {:.6g} m/s", in.velocity_spread);
     fmt::print("\n");
   }

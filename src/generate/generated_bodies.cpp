@@ -19,16 +19,16 @@
 
 namespace mpdem {
 
-namespace {
-
-// A uniformly random rotation: four standard normals are isotropic in R^4, so their direction is
-// uniform on the unit 3-sphere, which is the Haar measure on the rotations (q and -q alike).
+// Four standard normals are isotropic in R^4, so their direction is uniform on the unit 3-sphere,
+// which is the Haar measure on the rotations (q and -q alike).
 Quat uniform_rotation(Rng& rng) {
   for (;;) {
     const Quat q{rng.normal(), rng.normal(), rng.normal(), rng.normal()};
     if (q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z > 1e-12) return quat_normalized(q);
   }
 }
+
+namespace {
 
 // Cells of width h (m) holding the placed member spheres, by integer cell coordinates.
 class MemberCells {
@@ -74,17 +74,20 @@ class MemberCells {
 
 // Random sequential addition of whole bodies tested member by member: a candidate is a centre
 // drawn in the region and an orientation; it is kept when every member lies inside the region
-// with `gap` and keeps `gap` from every member placed before. Fills `placed` with the centres and
-// orientations (template as written -> world).
-void place_by_members(const GenerateSpec& spec, const ClumpTemplate& t, std::size_t count,
+// with `gap` and keeps `gap` from every member placed before. `templates[n]` is body n's; fills
+// `placed` with the centres and orientations (template as written -> world).
+void place_by_members(const GenerateSpec& spec, const Model& model, const std::vector<int>& templates,
                       std::vector<std::pair<Vec3, Quat>>& placed) {
   const Region region(spec.region, spec.origin, spec.line);
   double r_max = 0.0;  // m, the largest member radius
-  for (const ClumpMember& m : t.members()) r_max = std::max(r_max, m.r);
+  for (const int c : templates)
+    for (const ClumpMember& m : model.clumps[static_cast<std::size_t>(c)].members()) r_max = std::max(r_max, m.r);
   MemberCells cells(2.0 * r_max + spec.gap);
   Rng rng(spec.seed);
-  std::vector<Vec3> x(t.members().size());  // m, the candidate's members [members]
-  for (std::size_t n = 0; n < count; ++n) {
+  std::vector<Vec3> x;  // m, the candidate's members [members]
+  for (std::size_t n = 0; n < templates.size(); ++n) {
+    const ClumpTemplate& t = model.clumps[static_cast<std::size_t>(templates[n])];
+    x.resize(t.members().size());
     bool done = false;
     for (std::size_t a = 0; a < spec.max_attempts && !done; ++a) {
       Vec3 c;
@@ -105,38 +108,53 @@ void place_by_members(const GenerateSpec& spec, const ClumpTemplate& t, std::siz
     }
     if (!done)
       throw InputError(spec.origin, spec.line, "generate",
-                       "could not place body " + std::to_string(n + 1) + " of " + std::to_string(count) +
+                       "could not place body " + std::to_string(n + 1) + " of " + std::to_string(templates.size()) +
                            " of clump '" + t.name + "' in " + std::to_string(spec.max_attempts) +
                            " random attempts (centre and orientation, tested member by member); lower "
                            "count/solid_fraction or gap, enlarge the region, or raise max_attempts");
   }
 }
 
+// "clump 'a'" or "clumps 'a', 'b'": the templates of a mix, for messages.
+std::string mix_names(const Model& model, const ClumpMix& mix) {
+  std::string out = mix.clumps.size() == 1 ? "clump " : "clumps ";
+  for (std::size_t i = 0; i < mix.clumps.size(); ++i)
+    out += (i ? ", '" : "'") + model.clumps[static_cast<std::size_t>(mix.clumps[i])].name + "'";
+  return out;
+}
+
 }  // namespace
 
-void add_generated_bodies(const GenerateSpec& spec, const Model& model, int material, int clump, Particles& out) {
+void add_generated_bodies(const GenerateSpec& spec, const Model& model, int material, const ClumpMix& mix,
+                          Particles& out) {
   const auto fail = [&](const std::string& msg) { throw InputError(spec.origin, spec.line, "generate", msg); };
-  const ClumpTemplate& t = model.clumps.at(static_cast<std::size_t>(clump));
   const Material& m = model.materials.at(static_cast<std::size_t>(material));
+  const std::string names = mix_names(model, mix);
+  const double reach = mix.reach(model.clumps);  // m
   GenerateSpec bounding = spec;
   bounding.radius = RadiusDistribution{};
-  bounding.radius.value = t.reach();
+  bounding.radius.value = reach;
   if (spec.count == 0) {
     // A solid fraction of the bodies' own volume: the count whose volume is closest to it.
     if (!(spec.solid_fraction > 0.0 && spec.solid_fraction < 1.0))
       fail("give a count >= 1 or a solid_fraction in (0, 1)");
-    const double n = spec.solid_fraction * Region(spec.region, spec.origin, spec.line).volume() / t.shape.volume;
-    if (!(n >= 0.5)) fail("the requested solid fraction is smaller than one body of clump '" + t.name + "'");
-    if (!(n < 5e7)) fail("the solid fraction needs more than 5e7 bodies of clump '" + t.name + "'; check units");
+    const double n = spec.solid_fraction * Region(spec.region, spec.origin, spec.line).volume() /
+                     mix.mean_volume(model.clumps);
+    if (!(n >= 0.5)) fail("the requested solid fraction is smaller than one body of " + names);
+    if (!(n < 5e7)) fail("the solid fraction needs more than 5e7 bodies of " + names + "; check units");
     bounding.count = static_cast<std::size_t>(std::llround(n));
     bounding.solid_fraction = 0.0;
   }
+  // Each body's template, from a stream of its own (none drawn for a single template).
+  std::vector<int> templates(bounding.count);
+  Rng trng(spec.seed ^ 0xA0761D6478BD642Full);
+  for (int& c : templates) c = mix.draw(trng);
   std::vector<std::pair<Vec3, Quat>> placed;  // centre of mass (m) and orientation of each body
   std::vector<Vec3> v;                        // m/s, initial velocity of each body
   if (spec.placement == BodyPlacement::Members) {
     if (!(spec.gap >= 0.0) || !std::isfinite(spec.gap)) fail("expected a gap >= 0, got " + number_text(spec.gap));
     if (spec.max_attempts == 0) fail("expected max_attempts >= 1");
-    place_by_members(spec, t, bounding.count, placed);
+    place_by_members(spec, model, templates, placed);
     // Velocities as the sphere generator draws them (generate/generator.cpp).
     Rng vrng(spec.seed ^ 0x9E3779B97F4A7C15ull);
     for (std::size_t b = 0; b < placed.size(); ++b)
@@ -150,9 +168,8 @@ void add_generated_bodies(const GenerateSpec& spec, const Model& model, int mate
     } catch (const InputError& e) {  // its message speaks of spheres: say they are the bodies' bounding spheres
       const std::string what = e.what();
       const std::size_t at = what.find("'generate': ");
-      fail("clump '" + t.name + "' bodies placed by their bounding spheres (radius " + number_text(t.reach()) +
-           " m): " + (at == std::string::npos ? what : what.substr(at + 12)) +
-           "; placement = \"members\" packs denser");
+      fail(names + " bodies placed by their bounding spheres (radius " + number_text(reach) + " m): " +
+           (at == std::string::npos ? what : what.substr(at + 12)) + "; placement = \"members\" packs denser");
     }
     for (const GeneratedParticle& g : spheres.particles) {
       placed.push_back({g.x, uniform_rotation(qrng)});
@@ -171,7 +188,7 @@ void add_generated_bodies(const GenerateSpec& spec, const Model& model, int mate
     init.T = m.temperature;
     init.charge = m.charge;
     init.fixed = spec.fixed;
-    add_body(model, material, clump, init, out);
+    add_body(model, material, templates[b], init, out);
   }
 }
 

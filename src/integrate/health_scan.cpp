@@ -80,15 +80,23 @@ void scan_range(const Particles& p, std::size_t lo, std::size_t hi, const FieldP
     for (std::size_t l = 0; l < kLanes; ++l) acc[k] += lane[k][l];
 }
 
-void scan_bodies(const Particles& p, const FieldParams& fields, std::array<double, kScanSums>& acc) {
-  const Bodies& B = p.bodies;
-  for (std::size_t b = 0; b < B.size(); ++b) {
-    acc[0] += 0.5 * B.mass[b] * norm2(B.v[b]);
-    acc[1] += rotational_energy(B.q[b], B.inertia[b], B.w[b]);
-    acc[2] -= B.mass[b] * dot(fields.gravity, B.x[b]);
-    acc[3] -= B.charge[b] * dot(fields.electric, B.x[b]);
-    acc[4] += finite_state(B.x[b], B.v[b], B.w[b], B.T[b]) ? 0.0 : 1.0;
-  }
+void scan_body(const Bodies& B, std::size_t b, const FieldParams& fields, const DomainParams& domain,
+               std::array<double, kScanSums>& acc) {
+  Vec3 u = B.x[b];  // m, unwrapped centre of mass
+  if (domain.bounded && domain.any_periodic())
+    for (int c = 0; c < 3; ++c)
+      if (domain.periodic[static_cast<std::size_t>(c)])
+        u[c] += B.image[b][static_cast<std::size_t>(c)] * (domain.max[c] - domain.min[c]);
+  acc[0] += 0.5 * B.mass[b] * norm2(B.v[b]);
+  acc[1] += rotational_energy(B.q[b], B.inertia[b], B.w[b]);
+  acc[2] -= B.mass[b] * dot(fields.gravity, u);
+  acc[3] -= B.charge[b] * dot(fields.electric, u);
+  acc[4] += finite_state(B.x[b], B.v[b], B.w[b], B.T[b]) ? 0.0 : 1.0;
+}
+
+void scan_bodies(const Particles& p, const FieldParams& fields, const DomainParams& domain,
+                 std::array<double, kScanSums>& acc) {
+  for (std::size_t b = 0; b < p.bodies.size(); ++b) scan_body(p.bodies, b, fields, domain, acc);
 }
 
 HealthScan scan_state(const Particles& p, const FieldParams& fields, const DomainParams& domain) {
@@ -96,7 +104,7 @@ HealthScan scan_state(const Particles& p, const FieldParams& fields, const Domai
       p.size(), [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums>& acc) {
         scan_range(p, lo, hi, fields, domain, acc);
       });
-  if (p.has_bodies()) scan_bodies(p, fields, sums);
+  if (p.has_bodies()) scan_bodies(p, fields, domain, sums);
   return scan_from_sums(sums);
 }
 

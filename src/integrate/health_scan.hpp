@@ -47,9 +47,13 @@ void scan_range(const Particles& p, std::size_t lo, std::size_t hi, const FieldP
                 const DomainParams& domain, std::array<double, kScanSums>& acc);
 
 // The clump bodies' energies (kinetic, rotational, potential: their members add none in
-// scan_range) and non-finite states added to acc; serial, in body order. Periodic clumps are not
-// supported, so the centre of mass is the unwrapped one.
-void scan_bodies(const Particles& p, const FieldParams& fields, std::array<double, kScanSums>& acc);
+// scan_range) and non-finite states added to acc; serial, in body order. The potentials take the
+// unwrapped centre of mass x + image * period in a periodic domain.
+void scan_bodies(const Particles& p, const FieldParams& fields, const DomainParams& domain,
+                 std::array<double, kScanSums>& acc);
+// Body b's terms alone (what a removed body takes along).
+void scan_body(const Bodies& B, std::size_t b, const FieldParams& fields, const DomainParams& domain,
+               std::array<double, kScanSums>& acc);
 
 inline HealthScan scan_from_sums(const std::array<double, kScanSums>& s) {
   return {{s[0], s[1], s[2]}, s[3], static_cast<std::size_t>(s[4]), static_cast<std::size_t>(s[5])};

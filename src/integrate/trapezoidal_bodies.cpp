@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <type_traits>
+#include <unordered_map>
 
 #include "model/body_members.hpp"
 #include "physics/rigid_rotation.hpp"
@@ -124,19 +125,73 @@ void TrapezoidalBodies::update(Particles& p, const Model& model, double dt, bool
   place_members(model.clumps, p);
 }
 
+void TrapezoidalBodies::compact(const std::vector<char>& keep) {
+  for (std::vector<Vec3>* a : {&a_prev_, &r_prev_}) {
+    if (a->size() != keep.size()) continue;  // no history of these bodies
+    std::size_t k = 0;
+    for (std::size_t b = 0; b < a->size(); ++b)
+      if (keep[b]) (*a)[k++] = (*a)[b];
+    a->resize(k);
+  }
+}
+
 void TrapezoidalBodies::save(BinaryWriter& w) const {
   w.value(dt_prev_);
   w.vector(a_prev_);
   w.vector(r_prev_);
 }
 
-void TrapezoidalBodies::restore(BinaryReader& r, std::size_t bodies) {
-  dt_prev_ = r.value<double>();
-  a_prev_ = r.vector<Vec3>();
-  r_prev_ = r.vector<Vec3>();
-  if (!std::isfinite(dt_prev_) || dt_prev_ < 0.0 ||
-      (dt_prev_ > 0.0 && (a_prev_.size() != bodies || r_prev_.size() != bodies)))
+void TrapezoidalBodies::save(BinaryWriter& w, double dt_prev, const std::vector<RateRecord>& records) {
+  std::vector<Vec3> a, r;
+  for (const RateRecord& k : records) {
+    a.push_back(k.a);
+    r.push_back(k.b);
+  }
+  w.value(dt_prev);
+  w.vector(a);
+  w.vector(r);
+}
+
+void TrapezoidalBodies::restore(BinaryReader& r, std::span<const std::int64_t> ids, const Bodies& B) {
+  const auto dt = r.value<double>();
+  const auto a = r.vector<Vec3>();
+  const auto rr = r.vector<Vec3>();
+  if (!std::isfinite(dt) || dt < 0.0 || (dt > 0.0 && (a.size() > ids.size() || rr.size() != a.size())))
     throw std::runtime_error("the bodies' rate history does not match the scene's bodies");
+  // A history of fewer bodies than there are (an inlet added some since) is not used (update()),
+  // as in the run that wrote it.
+  std::vector<RateRecord> records;
+  if (dt > 0.0 && a.size() == ids.size())
+    for (std::size_t k = 0; k < ids.size(); ++k) records.push_back({ids[k], a[k], rr[k]});
+  set_records(records, B, dt);
+}
+
+std::vector<RateRecord> TrapezoidalBodies::records(const Bodies& B) const {
+  std::vector<RateRecord> out;
+  if (dt_prev_ > 0.0 && a_prev_.size() == B.size())
+    for (std::size_t b = 0; b < B.size(); ++b) out.push_back({B.id[b], a_prev_[b], r_prev_[b]});
+  return out;
+}
+
+void TrapezoidalBodies::set_records(std::span<const RateRecord> records, const Bodies& B, double dt) {
+  dt_prev_ = dt;
+  a_prev_.clear();
+  r_prev_.clear();
+  if (!(dt > 0.0)) return;
+  std::unordered_map<std::int64_t, const RateRecord*> by_id;
+  for (const RateRecord& k : records) by_id.emplace(k.id, &k);
+  a_prev_.resize(B.size());
+  r_prev_.resize(B.size());
+  for (std::size_t b = 0; b < B.size(); ++b) {
+    const auto it = by_id.find(B.id[b]);
+    if (it == by_id.end()) {  // no history: the predictor then uses the start rates of all bodies
+      a_prev_.clear();
+      r_prev_.clear();
+      return;
+    }
+    a_prev_[b] = it->second->a;
+    r_prev_[b] = it->second->b;
+  }
 }
 
 void TrapezoidalBodies::accept_midpoint(Particles& p, const Model& model) {

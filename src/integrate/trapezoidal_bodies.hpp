@@ -12,9 +12,12 @@
 // accepted step's, as the spheres' (rate_history.hpp); a spherical body's angular rate is
 // tau / I (a sphere's, so that a one-member clump follows the sphere), any other's the torque.
 #include <array>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/binary_stream.hpp"
+#include "integrate/rate_history.hpp"
 #include "integrate/step_report.hpp"
 #include "model/scene.hpp"
 #include "state/particles.hpp"
@@ -39,9 +42,21 @@ class TrapezoidalBodies {
     r_prev_ = r0_;
     dt_prev_ = dt;
   }
-  // The history, for checkpoints (section "body_rate_history").
+  // Keeps the history of the bodies whose keep[b] is true (Bodies::compact, the bodies a sink removed).
+  void compact(const std::vector<char>& keep);
+  // The history, for checkpoints (section "body_rate_history": the step length, then the rates
+  // of the bodies in B's order; none before the first step).
   void save(BinaryWriter& w) const;
-  void restore(BinaryReader& r, std::size_t bodies);
+  // The same for every rank's bodies: `records` theirs (records()), gathered and sorted by id
+  // like the bodies written with them.
+  static void save(BinaryWriter& w, double dt_prev, const std::vector<RateRecord>& records);
+  // Reads what save wrote for the bodies `ids` (the checkpoint's, in its order) and keeps the
+  // history of those in B (a rank's own, on several ranks).
+  void restore(BinaryReader& r, std::span<const std::int64_t> ids, const Bodies& B);
+  // The history by body id (anchored by it when a body changes rank), and put back onto the rows
+  // of B with the step length dt (s; 0: none). A body without a record has no history.
+  std::vector<RateRecord> records(const Bodies& B) const;
+  void set_records(std::span<const RateRecord> records, const Bodies& B, double dt);
 
  private:
   // Start state and rates [B]: m, m/s, rad/s, orientation, kg m^2/s, K, m/s^2, N m, K/s, N, W.

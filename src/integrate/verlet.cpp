@@ -122,7 +122,7 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
       });
   std::array<double, kScanSums> scan{};
   std::copy_n(sums.begin(), kScanSums, scan.begin());
-  if (bodies) scan_bodies(p, fields, scan);
+  if (bodies) scan_bodies(p, fields, domain, scan);
   f.record_next_drift(next, p, static_cast<std::size_t>(sums[kScanSums]));
   StepReport rep;
   rep.scan = scan_from_sums(scan);

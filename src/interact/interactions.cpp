@@ -73,8 +73,9 @@ double default_skin(const Model& model, const Particles& p) {
 Interactions::Interactions(const Model& model, const Particles& p, const Barriers& b, const StepPolicy& policy)
     : model_(model), policy_(policy), table_(table_for(model)),
       // The list reaches beyond contact by the near-field cutoff (0 when the near field is off).
-      search_(std::make_unique<NeighborSearch>(
-          default_skin(model, p), near_field_extra_range(model.params.near_field, p), model.params.domain)),
+      search_(std::make_unique<NeighborSearch>(default_skin(model, p),
+                                               near_field_extra_range(model.params.near_field, p), model.params.domain,
+                                               largest_member_offset(model.clumps))),
       particle_contacts_(std::make_unique<ParticleContacts>(table_, policy.step_start)),
       barrier_contacts_(std::make_unique<BarrierContacts>(table_, b)) {
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);

@@ -97,16 +97,21 @@ class Interactions {
   // A run over the ranks of `comm` (interactions_decomposed.cpp, docs/parallel.md): p holds this
   // rank's particles (those in its brick of `grid`); ghosts come from the neighbouring bricks,
   // rebuilds are collective, particles migrate at the reordering rebuilds with their history,
-  // and every decision (rebuild, stale lists) is taken over all ranks.
-  void decompose(const Communicator& comm, const BrickGrid& grid);
+  // and every decision (rebuild, stale lists) is taken over all ranks. `body_margin` (m): the
+  // halo's growth for clumps (NeighborSearch::decompose).
+  void decompose(const Communicator& comm, const BrickGrid& grid, double body_margin = 0.0);
   bool decomposed() const { return comm_ != nullptr; }
   // Records of another part of the run (the trapezoidal rule's rate history) that travel with
-  // their particles when these change rank: taken before a migration, given back after it.
+  // their particles (anchored by particle ids) or their clumps' bodies (by body ids) when these
+  // change rank: taken before a migration, given back after it.
   struct TravellingRecords {
     std::function<AttachedRecords()> take;
     std::function<void(const AttachedRecords&)> give;
   };
-  void set_travelling(TravellingRecords t) { travelling_ = std::move(t); }
+  void set_travelling(TravellingRecords particles, TravellingRecords bodies = {}) {
+    travelling_ = std::move(particles);
+    body_travelling_ = std::move(bodies);
+  }
   // Statistics summed over the ranks (the barriers' drive power and work are already global:
   // their loads are summed over the ranks at every evaluation that reads them). Collective.
   InteractionStats global_stats() const;
@@ -199,6 +204,7 @@ class Interactions {
   } next_drift_;
   const Communicator* comm_ = nullptr;  // several ranks (decompose()); null in a one-rank run
   TravellingRecords travelling_;        // several ranks: carried along by migrations
+  TravellingRecords body_travelling_;   // the same, anchored by body ids
   bool defer_loads_ = false;            // within a step: loads of barriers at rest may wait
   bool loads_pending_ = false;          // the barrier loads are this rank's alone, to be summed
   std::uint64_t steps_since_balance_ = 0;

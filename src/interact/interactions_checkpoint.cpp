@@ -14,6 +14,7 @@
 #include "parallel/gather.hpp"
 #include "interact/body_forces.hpp"
 #include "interact/interactions.hpp"
+#include "parallel/body_ownership.hpp"
 
 namespace mpdem {
 
@@ -130,8 +131,10 @@ void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b)
   read_section(r, "barrier_contacts", [&](BinaryReader& in) { barrier_contacts_->restore(in, p.size()); });
   const AttachedRecords barrier = barrier_contacts_->export_records(p);
   if (!counts_sums) barrier_contacts_->clear_overflows();
-  const std::vector<char> keep = search_->halo()->grid().owned(std::span<const Vec3>(p.x.data(), p.size()),
-                                                               comm_->rank());
+  // A clump's members are kept with their body, by its centre (parallel/body_ownership.hpp).
+  const BrickGrid& grid = search_->halo()->grid();
+  const std::vector<char> keep = owned_particles(grid, p, comm_->rank());
+  if (p.has_bodies()) p.bodies.compact(grid.owned(p.bodies.x, comm_->rank()));
   std::unordered_set<std::int64_t> mine;
   for (std::size_t i = 0; i < p.size(); ++i)
     if (keep[i]) mine.insert(p.id[i]);

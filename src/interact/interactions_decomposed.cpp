@@ -16,9 +16,9 @@
 
 namespace mpdem {
 
-void Interactions::decompose(const Communicator& comm, const BrickGrid& grid) {
+void Interactions::decompose(const Communicator& comm, const BrickGrid& grid, double body_margin) {
   comm_ = &comm;
-  search_->decompose(comm, grid, heat_ != nullptr);  // ghosts' temperatures only for heat transfer
+  search_->decompose(comm, grid, heat_ != nullptr, body_margin);  // ghosts' temperatures only for heat transfer
 }
 
 bool Interactions::any_rank(bool v) const { return comm_ ? comm_->any(v) : v; }
@@ -33,10 +33,13 @@ void Interactions::rebuild_decomposed(Particles& p, const Barriers& b, bool reor
     for (const PairHistory& h : pairs) pair_records.push(std::min(h.id_first, h.id_second), h);
     AttachedRecords barrier_records = barrier_contacts_->export_records(p);  // (migrate wraps the periodic axes)
     AttachedRecords other = travelling_.take ? travelling_.take() : AttachedRecords{};
-    std::vector<AttachedRecords*> attached{&pair_records, &barrier_records};
+    AttachedRecords body_other = body_travelling_.take ? body_travelling_.take() : AttachedRecords{};
+    std::vector<AttachedRecords*> attached{&pair_records, &barrier_records}, body_attached;
     if (travelling_.take) attached.push_back(&other);
-    search_->migrate(p, attached);
+    if (body_travelling_.take) body_attached.push_back(&body_other);
+    search_->migrate(p, attached, body_attached);
     if (travelling_.give) travelling_.give(other);
+    if (body_travelling_.give) body_travelling_.give(body_other);
     if (p.size() > 1) p.permute(search_->spatial_order(p));
     search_->rebuild(p, b);
     pairs.clear();

@@ -108,6 +108,20 @@ void Interactions::add_particles(Particles& p, const Barriers& b, Particles fres
       });
       ++k;
     });
+    // New clump bodies (an inlet's) after the present ones; their members name them by id.
+    if (!fresh.bodies.empty()) {
+      k = 0;
+      p.bodies.for_each_array([&](const char*, auto& to) {
+        std::size_t j = 0;
+        fresh.bodies.for_each_array([&](const char*, auto& from) {
+          if constexpr (std::is_same_v<decltype(to), decltype(from)>)
+            if (j == k) to.insert(to.end(), from.begin(), from.end());
+          ++j;
+        });
+        ++k;
+      });
+    }
+    p.bodies.stale = true;
   };
   if (comm_) {
     // Collective, as remove_particles: the ghosts' sources are remote, so the history goes by ids.

@@ -144,11 +144,14 @@ void read_particle_csv(const std::filesystem::path& file, Model& model, int defa
   MaterialVariants variants(model, t.file());
 
   // Ids must be unique across all files; rows without one continue after the largest seen.
+  // Clump members read so far carry no id yet (assign_member_ids numbers them after every free
+  // sphere), so only the free spheres' ids are taken.
   std::unordered_map<std::int64_t, std::size_t> seen;  // id -> line in this file (0 = earlier file)
   std::int64_t next_id = 0;
-  for (const std::int64_t pid : out.id) {
-    seen.emplace(pid, 0);
-    next_id = std::max(next_id, pid + 1);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (out.body[i] != kNoBody) continue;
+    seen.emplace(out.id[i], 0);
+    next_id = std::max(next_id, out.id[i] + 1);
   }
 
   for (const CsvRow& row : t.rows()) {

@@ -285,6 +285,10 @@ FingerprintPart open_boundaries_part(const Params& prm) {
     h.add(s.material);
     h.add(s.seed);
     h.add(std::uint64_t{s.max_attempts});
+    for (std::size_t k = 0; k < s.clump.clumps.size(); ++k) {  // none for spheres: their fingerprint is kept
+      h.add(std::int64_t{s.clump.clumps[k]});
+      h.add(s.clump.fractions[k]);
+    }
     p.items.push_back(h.value());
     labels.push_back("[[inlet]] '" + s.name + "'");
   }

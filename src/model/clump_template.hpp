@@ -3,6 +3,7 @@
 // body, re-expressed in the body's principal frame about its centre of mass, and the union's mass
 // properties per unit density (physics/clump_mass.hpp). A body of the template made of a material
 // of density rho has mass rho V and principal moments rho J, unless the template overrides them.
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -44,6 +45,20 @@ struct ClumpTemplate {
     for (const ClumpMember& m : members()) r = std::max(r, norm(m.x) + m.r);
     return r;
   }
+  // m, the largest distance of a member's centre from the centre of mass.
+  double member_offset() const {
+    double r = 0.0;
+    for (const ClumpMember& m : members()) r = std::max(r, norm(m.x));
+    return r;
+  }
 };
+
+// m, the largest member_offset() of the templates (0 without any): how far outside a periodic
+// domain's period a member may lie when its body's centre is inside (parallel/periodic_images.hpp).
+inline double largest_member_offset(const std::vector<ClumpTemplate>& clumps) {
+  double r = 0.0;
+  for (const ClumpTemplate& t : clumps) r = std::max(r, t.member_offset());
+  return r;
+}
 
 }  // namespace mpdem

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/vec3.hpp"
+#include "model/clump_mix.hpp"
 #include "model/generate_spec.hpp"
 #include "model/radius_distribution.hpp"
 
@@ -33,7 +34,10 @@ struct InletSpec {
   double start = 0.0;         // s, first insertion time
   std::optional<double> end;  // s, no insertion at or after it (none: the run's time.duration)
   double interval = 0.0;      // s, between insertion times (0: 100 x time.dt)
+  // m; with `clump`: the templates' member radii (discrete, equal fractions), for the estimates
+  // that go by the inserted spheres' radii (neighbour skin, time step, impact overlap)
   RadiusDistribution radius;
+  ClumpMix clump;                // clump templates: the inlet inserts bodies (empty: spheres)
   std::string material;          // material name ("" = the first material)
   Vec3 velocity{};               // m/s, initial velocity of every inserted particle
   double velocity_spread = 0.0;  // m/s, each component + uniform random in [-spread, spread]

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "model/clump_mix.hpp"
 #include "model/clump_template.hpp"
 #include "model/material.hpp"
 #include "model/params.hpp"
@@ -23,7 +24,7 @@ struct ParticleSource {
   std::filesystem::path file;            // absolute (resolved against the scene file's folder), or empty
   std::optional<GenerateSpec> generate;  // set instead of `file` for generated particles
   std::string material;                  // default material name ("" = first material)
-  std::string clump;                     // clump template name: the file's rows are bodies ("" = spheres)
+  ClumpMix clump;                        // clump templates: the file's rows are bodies (empty = spheres)
   bool fixed = false;                    // every particle of the entry fixed (Particles::fixed)
   std::size_t line = 0;                  // line of the entry in the scene file, for messages
   std::size_t first = 0, count = 0;      // its particles [first, first + count) as loaded (before any reordering)

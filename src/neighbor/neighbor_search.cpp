@@ -77,7 +77,8 @@ void NeighborSearch::restore(BinaryReader& r, Particles& p, const Barriers& b, c
   build(p, x, at_build);
 }
 
-void NeighborSearch::decompose(const Communicator& comm, BrickGrid grid, bool temperatures) {
+void NeighborSearch::decompose(const Communicator& comm, BrickGrid grid, bool temperatures, double body_margin) {
+  body_margin_ = body_margin;
   halo_ = std::make_unique<HaloExchange>(comm, std::move(grid));
   halo_->temperatures(temperatures);
 }
@@ -96,14 +97,14 @@ void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Ba
     // a checkpoint's, so the list is built over those and the ghosts' own.
     x_all.assign(x_owned.begin(), x_owned.end());
     rmax = halo_->comm().max(rmax);  // a ghost may be larger than every owned particle
-    halo_width_ = periodic_image_width(rmax, extra_, skin_);
+    halo_width_ = periodic_image_width(rmax, extra_, skin_) + body_margin_;
     halo_->build(p, halo_width_);
     x_all.insert(x_all.end(), p.x.begin() + static_cast<std::ptrdiff_t>(owned), p.x.end());
     x = x_all;
   } else if (images_.active()) {
     // x_owned may be p.x, which appending the ghosts reallocates: copied first.
     x_all.assign(x_owned.begin(), x_owned.end());
-    images_.select(x_all, periodic_image_width(rmax, extra_, skin_));
+    images_.select(x_all, periodic_image_width(rmax, extra_, skin_, member_offset_));
     images_.append(p);
     x_all.reserve(owned + images_.size());
     for (std::size_t g = 0; g < images_.size(); ++g) x_all.push_back(x_all[images_.source(g)] + images_.shift(g));

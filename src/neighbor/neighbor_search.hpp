@@ -14,6 +14,7 @@
 #include "neighbor/pair_blocks.hpp"
 #include "parallel/periodic_images.hpp"
 #include "neighbor/verlet_list.hpp"
+#include "parallel/body_ownership.hpp"
 #include "parallel/halo_exchange.hpp"
 #include "state/barriers.hpp"
 #include "state/particles.hpp"
@@ -23,26 +24,33 @@ namespace mpdem {
 class NeighborSearch {
  public:
   // skin [m] > 0; extra_range [m] >= 0 adds to the contact range (near-field cutoff); the
-  // domain's periodic axes get ghost images (periodic_images.hpp).
-  NeighborSearch(double skin, double extra_range, const DomainParams& domain = {})
-      : skin_(skin), extra_(extra_range), images_(domain) {}
+  // domain's periodic axes get ghost images (periodic_images.hpp), in a band widened by
+  // member_offset [m] >= 0, the largest offset of a clump member from its body's centre.
+  NeighborSearch(double skin, double extra_range, const DomainParams& domain = {}, double member_offset = 0.0)
+      : skin_(skin), extra_(extra_range), member_offset_(member_offset), images_(domain) {}
 
   // A run over several ranks (docs/parallel.md): the ghosts are the halo of the neighbouring
   // bricks (and the periodic images, through the same exchange) instead of PeriodicImages.
   // Every build is then collective: all ranks rebuild together. `temperatures`: the ghosts'
-  // temperatures and heat flows cross too (heat transfer on).
-  void decompose(const Communicator& comm, BrickGrid grid, bool temperatures);
+  // temperatures and heat flows cross too (heat transfer on). `body_margin` (m): what the halo's
+  // reach grows by for clumps, twice the largest distance of a member from its body's centre (a
+  // member, owned with its body, lies beyond its brick's face by up to that distance, and so may
+  // the neighbour's; docs/parallel.md "Clumps").
+  void decompose(const Communicator& comm, BrickGrid grid, bool temperatures, double body_margin = 0.0);
   const HaloExchange* halo() const { return halo_.get(); }
   // Several ranks, between steps: moves the brick cuts to balance `cost` (this rank's, spread over
   // its owned particles; parallel/load_balance.hpp), keeping every brick wider than the halo of
   // the last build. True when a cut moved: then rebuild with migration. Collective.
+  // A member's cost counts where its body's centre is (the body's owner).
   bool shift_cuts(const Particles& p, double cost) {
-    return halo_ && halo_->shift_cuts(std::span<const Vec3>(p.x.data(), p.size()), cost, halo_width_);
+    return halo_ && halo_->shift_cuts(owner_points(p), cost, halo_width_);
   }
   // Sends the owned particles that left this rank's brick to their new owners (between steps,
-  // no ghosts held), with the records in `attached` whose anchor id leaves.
-  void migrate(Particles& p, std::span<AttachedRecords* const> attached) {
-    if (halo_) halo_->migrate(p, attached);
+  // no ghosts held), with the records in `attached` whose anchor id leaves (particle ids), and
+  // those in `body_attached` whose anchor body leaves (body ids; HaloExchange::migrate).
+  void migrate(Particles& p, std::span<AttachedRecords* const> attached,
+               std::span<AttachedRecords* const> body_attached = {}) {
+    if (halo_) halo_->migrate(p, attached, body_attached);
   }
 
   // The particles changed in count (or lost their ghosts) since the build, or moved too far.
@@ -118,9 +126,11 @@ class NeighborSearch {
 
   double skin_;
   double extra_;
+  double member_offset_;  // m, widens the periodic images' band (clump members outside the period)
   PeriodicImages images_;
   std::unique_ptr<HaloExchange> halo_;  // several ranks: the ghosts' source instead of images_
   double halo_width_ = 0.0;             // m, the halo's reach at the last build (several ranks)
+  double body_margin_ = 0.0;            // m, added to the halo's reach for clumps (decompose)
   std::uint64_t rebuilds_ = 0;
   std::uint64_t generation_ = 0;
   std::vector<Vec3> barrier_offsets_build_;  // [M] m, barrier offsets at the last build

@@ -34,7 +34,7 @@ struct ParticleSnapshotsDue {
   bool vtu = false;             // a particle VTU snapshot (on several ranks: its pieces and .pvtu)
   bool csv = false;             // a particle CSV snapshot
   std::uint64_t vtu_index = 0;  // -, its counter NNNNNN in the file names, when vtu
-  // A body CSV snapshot (the clumps' bodies; a run on several ranks has none: clumps run on one).
+  // A body CSV snapshot (the clumps' bodies; on several ranks gathered with the particles).
   bool body_csv = false;
 };
 

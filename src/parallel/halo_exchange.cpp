@@ -10,6 +10,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "parallel/body_ownership.hpp"
 #include "parallel/periodic_images.hpp"
 #include "parallel/particle_buffer.hpp"
 
@@ -109,7 +110,8 @@ void unpack_attached(AttachedRecords& a, std::span<const std::byte> in, std::siz
 }
 }  // namespace
 
-void HaloExchange::migrate(Particles& p, std::span<AttachedRecords* const> attached) {
+void HaloExchange::migrate(Particles& p, std::span<AttachedRecords* const> attached,
+                           std::span<AttachedRecords* const> body_attached) {
   if (p.n_ghost != 0) throw std::logic_error("HaloExchange::migrate: drop the ghosts first");
   // Wrapped first: the brick a particle enters along a periodic axis is the one of its wrapped centre.
   DomainParams box;
@@ -119,6 +121,7 @@ void HaloExchange::migrate(Particles& p, std::span<AttachedRecords* const> attac
   box.periodic = grid_.periodic();
   PeriodicImages(box).wrap(p);
   const int me = comm_->rank();
+  Bodies& bodies = p.bodies;
   for (int c = 0; c < 3; ++c) {
     const auto cc = static_cast<std::size_t>(c);
     const int n = grid_.dims()[cc];
@@ -126,29 +129,48 @@ void HaloExchange::migrate(Particles& p, std::span<AttachedRecords* const> attac
     const int k = grid_.coords(me)[cc];
     const int down = grid_.neighbour(me, c, -1), up = grid_.neighbour(me, c, +1);
     const int k_down = grid_.coords(down < 0 ? me : down)[cc], k_up = grid_.coords(up < 0 ? me : up)[cc];
-    std::vector<std::uint32_t> go[2];  // down, up
-    std::unordered_map<std::int64_t, int> leaving;
-    std::vector<char> keep(p.size(), 1);
+    // The direction (0 down, 1 up) towards the brick holding coordinate x, or -1 to stay.
+    const auto direction = [&](double x, std::int64_t id, const char* what) {
+      const int b = grid_.brick_along(c, x);
+      if (b == k) return -1;
+      if (down >= 0 && b == k_down) return 0;
+      if (up >= 0 && b == k_up) return 1;
+      throw std::runtime_error(
+          fmt::format("{} id {} moved from brick {} to brick {} along {} since the last rebuild, past the neighbouring "
+                      "brick (x = {:.9g} m): its speed is far beyond what the neighbour lists were built for",
+                      what, id, k, b, "xyz"[c], x));
+    };
+    // A member goes where its body's centre goes, with its body, in the same message.
+    const std::vector<Vec3> at = owner_points(p);    // m
+    std::vector<std::uint32_t> go[2], go_bodies[2];  // down, up
+    std::unordered_map<std::int64_t, int> leaving, bodies_leaving;
+    std::vector<char> keep(p.size(), 1), keep_bodies(bodies.size(), 1);
     for (std::size_t i = 0; i < p.size(); ++i) {
-      const int b = grid_.brick_along(c, p.x[i][c]);
-      if (b == k) continue;
+      const int d = direction(at[i][c], p.body[i] == kNoBody ? p.id[i] : p.body[i],
+                              p.body[i] == kNoBody ? "particle" : "body");
+      if (d < 0) continue;
       keep[i] = 0;
-      int d = -1;
-      if (down >= 0 && b == k_down) d = 0;
-      else if (up >= 0 && b == k_up) d = 1;
-      else
-        throw std::runtime_error(fmt::format(
-            "particle id {} moved from brick {} to brick {} along {} since the last rebuild, past the neighbouring "
-            "brick (x = {:.9g} m): its speed is far beyond what the neighbour lists were built for",
-            p.id[i], k, b, "xyz"[c], p.x[i][c]));
       go[d].push_back(static_cast<std::uint32_t>(i));
       leaving.emplace(p.id[i], d);
     }
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+      const int d = direction(bodies.x[b][c], bodies.id[b], "body");
+      if (d < 0) continue;
+      keep_bodies[b] = 0;
+      go_bodies[d].push_back(static_cast<std::uint32_t>(b));
+      bodies_leaving.emplace(bodies.id[b], d);
+    }
     migrated_ += go[0].size() + go[1].size();
+    migrated_bodies_ += go_bodies[0].size() + go_bodies[1].size();
     std::vector<std::byte> out[2];
-    for (int d = 0; d < 2; ++d) pack_particles(p, go[d], {}, out[d]);
+    for (int d = 0; d < 2; ++d) {
+      pack_particles(p, go[d], {}, out[d]);
+      pack_bodies(bodies, go_bodies[d], out[d]);
+    }
     for (AttachedRecords* a : attached) pack_attached(*a, leaving, out);
+    for (AttachedRecords* a : body_attached) pack_attached(*a, bodies_leaving, out);
     p.compact(keep);
+    bodies.compact(keep_bodies);
     // Downwards, then upwards; with two bricks along a periodic axis both go to the same rank.
     const auto in_from_up = comm_->exchange(down, out[0], up, kMigrationTag + 4 * (2 * c));
     const auto in_from_down = comm_->exchange(up, out[1], down, kMigrationTag + 4 * (2 * c + 1));
@@ -156,7 +178,9 @@ void HaloExchange::migrate(Particles& p, std::span<AttachedRecords* const> attac
       if (in->empty()) continue;
       std::size_t pos = 0;
       unpack_particles(p, *in, pos);
+      unpack_bodies(bodies, *in, pos);
       for (AttachedRecords* a : attached) unpack_attached(*a, *in, pos);
+      for (AttachedRecords* a : body_attached) unpack_attached(*a, *in, pos);
     }
   }
 }
@@ -170,7 +194,8 @@ void HaloExchange::build(Particles& p, double width) {
     if (grid_.dims()[cc] > 1 && !(grid_.narrowest() >= width))
       throw std::invalid_argument(fmt::format(
           "a subdomain is {:.6g} m wide along {}, narrower than the neighbour range {:.6g} m (2 x the largest radius "
-          "+ skin + near-field reach, plus a skin for the drift): run on fewer ranks",
+          "+ skin + near-field reach, plus a skin for the drift; with clumps, plus twice the largest distance of a "
+          "member from its body's centre): run on fewer ranks",
           grid_.narrowest(), "xyz"[c], width));
     if (grid_.periodic()[cc] && !(period(grid_, c) >= 2.0 * width))
       throw std::invalid_argument(fmt::format(

@@ -42,9 +42,13 @@ class HaloExchange {
   // Between steps, on owned particles only: sends every particle that left this rank's brick to
   // the neighbour whose brick it entered (per axis, so a diagonal move takes two or three hops)
   // and appends those that entered this one after the particles that stayed (whose order is
-  // kept); contact history follows by id. Throws std::runtime_error naming the particle when one
-  // moved past a neighbouring brick since the last migration.
-  void migrate(Particles& p, std::span<AttachedRecords* const> attached = {});
+  // kept); contact history follows by id. A clump's members go where its body's centre goes,
+  // with the body's row of p.bodies, in the same message (parallel/body_ownership.hpp); the
+  // records of `attached` are anchored by particle ids, those of `body_attached` by body ids.
+  // Throws std::runtime_error naming the particle (or body) when one moved past a neighbouring
+  // brick since the last migration.
+  void migrate(Particles& p, std::span<AttachedRecords* const> attached = {},
+               std::span<AttachedRecords* const> body_attached = {});
   // Chooses and appends the ghosts of the owned centres within `width` (m) of the brick faces.
   // Throws std::invalid_argument when a brick is narrower than `width` along a decomposed axis
   // (ghosts would be needed from beyond the neighbours) or a periodic period shorter than 2 width.
@@ -67,7 +71,8 @@ class HaloExchange {
   }
 
   std::size_t size() const { return ghosts_; }
-  std::uint64_t migrated() const { return migrated_; }  // particles this rank sent to another
+  std::uint64_t migrated() const { return migrated_; }                // particles this rank sent to another
+  std::uint64_t migrated_bodies() const { return migrated_bodies_; }  // bodies this rank sent to another
 
  private:
   struct Swap {
@@ -86,6 +91,7 @@ class HaloExchange {
   std::vector<Swap> swaps_;  // two per stage
   std::size_t ghosts_ = 0;
   std::uint64_t migrated_ = 0;
+  std::uint64_t migrated_bodies_ = 0;
   bool temperatures_ = true;
 };
 

@@ -16,26 +16,56 @@ PeriodicImages::PeriodicImages(const DomainParams& d) {
   for (int c = 0; c < 3; ++c) period_[c] = periodic_[static_cast<std::size_t>(c)] ? d.max[c] - d.min[c] : 0.0;
 }
 
+namespace {
+
+// Moves x into [lo, hi) by whole periods L = hi - lo; returns the periods taken off.
+double wrap_coordinate(double& x, double lo, double hi, double L) {
+  double m = std::floor((x - lo) / L);
+  x -= m * L;
+  // Round-off can leave x a hair outside [lo, hi).
+  if (x >= hi) {
+    x -= L;
+    m += 1.0;
+  } else if (x < lo) {
+    x += L;
+    m -= 1.0;
+  }
+  return m;
+}
+
+}  // namespace
+
 void PeriodicImages::wrap(Particles& p) const {
   if (!active()) return;
-  for (std::size_t i = 0; i < p.size(); ++i)
+  // A clump body's centre is wrapped and its members move with it by the same periods (never one
+  // by one, so that a member stays at its place in the body and may lie outside the box by up to
+  // its offset from the centre).
+  Bodies& B = p.bodies;
+  std::vector<Vec3> body_shift(B.size());  // m, what each body moved by
+  for (std::size_t b = 0; b < B.size(); ++b)
+    for (int c = 0; c < 3; ++c) {
+      double& x = B.x[b][c];
+      if (!periodic_[static_cast<std::size_t>(c)] || !std::isfinite(x) || (x >= lo_[c] && x < hi_[c])) continue;
+      const double m = wrap_coordinate(x, lo_[c], hi_[c], period_[c]);
+      body_shift[b][c] = m * period_[c];
+      B.image[b][static_cast<std::size_t>(c)] += static_cast<std::int32_t>(m);
+    }
+  if (!B.empty()) B.index_members(p);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.body[i] != kNoBody) {
+      const std::size_t b = B.owner[i];
+      p.x[i] -= body_shift[b];
+      p.image[i] = B.image[b];
+      continue;
+    }
     for (int c = 0; c < 3; ++c) {
       if (!periodic_[static_cast<std::size_t>(c)]) continue;
       double& x = p.x[i][c];
       if (!std::isfinite(x) || (x >= lo_[c] && x < hi_[c])) continue;  // a non-finite one is reported elsewhere
-      const double L = period_[c];
-      double m = std::floor((x - lo_[c]) / L);
-      x -= m * L;
-      // Round-off can leave x a hair outside [lo, hi).
-      if (x >= hi_[c]) {
-        x -= L;
-        m += 1.0;
-      } else if (x < lo_[c]) {
-        x += L;
-        m -= 1.0;
-      }
-      p.image[i][static_cast<std::size_t>(c)] += static_cast<std::int32_t>(m);
+      p.image[i][static_cast<std::size_t>(c)] += static_cast<std::int32_t>(
+          wrap_coordinate(x, lo_[c], hi_[c], period_[c]));
     }
+  }
 }
 
 void PeriodicImages::select(std::span<const Vec3> x, double width) {
@@ -46,8 +76,8 @@ void PeriodicImages::select(std::span<const Vec3> x, double width) {
     if (periodic_[static_cast<std::size_t>(c)] && !(period_[c] >= 2.0 * width))
       throw std::invalid_argument(fmt::format(
           "the periodic domain is {:.6g} m long along {}, shorter than twice the neighbour range {:.6g} m (2 x the "
-          "largest radius + skin + near-field reach, plus a skin for the drift): enlarge [domain] min/max along {} "
-          "or use smaller particles",
+          "largest radius + skin + near-field reach, plus a skin for the drift and the largest clump member's "
+          "offset from its centre): enlarge [domain] min/max along {} or use smaller particles",
           period_[c], "xyz"[c], width, "xyz"[c]));
   for (std::size_t i = 0; i < x.size(); ++i) {
     // Per axis: -1 (near max: an image one period down), +1 (near min: one period up), or 0.

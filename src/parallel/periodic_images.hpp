@@ -10,7 +10,9 @@
 // Positions are wrapped into [min, max) only between steps (wrap, at the rebuilds that also
 // reorder), never within a step: the integrators hold their step-start state by index. Between
 // rebuilds a particle may therefore lie up to about skin/2 outside the period; the unwrapped
-// centre is always x + image * period.
+// centre is always x + image * period. A clump body's centre is wrapped and its members shifted
+// with it (state/bodies.hpp): a member keeps its body's image counter and may lie outside the
+// period by its offset from the centre; its images are chosen as any particle's.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -25,9 +27,11 @@ namespace mpdem {
 
 // m, how far from a periodic face particles get images: a pair across the face lies within the
 // list's reach (2 R_max + extra_range + skin) of both faces, and a skin more covers particles
-// that drifted out of the period since their last wrap (a rebuild within a step).
-inline double periodic_image_width(double max_radius, double extra_range, double skin) {
-  return 2.0 * max_radius + extra_range + 2.0 * skin;
+// that drifted out of the period since their last wrap (a rebuild within a step). Clump members
+// move with their body's wrapped centre, so one may lie outside the period by its offset from the
+// centre: member_offset (m), the largest such offset, widens the band by as much.
+inline double periodic_image_width(double max_radius, double extra_range, double skin, double member_offset = 0.0) {
+  return 2.0 * max_radius + extra_range + 2.0 * skin + member_offset;
 }
 
 class PeriodicImages {
@@ -38,7 +42,8 @@ class PeriodicImages {
   bool active() const { return periodic_[0] || periodic_[1] || periodic_[2]; }
   const Vec3& period() const { return period_; }  // m, max - min along the periodic axes (0 elsewhere)
 
-  // Wraps the owned centres into [min, max) along the periodic axes, counting the images.
+  // Wraps the owned centres into [min, max) along the periodic axes, counting the images; a clump
+  // body's centre likewise, its members shifted by the same periods.
   void wrap(Particles& p) const;
   // Chooses the ghosts of the owned centres x [N] (m) within width (m) of a periodic face.
   // Throws std::invalid_argument when a period is shorter than 2 x width: a particle could then

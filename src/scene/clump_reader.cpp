@@ -78,19 +78,51 @@ std::string known_clumps(const Model& model) {
   return out + ")";
 }
 
-// What clumps do not run with yet: named at the first [[particles]] entry with a clump.
-void check_clump_support(const TomlSection& root, const Scene& scene) {
-  for (const ParticleSource& src : scene.particle_sources) {
-    if (src.clump.empty()) continue;
-    const Params& p = scene.model.params;
-    const auto refuse = [&](const std::string& what) {
-      throw InputError(root.file(), src.line, "particles.clump", "clumps do not run with " + what + " yet");
-    };
-    if (p.domain.bounded && p.domain.any_periodic()) refuse("periodic boundaries");
-    if (!p.inlets.empty()) refuse("[[inlet]] entries");
-    if (!p.sinks.empty()) refuse("[[sink]] entries");
-    return;
+ClumpMix read_clump_mix(const TomlSection& s, std::string_view k, const Model& model) {
+  ClumpMix mix;
+  const toml::node* n = s.node(k);
+  const auto index = [&](const std::string& name, std::size_t line, const std::string& key) {
+    const int c = model.clump_index(name);
+    if (c < 0) throw InputError(s.file(), line, key, "unknown clump '" + name + "'" + known_clumps(model));
+    return c;
+  };
+  if (n->is_string()) {
+    mix.clumps.push_back(index(*s.string(k), s.line_of(k), s.key(k)));
+    mix.fractions.push_back(1.0);
+    return mix;
   }
+  const toml::table* t = n->as_table();
+  constexpr const char* kExample = "a string (a clump name) or a table of clump names and number fractions, e.g. "
+                                   "{ tetra = 0.7, dumbbell = 0.3 }";
+  if (!t) s.fail(k, std::string("expected ") + kExample);
+  if (t->empty()) s.fail(k, std::string("expected at least one clump name in the table: ") + kExample);
+  // The names in the order written (a TOML table iterates by name): the order of the draw.
+  std::vector<std::pair<const toml::key*, const toml::node*>> entries;
+  for (auto&& [name, value] : *t) entries.emplace_back(&name, &value);
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    const toml::source_position pa = a.first->source().begin, pb = b.first->source().begin;
+    return pa.line != pb.line ? pa.line < pb.line : pa.column < pb.column;
+  });
+  std::vector<std::string_view> names;
+  names.reserve(entries.size());
+  for (const auto& e : entries) names.push_back(e.first->str());
+  const TomlSection table(s.file(), *t, s.key(k), names);
+  double sum = 0.0;
+  for (const std::string_view name : names) {
+    mix.clumps.push_back(index(std::string(name), table.line_of(name), table.key(name)));
+    mix.fractions.push_back(*table.number(name, kPositive));
+    sum += mix.fractions.back();
+  }
+  if (!(std::abs(sum - 1.0) <= 1e-9))
+    s.fail(k, "expected number fractions that sum to 1 (within 1e-9), got the sum " + number_text(sum));
+  return mix;
+}
+
+std::string clump_mix_mass_problem(const ClumpMix& mix, const Model& model, int material) {
+  const Material& mat = model.materials[static_cast<std::size_t>(material)];
+  for (const int c : mix.clumps)
+    if (std::string why = body_mass_problem(model.clumps[static_cast<std::size_t>(c)], mat); !why.empty()) return why;
+  return "";
 }
 
 void read_clump_templates(const TomlSection& root, const std::filesystem::path& dir, Model& model) {
@@ -202,12 +234,12 @@ void read_clump_bodies(const std::filesystem::path& file, const Model& model, in
   if (t.rows().empty()) throw InputError(t.file(), t.header_line(), "", "expected at least one body row");
 }
 
-void generate_clump_bodies(const GenerateSpec& spec, const Model& model, int material, int clump, Particles& out) {
+void generate_clump_bodies(const GenerateSpec& spec, const Model& model, int material, const ClumpMix& mix,
+                           Particles& out) {
   if (!spec.material.empty()) material = model.material_index(spec.material);  // checked when read
-  const Material& mat = model.materials[static_cast<std::size_t>(material)];
-  if (const std::string why = body_mass_problem(model.clumps[static_cast<std::size_t>(clump)], mat); !why.empty())
+  if (const std::string why = clump_mix_mass_problem(mix, model, material); !why.empty())
     throw InputError(spec.origin, spec.line, "particles.generate", why);
-  add_generated_bodies(spec, model, material, clump, out);
+  add_generated_bodies(spec, model, material, mix, out);
 }
 
 void assign_member_ids(Particles& p, const std::string& origin) {

@@ -4,6 +4,8 @@
 // their member spheres.
 #include <cstdint>
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "io/toml_section.hpp"
 #include "model/generate_spec.hpp"
@@ -16,11 +18,16 @@ namespace mpdem {
 // optional mass (kg) and inertia ([I1, I2, I3], kg m^2). Throws InputError naming file, line and key.
 void read_clump_templates(const TomlSection& root, const std::filesystem::path& dir, Model& model);
 
+// `k` of a [[particles]] or [[inlet]] entry: a template name, or an inline table of template names
+// -> number fractions (each > 0, summing to 1 within 1e-9), in the order written (ClumpMix::draw).
+// Throws InputError naming file, line and key (an unknown name lists the known ones).
+ClumpMix read_clump_mix(const TomlSection& s, std::string_view k, const Model& model);
+// "" when every template of `mix` gives bodies of material `material` a usable mass and moments,
+// else what is wrong (names the template and material).
+std::string clump_mix_mass_problem(const ClumpMix& mix, const Model& model, int material);
+
 // " (known: a b)" (or that no [[clump]] is defined): the tail of an unknown clump name's message.
 std::string known_clumps(const Model& model);
-// Refuses, at the first [[particles]] entry with a clump, what clumps do not run with yet
-// (periodic boundaries, inlets, sinks). `root` names the scene file.
-void check_clump_support(const TomlSection& root, const Scene& scene);
 
 // Appends the bodies of the body CSV `file` (columns: id, x, y, z of the centre of mass; optional
 // q0, q1, q2, q3 (unit quaternion w, x, y, z: the template's frame as written -> world; identity
@@ -32,10 +39,11 @@ void check_clump_support(const TomlSection& root, const Scene& scene);
 // bodies already in out). Throws InputError naming file, line and column.
 void read_clump_bodies(const std::filesystem::path& file, const Model& model, int material, int clump, Particles& out);
 
-// Appends the bodies that `spec` generates (generate/generated_bodies.hpp) of template `clump`
-// and material spec.material (else `material`), after checking that the body's mass and moments
+// Appends the bodies that `spec` generates (generate/generated_bodies.hpp) of the templates of
+// `mix` and material spec.material (else `material`), after checking that the body's mass and moments
 // are usable (the message names the entry's generate table).
-void generate_clump_bodies(const GenerateSpec& spec, const Model& model, int material, int clump, Particles& out);
+void generate_clump_bodies(const GenerateSpec& spec, const Model& model, int material, const ClumpMix& mix,
+                           Particles& out);
 
 // Gives the member spheres ids after the largest id of the free spheres, in body order and then
 // template order (a member's id names it in the contact output); checks that body ids are unique.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "generate/region.hpp"
+#include "scene/clump_reader.hpp"
 #include "scene/contact_reader.hpp"
 #include "io/csv_log.hpp"
 #include "scene/generate_spec_reader.hpp"
@@ -118,6 +119,7 @@ double mean_mass(const RadiusDistribution& d, double density) {
 void check_derived_limits(const TomlSection& s, const InletSpec& in, const Model& model) {
   const int mat = in.material.empty() ? 0 : model.material_index(in.material);
   const Material& m = model.materials.at(static_cast<std::size_t>(mat));
+  if (const std::string why = clump_mix_mass_problem(in.clump, model, mat); !why.empty()) s.fail("clump", why);
   for (const double r : in.radius.bounding_radii(true))
     if (const std::string p = radius_problem(r, m, model.params.analysis.thermal); !p.empty())
       s.fail("radius", "material '" + m.name + "': " + p);
@@ -133,12 +135,15 @@ void check_derived_limits(const TomlSection& s, const InletSpec& in, const Model
   // All the insertion times a step passes are inserted at once (sim/inlets.cpp).
   constexpr double kMaxBatch = 5e7;  // particles: beyond this a rate is surely a unit mistake (the generator's cap)
   const double window = std::max(interval, t.dt);  // s
-  const bool by_mass = in.mass_rate > 0.0;
-  const double due = by_mass ? in.mass_rate * window / mean_mass(in.radius, m.density) : in.count_rate * window;
+  const bool by_mass = in.mass_rate > 0.0, bodies = !in.clump.empty();
+  const double mean = bodies ? in.clump.mean_mass(model.clumps, m.density) : mean_mass(in.radius, m.density);  // kg
+  const double due = by_mass ? in.mass_rate * window / mean : in.count_rate * window;
+  const std::string what = bodies ? "bodies" : "particles";
   if (!(due <= kMaxBatch))
     s.fail(by_mass ? "mass_rate" : "count_rate",
-           "about " + number_text(due) + " particles are due at one insertion (the rate times max(interval, " +
-               "time.dt), here " + number_text(window) + " s" + (by_mass ? ", at the mean particle mass" : "") +
+           "about " + number_text(due) + " " + what + " are due at one insertion (the rate times max(interval, " +
+               "time.dt), here " + number_text(window) + " s" +
+               (by_mass ? std::string(", at the mean ") + (bodies ? "body" : "particle") + " mass" : "") +
                "); expected at most 5e7 (check the units)");
 }
 
@@ -159,11 +164,24 @@ InletSpec read_inlet(const TomlSection& s, const toml::table& raw, const Model& 
   InletSpec in;
   in.line = s.line();
   in.name = read_name(s, "inlet" + std::to_string(model.params.inlets.size() + 1), model);
-  in.radius = read_radius(s, raw);
-  const double r_max = largest_radius(in.radius);
+  if (s.has("clump")) {
+    in.clump = read_clump_mix(s, "clump", model);
+    if (s.has("radius"))
+      s.fail("radius", "does not apply with clump: the clump templates fix the bodies' size and shape");
+    in.radius.law = RadiusLaw::Discrete;
+    in.radius.radii = in.clump.member_radii(model.clumps);
+    in.radius.fractions.assign(in.radius.radii.size(), 1.0);
+  } else {
+    in.radius = read_radius(s, raw);
+  }
+  // m, the largest particle's radius, or the bodies' largest bounding sphere's (any orientation fits).
+  const double r_max = in.clump.empty() ? largest_radius(in.radius) : in.clump.reach(model.clumps);
   in.volume = read_volume(s, r_max);
   if (r_max > 0.0 && !Region(in.volume.region, s.file(), s.line()).has_room(r_max))
-    s.fail("radius", "the largest particle (radius " + number_text(r_max) + " m) does not fit in the region");
+    s.fail(in.clump.empty() ? "radius" : "clump",
+           in.clump.empty() ? "the largest particle (radius " + number_text(r_max) + " m) does not fit in the region"
+                            : "the largest body's bounding sphere (radius " + number_text(r_max) +
+                                  " m, the reach of its members from its centre of mass) does not fit in the region");
   if (s.has("mass_rate") == s.has("count_rate"))
     s.fail(s.has("mass_rate") ? "count_rate" : "mass_rate",
            "give exactly one of mass_rate (kg/s) and count_rate (1/s)");
@@ -206,10 +224,10 @@ SinkSpec read_sink(const TomlSection& s, const Model& model) {
 
 void read_inlets_and_sinks(const TomlSection& root, const toml::table& doc, Model& model) {
   const std::vector<TomlSection> inlets = root.tables(
-      "inlet", {"name",     "region",          "min",        "max",         "base",  "axis",      "cylinder_radius",
-                "centre",   "disc_radius",     "corner",     "edge1",       "edge2", "direction", "depth",
-                "radius",   "mass_rate",       "count_rate", "start",       "end",   "interval",  "material",
-                "velocity", "velocity_spread", "seed",       "max_attempts"});
+      "inlet", {"name",     "region",          "min",        "max",          "base",  "axis",      "cylinder_radius",
+                "centre",   "disc_radius",     "corner",     "edge1",        "edge2", "direction", "depth",
+                "radius",   "mass_rate",       "count_rate", "start",        "end",   "interval",  "material",
+                "velocity", "velocity_spread", "seed",       "max_attempts", "clump"});
   if (!inlets.empty() && model.materials.empty())
     throw InputError(root.file(), inlets.front().line(), "inlet.material",
                      "at least one [[material]] is required when an [[inlet]] is given");

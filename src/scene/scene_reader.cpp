@@ -196,10 +196,10 @@ void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene)
     s.get("material", src.material);
     if (!src.material.empty()) check_material(s, "material", src.material, scene.model);
     s.get("fixed", src.fixed);
-    s.get("clump", src.clump);
     if (s.has("clump")) {
-      if (scene.model.clump_index(src.clump) < 0)
-        s.fail("clump", "unknown clump '" + src.clump + "'" + known_clumps(scene.model));
+      src.clump = read_clump_mix(s, "clump", scene.model);
+      if (!src.generate && !s.node("clump")->is_string())
+        s.fail("clump", "expected a clump name: a body CSV takes one template (a table of fractions is for generate)");
     }
     scene.particle_sources.push_back(src);
   }
@@ -356,7 +356,6 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& fil
   read_inlets_and_sinks(root, doc, scene.model);
   read_domain_neighbor_output(root, p);
   read_coarse_grain(root, scene.model);
-  check_clump_support(root, scene);
   return scene;
 }
 
@@ -372,10 +371,10 @@ Scene load_sources(Scene scene) {
     src.first = scene.particles.size();
     const std::size_t first_body = scene.particles.bodies.size();
     if (src.generate && !src.clump.empty())
-      generate_clump_bodies(*src.generate, scene.model, mat, scene.model.clump_index(src.clump), scene.particles);
+      generate_clump_bodies(*src.generate, scene.model, mat, src.clump, scene.particles);
     else if (src.generate) add_generated_particles(*src.generate, scene.model, mat, scene.particles);
     else if (!src.clump.empty())
-      read_clump_bodies(src.file, scene.model, mat, scene.model.clump_index(src.clump), scene.particles);
+      read_clump_bodies(src.file, scene.model, mat, src.clump.clumps.front(), scene.particles);
     else read_particle_csv(src.file, scene.model, mat, scene.particles);
     src.count = scene.particles.size() - src.first;
     // The entry's flag on top of a CSV `fixed` column or the generator's own.

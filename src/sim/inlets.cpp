@@ -12,6 +12,8 @@
 #include "core/random.hpp"
 #include "model/particle_defaults.hpp"
 #include "sim/checkpointed_states.hpp"
+#include "model/body_members.hpp"
+#include "sim/inlet_bodies.hpp"
 #include "sim/insertion_space.hpp"
 #include "integrate/health_scan.hpp"
 
@@ -30,6 +32,13 @@ std::uint64_t mix(std::uint64_t z) {
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
   return z ^ (z >> 31);
+}
+
+// kg or particles (bodies), what inlet `spec` has due in all at its insertion time k: the rate
+// times the time from its start to the next insertion time (or its end).
+double due_at(const InletSpec& spec, std::uint64_t k, double interval, double end) {
+  const double horizon = std::min(spec.start + static_cast<double>(k + 1) * interval, end);  // s
+  return (spec.mass_rate > 0.0 ? spec.mass_rate : spec.count_rate) * (horizon - spec.start);
 }
 
 Vec3 to_world(const InsertionVolume& vol, const Vec3& a) {
@@ -82,6 +91,11 @@ Inlets::Inlets(const Model& model, const Particles& p) : model_(model) {
   }
   state_.resize(inlets_.size());
   for (std::size_t i = 0; i < p.size(); ++i) next_id_ = std::max(next_id_, p.id[i] + 1);
+  for (const std::int64_t id : p.bodies.id) next_body_id_ = std::max(next_body_id_, id + 1);
+}
+
+bool Inlets::any_clump() const {
+  return std::any_of(inlets_.begin(), inlets_.end(), [](const Inlet& in) { return !in.spec->clump.empty(); });
 }
 
 bool Inlets::due(std::size_t j, double t) const {
@@ -133,13 +147,13 @@ Particles Inlets::insert(double t, const Particles& p, const Barriers& b) {
 void Inlets::insert_due(std::size_t j, std::uint64_t k, const Particles& p, const Barriers& b, Particles& fresh) {
   const Inlet& in = inlets_[j];
   const InletSpec& spec = *in.spec;
+  if (!spec.clump.empty()) return insert_due_bodies(j, k, p, b, fresh);
   State& s = state_[j];
   // Ids after every present one (a restored next id is taken on trust otherwise).
   for (std::size_t i = 0; i < p.size(); ++i) next_id_ = std::max(next_id_, p.id[i] + 1);
   Rng rng(mix(mix(mix(spec.seed) ^ j) ^ k));
   const bool by_mass = spec.mass_rate > 0.0;
-  const double horizon = std::min(spec.start + static_cast<double>(k + 1) * in.interval, in.end);
-  const double due = (by_mass ? spec.mass_rate : spec.count_rate) * (horizon - spec.start);  // kg or particles
+  const double due = due_at(spec, k, in.interval, in.end);  // kg or particles
   if (!(s.next_radius > 0.0)) s.next_radius = spec.radius.sample(rng);
   const Material& m = model_.materials[static_cast<std::size_t>(in.material)];
   std::optional<InsertionSpace> space;  // built once something is due
@@ -188,6 +202,57 @@ void Inlets::insert_due(std::size_t j, std::uint64_t k, const Particles& p, cons
   }
 }
 
+void Inlets::insert_due_bodies(std::size_t j, std::uint64_t k, const Particles& p, const Barriers& b,
+                               Particles& fresh) {
+  const Inlet& in = inlets_[j];
+  const InletSpec& spec = *in.spec;
+  State& s = state_[j];
+  for (std::size_t i = 0; i < p.size(); ++i) next_id_ = std::max(next_id_, p.id[i] + 1);
+  for (const std::int64_t id : p.bodies.id) next_body_id_ = std::max(next_body_id_, id + 1);
+  Rng rng(mix(mix(mix(spec.seed) ^ j) ^ k));
+  const bool by_mass = spec.mass_rate > 0.0;
+  const double due = due_at(spec, k, in.interval, in.end);  // kg or bodies
+  const Material& m = model_.materials[static_cast<std::size_t>(in.material)];
+  std::optional<InsertionSpace> space;  // built once something is due
+  for (;;) {
+    // The inlet's n-th body's template, from a stream of its own: the same whenever it is tried.
+    constexpr std::uint64_t kTemplateStream = 0x8BB84B93962EACC9ull;
+    Rng template_rng(mix(mix(mix(mix(spec.seed) ^ j) ^ s.inserted) ^ kTemplateStream));
+    const int c = spec.clump.draw(template_rng);
+    const ClumpTemplate& t = model_.clumps[static_cast<std::size_t>(c)];
+    const double mass = t.body_mass(in.density);  // kg
+    const double done = by_mass ? s.inserted_mass : static_cast<double>(s.inserted);
+    s.shortfall = 0.0;
+    if (done + 0.5 * (by_mass ? mass : 1.0) > due) return;  // the rest is due later
+    if (!space) {
+      space.emplace(p, b, in.lo, in.hi, spec.clump.member_radii(model_.clumps).back());
+      for (std::size_t i = 0; i < fresh.size(); ++i) space->add(fresh.x[i], fresh.radius[i]);  // earlier inlets'
+    }
+    BodyPlace at;
+    if (!place_body(t, spec.volume, in.region, *space, rng, spec.max_attempts, at)) {
+      s.shortfall = due - done;  // carried: due mass grows, so the next insertion time tries again
+      return;
+    }
+    BodyInit init;
+    init.id = next_body_id_++;
+    init.x = at.x;
+    init.q = at.q;
+    init.v = spec.velocity;
+    if (const double h = spec.velocity_spread; h > 0.0)  // braced: drawn in the order x, y, z
+      init.v += Vec3{rng.uniform(-h, h), rng.uniform(-h, h), rng.uniform(-h, h)};
+    init.T = m.temperature;
+    init.charge = m.charge;
+    const std::size_t first = fresh.size();
+    add_body(model_, in.material, c, init, fresh);
+    for (std::size_t i = first; i < fresh.size(); ++i) {  // the members, in template order
+      fresh.id[i] = next_id_++;
+      space->add(fresh.x[i], fresh.radius[i]);
+    }
+    ++s.inserted;
+    s.inserted_mass += mass;
+  }
+}
+
 std::vector<std::string> Inlets::log_columns(const Params& prm) {
   std::vector<std::string> cols;
   for (const InletSpec& s : prm.inlets)
@@ -208,11 +273,12 @@ std::string Inlets::summary() const {
   for (std::size_t j = 0; j < inlets_.size(); ++j) {
     const State& s = state_[j];
     if (s.inserted == 0 && s.shortfall == 0.0) continue;
-    line += fmt::format("{}inlet '{}': {} particles inserted, {:.6g} kg", line.empty() ? "" : "; ",
-                        inlets_[j].spec->name, s.inserted, s.inserted_mass);
+    const char* what = inlets_[j].spec->clump.empty() ? "particles" : "bodies";
+    line += fmt::format("{}inlet '{}': {} {} inserted, {:.6g} kg", line.empty() ? "" : "; ", inlets_[j].spec->name,
+                        s.inserted, what, s.inserted_mass);
     if (s.shortfall > 0.0)
       line += fmt::format(", shortfall {:.6g} {} (no room in the region)", s.shortfall,
-                          inlets_[j].spec->mass_rate > 0.0 ? "kg" : "particles");
+                          inlets_[j].spec->mass_rate > 0.0 ? "kg" : what);
   }
   return line;
 }
@@ -226,6 +292,7 @@ void Inlets::save(BinaryWriter& w) const {
   std::vector<double> intervals;
   for (const Inlet& in : inlets_) intervals.push_back(in.interval);
   w.vector(intervals);
+  if (any_clump()) w.value(next_body_id_);  // the scene (its fingerprint) says whether it is there
 }
 
 void Inlets::restore(BinaryReader& r) {
@@ -244,6 +311,10 @@ void Inlets::restore(BinaryReader& r) {
     if (!(intervals[j] > 0.0 && std::isfinite(intervals[j])))
       throw std::runtime_error("the section 'inlets' holds an interval that is not finite and > 0");
     if (!(inlets_[j].spec->interval > 0.0)) inlets_[j].interval = intervals[j];  // a given one is in the fingerprint
+  }
+  if (any_clump()) {
+    next_body_id_ = r.value<std::int64_t>();
+    if (next_body_id_ < 0) throw std::runtime_error("the section 'inlets' holds a negative next body id");
   }
 }
 

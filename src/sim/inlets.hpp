@@ -15,6 +15,11 @@
 // the state that decides the next insertion (the next k, the totals, the radius drawn ahead, the
 // next id) is checkpointed (section "inlets"), so a resumed run inserts bitwise the same
 // particles. Ids continue after the largest id the run has had (never one a removed particle had).
+//
+// An inlet with `clump` inserts whole rigid bodies the same way (inlet_bodies.hpp): the next
+// body's template is drawn from a stream of its own, seeded by (seed, j, n) for the inlet's n-th
+// body, so that it is known ahead without being checkpointed; a mass rate counts the bodies' mass,
+// a count rate the bodies.
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -53,7 +58,9 @@ class Inlets {
   // J, kinetic + rotational + potential energy the inserted particles brought in (the energy
   // balance takes it off, as it adds what removed particles take along).
   double inserted_energy() const { return inserted_energy_; }
-  // Ids: the next inserted particle's, and numbering after `id` (particles added by other means).
+  // Ids: the next inserted particle's (members included), and numbering after `id` (particles
+  // added by other means). An inlet with `clump` numbers its bodies after the largest body id the
+  // run has had.
   std::int64_t next_id() const { return next_id_; }
   void ids_after(std::int64_t id) { next_id_ = std::max(next_id_, id + 1); }
   // Global log: per inlet "<name>.inserted" (-), "<name>.inserted_mass" (kg), "<name>.shortfall"
@@ -61,15 +68,15 @@ class Inlets {
   static std::vector<std::string> log_columns(const Params& prm);
   void log_values(std::vector<double>& out) const;  // appends one value per column
   std::string summary() const;                      // one line for stderr, "" when nothing inserted
-  void save(BinaryWriter& w) const;                 // checkpoint section "inlets"
+  void save(BinaryWriter& w) const;                 // checkpoint section "inlets" (+ the next body id with clumps)
   void restore(BinaryReader& r);
 
   struct State {                 // of one inlet (checkpointed byte for byte)
     std::uint64_t next_k = 0;    // index of its next insertion time
-    std::uint64_t inserted = 0;  // particles inserted
+    std::uint64_t inserted = 0;  // particles (bodies with clump) inserted
     double inserted_mass = 0.0;  // kg
-    double shortfall = 0.0;      // kg or particles: due but not placed at the last insertion time
-    double next_radius = 0.0;    // m, radius of the next particle (0: not drawn yet)
+    double shortfall = 0.0;      // kg or particles (bodies): due but not placed at the last insertion time
+    double next_radius = 0.0;    // m, radius of the next particle (0: not drawn yet; 0 with clump)
   };
   const std::vector<State>& states() const { return state_; }
 
@@ -84,14 +91,17 @@ class Inlets {
     Vec3 lo, hi;      // m, world bounding box of the volume
   };
   bool due(std::size_t j, double t) const;
-  // Inserts inlet j's particles due at its insertion time k into `fresh`.
+  // Inserts inlet j's particles (bodies with `clump`) due at its insertion time k into `fresh`.
   void insert_due(std::size_t j, std::uint64_t k, const Particles& p, const Barriers& b, Particles& fresh);
+  void insert_due_bodies(std::size_t j, std::uint64_t k, const Particles& p, const Barriers& b, Particles& fresh);
+  bool any_clump() const;  // some inlet inserts bodies
 
   const Model& model_;
   std::vector<Inlet> inlets_;
-  std::vector<State> state_;      // [inlets]
-  std::int64_t next_id_ = 0;      // id of the next inserted particle
-  double inserted_energy_ = 0.0;  // J
+  std::vector<State> state_;       // [inlets]
+  std::int64_t next_id_ = 0;       // id of the next inserted particle
+  std::int64_t next_body_id_ = 0;  // id of the next inserted body
+  double inserted_energy_ = 0.0;   // J
 };
 
 }  // namespace mpdem

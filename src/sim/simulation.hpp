@@ -112,8 +112,9 @@ class Simulation {
   Particles& particles() { return scene_.particles; }
   Barriers& barriers() { return scene_.barriers; }
   Interactions& interactions() { return *interactions_; }
-  const Inlets* inlets() const { return inlets_.get(); }  // null without [[inlet]]
-  const Sinks* sinks() const { return sinks_.get(); }     // null without [[sink]]
+  const TrapezoidalIntegrator& trapezoidal() const { return trapezoidal_; }  // its predictor's history
+  const Inlets* inlets() const { return inlets_.get(); }                     // null without [[inlet]]
+  const Sinks* sinks() const { return sinks_.get(); }                        // null without [[sink]]
   const Model& model() const { return scene_.model; }
   Model& model() { return scene_.model; }  // a material edited between steps acts at the next step
 
@@ -136,8 +137,9 @@ class Simulation {
   void insert_from_inlets();                    // [[inlet]]: the particles due, between steps
   // Removes the particles whose keep[i] is 0: removed.csv, their energy into the balance, the
   // others' contact history kept, the rates re-evaluated; exits: domain exits (counted, one
-  // progress line each), else a sink's. Collective on several ranks.
-  void remove_marked(const std::vector<char>& keep, bool exits);
+  // progress line each), else a sink's. A clump body goes whole (all its members when one is
+  // marked; its energy once). Collective on several ranks.
+  void remove_marked(std::vector<char> keep, bool exits);
   ParticleTotals totals() const;                      // the sums over every rank's particles for the global log
   void log_row(GlobalLogRow row);                     // a global log row, with the inlets' and sinks' columns
   std::string open_system_summary() const;            // the inlets' and sinks' line for stderr ("" = none)
@@ -215,9 +217,9 @@ class Simulation {
   std::uint64_t balance_rows_ = 0;  // load-balance measurements written to balance.csv
   RunRecord record_;                // for the end-of-run summary
   bool initialized_ = false;
-  bool started_ = false;                     // start() ran: outputs open, first snapshots written
-  StepReport last_;                          // the report of the last step()
-  std::uint64_t first_step_ = 0;             // steps_ when start() ran
+  bool started_ = false;          // start() ran: outputs open, first snapshots written
+  StepReport last_;               // the report of the last step()
+  std::uint64_t first_step_ = 0;  // steps_ when start() ran
   bool resumed_ = false;                     // state loaded from a checkpoint
   std::vector<char> resume_output_state_;    // OutputManager series from the checkpoint
   std::vector<char> resume_analysis_state_;  // AnalysisOutputs series from the checkpoint (empty: none)

@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 #include <type_traits>
 #include <fstream>
@@ -103,11 +105,18 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
       o.vector(std::decay_t<decltype(a)>(a.begin(), a.begin() + static_cast<std::ptrdiff_t>(owned)));
     });
   });
-  // The clumps' bodies, one section per array (a scene with clumps runs on one rank).
-  if (p.has_bodies())
+  // The clumps' bodies, one section per array (several ranks: gathered, in id order); in every
+  // scene with templates, so that a run whose sinks removed its bodies, or whose inlets have not
+  // yet added any, resumes as well.
+  const bool clumps = !scene_.model.clumps.empty();
+  if (clumps)
     p.bodies.for_each_array([&](const char* name, auto& a) {
       w.section(std::string("bodies/") + name, [&](BinaryWriter& o) { o.vector(a); });
     });
+  // The bodies' rate history by body id, in the bodies' order (collective).
+  const std::vector<RateRecord> body_records =
+      comm_ && clumps ? gather_values<RateRecord>(*comm_, trapezoidal_.bodies().records(scene_.particles.bodies), 0)
+                      : std::vector<RateRecord>{};
   if (comm_) interactions_->save_gathered(w, scene_.particles, all);
   else interactions_->save(w, p);
   // The trapezoidal predictor's previous rates, by id (any rank count resumes them).
@@ -125,7 +134,16 @@ void Simulation::write_checkpoint(const std::filesystem::path& file) {
     o.value(rates.dt());
     o.vector(sorted);
   });
-  if (p.has_bodies()) w.section("body_rate_history", [&](BinaryWriter& o) { trapezoidal_.bodies().save(o); });
+  if (clumps)
+    w.section("body_rate_history", [&](BinaryWriter& o) {
+      if (!comm_) return trapezoidal_.bodies().save(o);
+      std::vector<RateRecord> sorted = body_records;
+      std::sort(sorted.begin(), sorted.end(), [](const RateRecord& a, const RateRecord& b) { return a.id < b.id; });
+      // The particles' step length: rank 0 may hold no body (and so no length of its own); a
+      // history that lacks a body is none.
+      const bool whole = sorted.size() == p.bodies.size();
+      TrapezoidalBodies::save(o, whole ? rates.dt() : 0.0, whole ? sorted : std::vector<RateRecord>{});
+    });
   // What decides the next insertions and the sinks' totals ([[inlet]], [[sink]]).
   if (inlets_) w.section("inlets", [&](BinaryWriter& o) { inlets_->save(o); });
   if (sinks_) w.section("sinks", [&](BinaryWriter& o) { sinks_->save(o); });
@@ -184,15 +202,28 @@ void Simulation::resume_from(const std::filesystem::path& file) {
     p.for_each_array([&](const char*, auto& a) { sizes_ok = sizes_ok && a.size() == n; });
     if (!sizes_ok) throw std::runtime_error("particle arrays of different lengths");
     check_restored(p, scene_.model.materials.size());
-    if (p.has_bodies()) {
-      const std::size_t nb = p.bodies.size();
+    const bool clumps = !scene_.model.clumps.empty();
+    if (clumps) {
+      // As many bodies as the checkpoint holds (sinks remove bodies, inlets add them), each with its members.
+      std::size_t nb = 0;
       p.bodies.for_each_array([&](const char* array, auto& a) {
         read(std::string("bodies/") + array,
              [&](BinaryReader& s) { a = s.template vector<typename std::decay_t<decltype(a)>::value_type>(); });
-        if (a.size() != nb) throw std::runtime_error("the checkpoint's bodies differ from the scene's in number");
+        if (std::string_view(array) == "id") nb = a.size();
+        if (a.size() != nb) throw std::runtime_error("the checkpoint's body arrays differ in length");
       });
-      p.bodies.stale = true;
+      for (std::size_t b = 0; b < nb; ++b)
+        if (p.bodies.clump[b] < 0 || static_cast<std::size_t>(p.bodies.clump[b]) >= scene_.model.clumps.size() ||
+            p.bodies.material[b] < 0 || static_cast<std::size_t>(p.bodies.material[b]) >= scene_.model.materials.size())
+          throw std::runtime_error("a body's template or material index is out of range");
+      p.bodies.resize(nb);  // marks the member index and the id lookup stale
+      try {
+        p.bodies.index_members(p);
+      } catch (const std::logic_error& e) {
+        throw std::runtime_error(std::string("the checkpoint's bodies and member spheres do not match: ") + e.what());
+      }
     }
+    const std::vector<std::int64_t> body_ids = p.bodies.id;  // the checkpoint's (a rank keeps its own)
     if (!(std::isfinite(time_) && time_ >= 0.0 && std::isfinite(dt_) && dt_ > 0.0))
       throw std::runtime_error(
           fmt::format("the run section's time {} s or step {} s is not finite and >= 0", time_, dt_));
@@ -202,8 +233,8 @@ void Simulation::resume_from(const std::filesystem::path& file) {
       const auto dt = s.value<double>();
       trapezoidal_.rate_history().set_records(s.vector<RateRecord>(), dt);
     });
-    if (p.has_bodies())
-      read("body_rate_history", [&](BinaryReader& s) { trapezoidal_.bodies().restore(s, p.bodies.size()); });
+    if (clumps)
+      read("body_rate_history", [&](BinaryReader& s) { trapezoidal_.bodies().restore(s, body_ids, p.bodies); });
     if (inlets_) read("inlets", [&](BinaryReader& s) { inlets_->restore(s); });
     if (sinks_) read("sinks", [&](BinaryReader& s) { sinks_->restore(s); });
     // The output series are restored once run() has opened the outputs.

@@ -20,6 +20,25 @@
 
 namespace mpdem {
 
+namespace {
+
+// Marks every member of a body with a member marked in keep [N] (1 = stays) and returns which
+// bodies stay [B] (empty without bodies).
+std::vector<char> whole_bodies(Particles& p, std::vector<char>& keep) {
+  Bodies& B = p.bodies;
+  if (B.empty()) return {};
+  B.index_members(p);
+  std::vector<char> stays(B.size(), 1);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (!keep[i] && p.body[i] != kNoBody) stays[B.owner[i]] = 0;
+  for (std::size_t b = 0; b < B.size(); ++b)
+    if (!stays[b])
+      for (std::uint32_t k = B.first[b]; k < B.first[b + 1]; ++k) keep[B.index[k]] = 0;
+  return stays;
+}
+
+}  // namespace
+
 void Simulation::remove_outside() {
   Particles& p = scene_.particles;
   const DomainParams& d = scene_.model.params.domain;
@@ -51,8 +70,12 @@ void Simulation::remove_in_sinks() {
   if (sinks_->mark(scene_.particles, keep, comm_) > 0) remove_marked(keep, false);  // stderr: the summary line
 }
 
-void Simulation::remove_marked(const std::vector<char>& keep, bool exits) {
+void Simulation::remove_marked(std::vector<char> keep, bool exits) {
   Particles& p = scene_.particles;
+  const FieldParams& fields = scene_.model.params.fields;
+  const DomainParams& domain = scene_.model.params.domain;
+  // A clump body is removed whole: with any member marked (one that left the domain), all of them.
+  std::vector<char> keep_body = whole_bodies(p, keep);
   // Every rank's removals, named on rank 0 (removed.csv, the progress line).
   struct Removed {
     std::int64_t id;
@@ -62,11 +85,20 @@ void Simulation::remove_marked(const std::vector<char>& keep, bool exits) {
   double energy = 0.0;  // J, what the removed particles take along
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (keep[i]) continue;
-    // The energy it takes along stays in the balance, which would otherwise drop (or rise) by it.
+    // The energy it takes along stays in the balance, which would otherwise drop (or rise) by it
+    // (a member's is its body's, below).
     std::array<double, kScanSums> e{};
-    scan_range(p, i, i + 1, scene_.model.params.fields, scene_.model.params.domain, e);  // potentials unwrapped
+    scan_range(p, i, i + 1, fields, domain, e);  // potentials unwrapped
     energy += e[0] + e[1] + e[2] + e[3];
     gone.push_back({p.id[i], p.x[i]});
+  }
+  bool fixed_body = false;  // a removed body was held (its holding power changes)
+  for (std::size_t b = 0; b < keep_body.size(); ++b) {
+    if (keep_body[b]) continue;
+    std::array<double, kScanSums> e{};
+    scan_body(p.bodies, b, fields, domain, e);
+    energy += e[0] + e[1] + e[2] + e[3];
+    fixed_body = fixed_body || p.bodies.fixed[b] != 0;
   }
   std::uint64_t count = gone.size();
   if (comm_) {
@@ -85,8 +117,12 @@ void Simulation::remove_marked(const std::vector<char>& keep, bool exits) {
   if (exits) removed_ += count;
   // The removed particles' forces on the others are gone: re-evaluate the rates (no increment),
   // unless the removed particles acted on nobody (a particle that fell out of the domain alone).
-  const bool acted = interactions_->removal_acts_on_others(p, keep);
+  const bool acted = interactions_->removal_acts_on_others(p, keep) || fixed_body;
   interactions_->remove_particles(p, scene_.barriers, keep);
+  if (!keep_body.empty()) {
+    p.bodies.compact(keep_body);
+    trapezoidal_.bodies().compact(keep_body);
+  }
   if (!acted) return;
   interactions_->evaluate(p, scene_.barriers, EvalRequest{time_, 0.0, 1.0, true});
   ++evaluations_;

@@ -21,22 +21,37 @@ Sinks::Sinks(const Model& model) : model_(model) {
   state_.resize(regions_.size());
 }
 
-std::size_t Sinks::mark(const Particles& p, std::vector<char>& keep, const Communicator* comm) {
+std::size_t Sinks::mark(Particles& p, std::vector<char>& keep, const Communicator* comm) {
   std::vector<double> taken(2 * regions_.size(), 0.0);  // per sink: particles (-), mass (kg)
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    if (!keep[i]) continue;
-    const Vec3& x = p.x[i];
+  // The first sink holding x, or -1.
+  const auto sink_of = [&](const Vec3& x) -> std::ptrdiff_t {
     for (std::size_t s = 0; s < regions_.size(); ++s) {
       const Region& g = regions_[s];
       // The bounding box first: most particles are far from every sink.
       const Vec3 lo = g.lo(), hi = g.hi();
       if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y || x.z < lo.z || x.z > hi.z) continue;
-      if (!g.holds(x, 0.0)) continue;
-      keep[i] = 0;
-      taken[2 * s] += 1.0;
-      taken[2 * s + 1] += p.mass[i];
-      break;
+      if (g.holds(x, 0.0)) return static_cast<std::ptrdiff_t>(s);
     }
+    return -1;
+  };
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!keep[i] || p.body[i] != kNoBody) continue;  // a clump member goes with its body, below
+    const std::ptrdiff_t s = sink_of(p.x[i]);
+    if (s < 0) continue;
+    keep[i] = 0;
+    taken[2 * static_cast<std::size_t>(s)] += 1.0;
+    taken[2 * static_cast<std::size_t>(s) + 1] += p.mass[i];
+  }
+  // A clump body goes whole when its centre of mass is in a sink: all its members (counted as
+  // particles), its mass once (each member's mass is the body's).
+  Bodies& B = p.bodies;
+  if (!B.empty()) B.index_members(p);
+  for (std::size_t b = 0; b < B.size(); ++b) {
+    const std::ptrdiff_t s = sink_of(B.x[b]);
+    if (s < 0) continue;
+    for (std::uint32_t k = B.first[b]; k < B.first[b + 1]; ++k) keep[B.index[k]] = 0;
+    taken[2 * static_cast<std::size_t>(s)] += static_cast<double>(B.first[b + 1] - B.first[b]);
+    taken[2 * static_cast<std::size_t>(s) + 1] += B.mass[b];
   }
   if (comm) comm->sum(taken);  // every rank holds the totals of all
   std::size_t marked = 0;

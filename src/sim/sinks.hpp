@@ -1,7 +1,8 @@
 #pragma once
 // Sinks: the regions of a scene's [[sink]] entries (docs/scene.md "[[sink]]") where particles are
 // taken out of the run. After every step each particle whose centre lies in a sink (closed box
-// or cylinder; the first sink in scene order that holds it) is marked for removal; the caller
+// or cylinder; the first sink in scene order that holds it; a clump body whole, by its centre of
+// mass) is marked for removal; the caller
 // removes them all at once (Simulation: removed.csv, the energy balance, contact history kept
 // for the others). Each sink counts what it removed, and its mass flow rate over the last
 // logging interval. Its totals are checkpointed (section "sinks").
@@ -20,10 +21,11 @@ class Sinks {
  public:
   explicit Sinks(const Model& model);
 
-  // Sets keep[i] = 0 (keep: [N], 1 = stays) for every particle with its centre in a sink, counts it
-  // to that sink, and returns how many were marked. On several ranks (comm; collective) the counts
-  // and the returned number are those of all ranks, so every rank holds the same totals.
-  std::size_t mark(const Particles& p, std::vector<char>& keep, const Communicator* comm = nullptr);
+  // Sets keep[i] = 0 (keep: [N], 1 = stays) for every free sphere with its centre in a sink and
+  // every member of a clump body with its centre of mass in one, counts them to that sink (a
+  // body's mass once), and returns how many were marked. On several ranks (comm; collective) the
+  // counts and the returned number are those of all ranks, so every rank holds the same totals.
+  std::size_t mark(Particles& p, std::vector<char>& keep, const Communicator* comm = nullptr);
 
   // Global log: per sink "<name>.removed" (-), "<name>.removed_mass" (kg), "<name>.mass_rate"
   // (kg/s, removed mass since the previous row / time since it; 0 in the first row).

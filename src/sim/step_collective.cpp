@@ -21,7 +21,7 @@ struct Message {
   std::uint64_t particles;
   OverlapReport deepest;
   std::int64_t stop;
-  std::uint64_t due[3];  // vtu, csv, vtu_index
+  std::uint64_t due[4];  // vtu, csv, vtu_index, body_csv
 };
 }  // namespace
 
@@ -43,6 +43,7 @@ StepCollective combine_over_ranks(const Communicator& comm, const StepCollective
   m.due[0] = mine.vtu ? 1 : 0;
   m.due[1] = mine.csv ? 1 : 0;
   m.due[2] = mine.vtu_index;
+  m.due[3] = mine.body_csv ? 1 : 0;
 
   // The message, then the loads.
   const std::size_t n_loads = mine.loads.size(), each = sizeof m + n_loads * sizeof(double);
@@ -84,6 +85,7 @@ StepCollective combine_over_ranks(const Communicator& comm, const StepCollective
   out.vtu = t.due[0] != 0;
   out.csv = t.due[1] != 0;
   out.vtu_index = t.due[2];
+  out.body_csv = t.due[3] != 0;
   out.loads = std::move(loads);
   return out;
 }

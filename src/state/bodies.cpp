@@ -11,6 +11,30 @@ namespace mpdem {
 
 void Bodies::resize(std::size_t n) {
   for_each_array([n](const char*, auto& a) { a.resize(n); });
+  sorted_ids_.clear();  // find() must not use the old rows
+  stale = true;
+}
+
+void Bodies::compact(const std::vector<char>& keep) {
+  for_each_array([&keep](const char*, auto& a) {
+    std::size_t k = 0;
+    for (std::size_t b = 0; b < a.size(); ++b)
+      if (keep[b]) a[k++] = a[b];
+    a.resize(k);
+  });
+  sorted_ids_.clear();  // find() must not use the old rows
+  stale = true;
+}
+
+void Bodies::sort_by_id() {
+  std::vector<std::uint32_t> order(size());
+  std::iota(order.begin(), order.end(), std::uint32_t{0});
+  std::sort(order.begin(), order.end(), [this](std::uint32_t a, std::uint32_t b) { return id[a] < id[b]; });
+  for_each_array([&order](const char*, auto& a) {
+    auto old = a;
+    for (std::size_t k = 0; k < order.size(); ++k) a[k] = old[order[k]];
+  });
+  sorted_ids_.clear();
   stale = true;
 }
 

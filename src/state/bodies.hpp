@@ -10,6 +10,7 @@
 //
 // Bodies are owned, never ghosts; they are not reordered: the member index below maps each body's
 // members to the particles' current indices and is rebuilt when the particles change order.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -39,6 +40,9 @@ struct Bodies {
   std::vector<Vec3> w;    // rad/s, angular velocity (world frame)
   std::vector<Quat> q;    // orientation: principal (body) frame -> world, unit quaternion
   std::vector<double> T;  // K, temperature (one per body)
+  // -, periodic image counter per axis: the unwrapped centre is x + image * period; the members'
+  // counters are their body's (parallel/periodic_images.hpp wraps a body and its members together)
+  std::vector<std::array<std::int32_t, 3>> image;
   // --- accumulators, set by every interaction evaluation [B] ---
   std::vector<Vec3> force;   // N, sum of the members' forces and the body forces
   std::vector<Vec3> torque;  // N m, about the centre of mass
@@ -78,13 +82,19 @@ struct Bodies {
     f("w", w);
     f("q", q);
     f("T", T);
+    f("image", image);
     f("force", force);
     f("torque", torque);
     f("heat", heat);
   }
+  // Reorders the bodies by ascending id (outputs that must not depend on the rank count).
+  void sort_by_id();
   // Rebuilds first/index/held from the owned particles (Particles::body, Particles::member) when
   // stale. Throws std::logic_error when a body's members are not all present exactly once.
   void index_members(const Particles& p);
+  // Keeps the bodies whose keep[b] is true, in order (a rank's own bodies, docs/parallel.md; those
+  // a sink left, their members removed by the caller); the member index is then stale.
+  void compact(const std::vector<char>& keep);
   // Index of the body with id `body_id`, or -1.
   std::ptrdiff_t find(std::int64_t body_id) const;
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <sstream>
 #include <string>
@@ -190,4 +191,66 @@ TEST(GeneratedBodies, PlacementKeyIsCheckedAndOnlyWithClump) {
       "placement = \"members\" }\n";
   expect_contains(error_of([&] { load_scene(d.write("scene.toml", spheres)); }),
                   {"'particles.generate.placement'", "applies only with clump"});
+}
+
+namespace {
+
+// The tetrahedron and a dumbbell (two touching members of radius kR) drawn with `clump` (a table
+// of fractions) in the box [0, 0.1]^3.
+Scene load_mix(const std::string& clump, const std::string& generate) {
+  std::string text = scene(generate);
+  text.replace(text.find("clump = \"tetra\""), 15, "clump = " + clump);
+  text.replace(text.find("max = [0.06, 0.06, 0.06]"), 24, "max = [0.1, 0.1, 0.1]");
+  text += "[[clump]]\nname = \"dumbbell\"\nmembers = [[0, 0, -0.001, 0.001], [0, 0, 0.001, 0.001]]\n";
+  TempDir d("mpdem_gen_mix");
+  return load_scene(d.write("scene.toml", text));
+}
+
+// Members of different bodies apart (brute force over the cells of a 4 mm grid would do; N is small
+// enough for pairs): distance >= r_i + r_j up to round-off.
+double smallest_gap(const Particles& p) {
+  double worst = INFINITY;  // m
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j)
+      if (p.body[i] != p.body[j]) worst = std::min(worst, norm(p.x[i] - p.x[j]) - p.radius[i] - p.radius[j]);
+  return worst;
+}
+
+}  // namespace
+
+// Each body draws its template with the table's number fractions: the count of tetrahedra among
+// N bodies is binomial (N, 0.7), so it lies within 3 standard deviations sqrt(N 0.7 0.3) of 0.7 N
+// (a 0.27 % chance to fail for a correct draw; the seed is fixed, so the test is deterministic).
+TEST(GeneratedBodies, MixFractionsAreBinomial) {
+  constexpr std::size_t kN = 2000;
+  for (const char* placement : {"bounding", "members"}) {
+    SCOPED_TRACE(placement);
+    const Scene s = load_mix("{ tetra = 0.7, dumbbell = 0.3 }",
+                             "count = 2000, seed = 21, placement = \"" + std::string(placement) + "\"");
+    const Bodies& B = s.particles.bodies;
+    ASSERT_EQ(B.size(), kN);
+    std::size_t tetra = 0, members = 0;
+    for (std::size_t b = 0; b < kN; ++b) {
+      tetra += B.clump[b] == 0 ? 1 : 0;
+      members += B.clump[b] == 0 ? 4 : 2;
+    }
+    EXPECT_EQ(s.particles.size(), members);
+    const double sigma = std::sqrt(kN * 0.7 * 0.3);
+    EXPECT_LT(std::abs(static_cast<double>(tetra) - 0.7 * kN), 3.0 * sigma) << tetra << " tetrahedra";
+    std::printf("%s: %zu tetrahedra of %zu bodies (0.7 N = %.0f, sigma %.1f)\n", placement, tetra, kN, 0.7 * kN, sigma);
+    EXPECT_GE(smallest_gap(s.particles), -kRoundOff);
+  }
+  // The draw comes from the seed: the same seed the same templates, another seed others.
+  const Scene a = load_mix("{ tetra = 0.7, dumbbell = 0.3 }", "count = 100, seed = 2");
+  const Scene b = load_mix("{ tetra = 0.7, dumbbell = 0.3 }", "count = 100, seed = 2");
+  const Scene c = load_mix("{ tetra = 0.7, dumbbell = 0.3 }", "count = 100, seed = 3");
+  EXPECT_EQ(a.particles.bodies.clump, b.particles.bodies.clump);
+  EXPECT_NE(a.particles.bodies.clump, c.particles.bodies.clump);
+}
+
+// solid_fraction with a mix: the count whose mean volume (over the fractions) is closest to the target.
+TEST(GeneratedBodies, SolidFractionOfAMixIsOfTheMeanBodyVolume) {
+  const Scene s = load_mix("{ dumbbell = 0.25, tetra = 0.75 }", "solid_fraction = 0.01, seed = 8");
+  const double mean = 0.75 * s.model.clumps[0].shape.volume + 0.25 * s.model.clumps[1].shape.volume;  // m^3
+  EXPECT_EQ(s.particles.bodies.size(), static_cast<std::size_t>(std::llround(0.01 * 1e-3 / mean)));
 }

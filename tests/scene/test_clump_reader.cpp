@@ -14,12 +14,14 @@
 
 #include "model/scene.hpp"
 #include "scene/scene_reader.hpp"
+#include "support/clump_scenes.hpp"
 #include "support/temp_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace mpdem;
 using mpdem::test::error_of;
 using mpdem::test::expect_contains;
+using mpdem::test::member_of;
 using mpdem::test::TempDir;
 
 namespace {
@@ -58,14 +60,6 @@ std::string load_error(const TempDir& d, const std::string& text,
 double dumbbell_mass() { return 2.0 * (4.0 / 3.0) * std::numbers::pi * kR * kR * kR * kRho; }
 
 void expect_rel(double got, double want, double tol) { EXPECT_NEAR(got, want, tol * std::abs(want)) << got; }
-
-// Index of the member k of the body with id `body`.
-std::size_t member_of(const Particles& p, std::int64_t body, std::uint32_t k) {
-  for (std::size_t i = 0; i < p.size(); ++i)
-    if (p.body[i] == body && p.member[i] == k) return i;
-  ADD_FAILURE() << "no member " << k << " of body " << body;
-  return 0;
-}
 
 }  // namespace
 
@@ -137,6 +131,22 @@ TEST(ClumpReader, MemberIdsFollowTheLargestFreeSphereIdInBodyThenMemberOrder) {
   EXPECT_EQ(p.id[member_of(p, 9, 1)], 19);
   EXPECT_EQ(p.id[member_of(p, 4, 0)], 20);
   EXPECT_EQ(p.id[member_of(p, 4, 1)], 21);
+}
+
+// A sphere file after a clump entry may use any id, 0 included: the members read before it have
+// no id yet (they are numbered after all free spheres at the end).
+TEST(ClumpReader, SphereFileAfterClumpEntryKeepsItsIds) {
+  TempDir d("mpdem_clump");
+  d.write("spheres.csv", "id,x,y,z,radius\n0,0.1,0,0,0.001\n1,0.2,0,0,0.001\n");
+  const Scene s = load(d, scene_text(kDumbbell, kBodies + "[[particles]]\nfile = \"spheres.csv\"\n"),
+                       "id,x,y,z\n5,0,0,0.01\n");
+  const Particles& p = s.particles;
+  EXPECT_EQ(p.id[member_of(p, 5, 0)], 2);
+  EXPECT_EQ(p.id[member_of(p, 5, 1)], 3);
+  std::vector<std::int64_t> free_ids;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.body[i] == kNoBody) free_ids.push_back(p.id[i]);
+  EXPECT_EQ(free_ids, (std::vector<std::int64_t>{0, 1}));
 }
 
 TEST(ClumpReader, FixedEntryFixesItsBodiesAndCsvColumnsApply) {
@@ -374,21 +384,6 @@ TEST(ClumpReader, BadParticlesEntriesNameLineAndKey) {
        "",
        "scene.toml:13: 'particles.clump'",
        {"expected a string"}},
-      {"periodic",
-       entry,
-       "[domain]\nmin = [-1, -1, -1]\nmax = [1, 1, 1]\nperiodic = [\"x\"]\n",
-       "scene.toml:11: 'particles.clump'",
-       {"periodic boundaries", "not run with", "yet"}},
-      {"inlet",
-       entry,
-       "[[inlet]]\nregion = \"box\"\nmin = [0, 0, 0.05]\nmax = [0.01, 0.01, 0.06]\ncount_rate = 10\nradius = 0.001\n",
-       "scene.toml:11: 'particles.clump'",
-       {"[[inlet]] entries"}},
-      {"sink",
-       entry,
-       "[[sink]]\nregion = \"box\"\nmin = [0, 0, -1]\nmax = [1, 1, 0]\n",
-       "scene.toml:11: 'particles.clump'",
-       {"[[sink]] entries"}},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.what);
@@ -416,4 +411,141 @@ TEST(ClumpReader, UnusableBodyMassIsNamedAtTheBodyCsv) {
     expect_contains(
         msg, {(d.path / "bodies.csv").string() + ":1: ", "clump 'dumbbell' of material 'glass'", cases[k].second});
   }
+}
+
+namespace {
+
+// Lines 11-13: a generate entry whose `clump` (line 13) is `clump`.
+std::string generated(const std::string& clump) {
+  return "[[particles]]\ngenerate = { region = \"box\", min = [0, 0, 0], max = [0.1, 0.1, 0.1], count = 3 }\n"
+         "clump = " +
+         clump + "\n";
+}
+
+// Lines 14-19: an inlet box with count_rate, then `rest` from line 20.
+std::string inlet(const std::string& rest) {
+  return "[[inlet]]\nregion = \"box\"\nmin = [0, 0, 0.05]\nmax = [0.01, 0.01, 0.06]\ncount_rate = 10\n"
+         "velocity = [0, 0, -0.5]\n" +
+         rest;
+}
+
+const std::string kStick = "[[clump]]\nname = \"stick\"\nmembers = [[0, 0, 0, 0.0005], [0, 0, 0.001, 0.0005]]\n";
+
+}  // namespace
+
+// A table of templates with number fractions: for generate and inlets, in the order written.
+TEST(ClumpReader, FractionTableGivesTheMix) {
+  TempDir d("mpdem_clump_mix");
+  const Scene s = load(d, scene_text(kDumbbell, generated("{ stick = 0.25, dumbbell = 0.75 }"),
+                                     kStick + inlet("clump = { stick = 0.4, dumbbell = 0.6 }\n")));
+  const ClumpMix& g = s.particle_sources.front().clump;
+  ASSERT_EQ(g.clumps.size(), 2u);
+  EXPECT_EQ(g.clumps[0], 1);  // stick: written first
+  EXPECT_EQ(g.fractions[0], 0.25);
+  EXPECT_EQ(g.clumps[1], 0);
+  EXPECT_EQ(s.particles.bodies.size(), 3u);
+  const InletSpec& in = s.model.params.inlets.front();
+  ASSERT_EQ(in.clump.clumps.size(), 2u);
+  EXPECT_EQ(in.clump.fractions[1], 0.6);
+  // The inlet's radii are its members' (the estimates that go by radius).
+  EXPECT_EQ(in.radius.smallest(), 0.0005);
+  EXPECT_EQ(in.radius.largest(), 0.001);
+  // A string keeps working, and a table of one template is that template.
+  const Scene one = load(d, scene_text(kDumbbell, generated("{ dumbbell = 1.0 }"), inlet("clump = \"dumbbell\"\n")));
+  EXPECT_EQ(one.particle_sources.front().clump.clumps, std::vector<int>{0});
+  EXPECT_EQ(one.model.params.inlets.front().clump.fractions, std::vector<double>{1.0});
+}
+
+TEST(ClumpReader, BadFractionTablesNameLineAndKey) {
+  struct Case {
+    const char* what;
+    std::string particles;  // lines 11-13
+    std::string extra;      // from line 14
+    std::string where;
+    std::vector<std::string> expect;
+  };
+  const std::vector<Case> cases = {
+      {"negative",
+       generated("{ dumbbell = -1.0 }"),
+       "",
+       "scene.toml:13: 'particles.clump.dumbbell'",
+       {"expected a number > 0, got -1"}},
+      {"zero",
+       generated("{ dumbbell = 0 }"),
+       "",
+       "scene.toml:13: 'particles.clump.dumbbell'",
+       {"expected a number > 0, got 0"}},
+      {"sum below 1",
+       generated("{ dumbbell = 0.5 }"),
+       "",
+       "scene.toml:13: 'particles.clump'",
+       {"sum to 1 (within 1e-9)", "0.5"}},
+      {"sum above 1",
+       generated("{ dumbbell = 0.5, stick = 0.500001 }"),
+       kStick,
+       "scene.toml:13: 'particles.clump'",
+       {"sum to 1 (within 1e-9)", "1.000001"}},
+      {"unknown name",
+       generated("{ dumbell = 1.0 }"),
+       "",
+       "scene.toml:13: 'particles.clump.dumbell'",
+       {"unknown clump 'dumbell'", "(known: dumbbell)"}},
+      {"not a number",
+       generated("{ dumbbell = \"all\" }"),
+       "",
+       "scene.toml:13: 'particles.clump.dumbbell'",
+       {"expected a number > 0, got a string"}},
+      {"empty table", generated("{}"), "", "scene.toml:13: 'particles.clump'", {"at least one clump name"}},
+      {"neither string nor table",
+       generated("[\"dumbbell\"]"),
+       "",
+       "scene.toml:13: 'particles.clump'",
+       {"expected a string (a clump name) or a table"}},
+      {"table with a body CSV",
+       "[[particles]]\nfile = \"bodies.csv\"\nclump = { dumbbell = 1.0 }\n",
+       "",
+       "scene.toml:13: 'particles.clump'",
+       {"a body CSV takes one template"}},
+      {"inlet: bad fraction",
+       kBodies,
+       inlet("clump = { dumbbell = 1.5 }\n"),
+       "scene.toml:20: 'inlet.clump'",
+       {"sum to 1"}},
+      {"inlet: unknown name",
+       kBodies,
+       inlet("clump = \"dumbell\"\n"),
+       "scene.toml:20: 'inlet.clump'",
+       {"unknown clump 'dumbell'", "(known: dumbbell)"}},
+      {"inlet: radius with clump",
+       kBodies,
+       inlet("clump = \"dumbbell\"\nradius = 0.001\n"),
+       "scene.toml:21: 'inlet.radius'",
+       {"does not apply with clump"}},
+      {"inlet: radius table with clump",
+       kBodies,
+       inlet("clump = \"dumbbell\"\nradius = { distribution = \"uniform\", min = 0.001, max = 0.002 }\n"),
+       "scene.toml:21: 'inlet.radius'",
+       {"does not apply with clump"}},
+      {"inlet: body larger than the region",
+       kBodies,
+       "[[inlet]]\nregion = \"box\"\nmin = [0, 0, 0.05]\nmax = [0.01, 0.01, 0.053]\ncount_rate = 10\nclump = "
+       "\"dumbbell\"\n",
+       "scene.toml:19: 'inlet.clump'",
+       {"bounding sphere (radius 0.002 m", "does not fit"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    TempDir d("mpdem_clump_mix_bad");
+    const std::string msg = load_error(d, scene_text(kDumbbell, c.particles, c.extra));
+    expect_contains(msg, {c.where});
+    expect_contains(msg, c.expect);
+  }
+}
+
+// Clump bodies in the scene and an inlet of spheres run together (the refusal is lifted).
+TEST(ClumpReader, ClumpEntryWithAnInletOfSpheresLoads) {
+  TempDir d("mpdem_clump_inlet_spheres");
+  const Scene s = load(d, scene_text(kDumbbell, kBodies, inlet("radius = 0.001\n")));
+  EXPECT_EQ(s.particles.bodies.size(), 1u);
+  EXPECT_TRUE(s.model.params.inlets.front().clump.empty());
 }

@@ -14,36 +14,15 @@
 
 #include "sim/simulation.hpp"
 #include "sim/sinks.hpp"
+#include "support/csv_rows.hpp"
 #include "support/scene_builder.hpp"
 #include "support/timed_barrier_scenes.hpp"
 #include "support/temp_dir.hpp"
 
 using namespace mpdem;
 
-namespace {
-
-std::vector<std::vector<double>> csv_rows(const std::filesystem::path& file, std::vector<std::string>& header) {
-  std::ifstream in(file);
-  std::string line, cell;
-  std::getline(in, line);
-  std::stringstream hs(line);
-  while (std::getline(hs, cell, ',')) header.push_back(cell);
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    std::stringstream ls(line);
-    rows.emplace_back();
-    while (std::getline(ls, cell, ',')) rows.back().push_back(std::stod(cell));
-  }
-  return rows;
-}
-
-std::size_t index_of(const std::vector<std::string>& header, const std::string& name) {
-  const auto it = std::find(header.begin(), header.end(), name);
-  EXPECT_NE(it, header.end()) << "no column " << name;
-  return static_cast<std::size_t>(it - header.begin());
-}
-
-}  // namespace
+using test::csv_rows;
+using test::index_of;
 
 TEST(Sinks, RemoveExactlyTheParticlesThatEnterThem) {
   test::TempDir dir("mpdem_sinks");

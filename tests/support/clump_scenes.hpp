@@ -1,6 +1,8 @@
 #pragma once
 // Clumps in test scenes: templates from member lists, bodies added as the scene reader adds them,
 // and a floor.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -32,6 +34,14 @@ inline void add_clump(Scene& s, std::int64_t id, int clump, const Vec3& x, const
   init.q = q;
   init.T = s.model.materials.front().temperature;
   add_body(s.model, 0, clump, init, s.particles);
+}
+
+// Index of the member k of the body with id `body` in p.
+inline std::size_t member_of(const Particles& p, std::int64_t body, std::uint32_t k) {
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.body[i] == body && p.member[i] == k) return i;
+  ADD_FAILURE() << "no member " << k << " of body " << body;
+  return 0;
 }
 
 // Gives the members their ids (after the free spheres'), as a loaded scene has them.

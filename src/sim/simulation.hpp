@@ -217,9 +217,9 @@ class Simulation {
   std::uint64_t balance_rows_ = 0;  // load-balance measurements written to balance.csv
   RunRecord record_;                // for the end-of-run summary
   bool initialized_ = false;
-  bool started_ = false;          // start() ran: outputs open, first snapshots written
-  StepReport last_;               // the report of the last step()
-  std::uint64_t first_step_ = 0;  // steps_ when start() ran
+  bool started_ = false;                     // start() ran: outputs open, first snapshots written
+  StepReport last_;                          // the report of the last step()
+  std::uint64_t first_step_ = 0;             // steps_ when start() ran
   bool resumed_ = false;                     // state loaded from a checkpoint
   std::vector<char> resume_output_state_;    // OutputManager series from the checkpoint
   std::vector<char> resume_analysis_state_;  // AnalysisOutputs series from the checkpoint (empty: none)

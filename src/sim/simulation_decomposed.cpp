@@ -28,9 +28,7 @@ namespace mpdem {
 void Simulation::decompose(const Communicator& comm) {
   Particles& p = scene_.particles;
   const DomainParams& d = scene_.model.params.domain;
-  // Not tested on several ranks yet: bodies across a periodic face, and inlets of bodies.
-  if (p.has_bodies() && d.bounded && d.any_periodic())
-    throw RunError("clumps with periodic boundaries do not run on several ranks yet: run on one rank");
+  // Not tested on several ranks yet: inlets of bodies.
   const auto& inlets = scene_.model.params.inlets;
   if (std::any_of(inlets.begin(), inlets.end(), [](const InletSpec& in) { return !in.clump.empty(); }))
     throw RunError("inlets of clumps do not run on several ranks yet: run on one rank");

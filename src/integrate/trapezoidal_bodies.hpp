@@ -42,6 +42,12 @@ class TrapezoidalBodies {
     r_prev_ = r0_;
     dt_prev_ = dt;
   }
+  // Drops the history (bodies were inserted: on every rank at once, so that no rank's predictor
+  // uses one where a single rank's would not).
+  void forget() {
+    a_prev_.clear();
+    r_prev_.clear();
+  }
   // Keeps the history of the bodies whose keep[b] is true (Bodies::compact, the bodies a sink removed).
   void compact(const std::vector<char>& keep);
   // The history, for checkpoints (section "body_rate_history": the step length, then the rates

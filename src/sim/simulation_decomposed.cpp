@@ -28,10 +28,6 @@ namespace mpdem {
 void Simulation::decompose(const Communicator& comm) {
   Particles& p = scene_.particles;
   const DomainParams& d = scene_.model.params.domain;
-  // Not tested on several ranks yet: inlets of bodies.
-  const auto& inlets = scene_.model.params.inlets;
-  if (std::any_of(inlets.begin(), inlets.end(), [](const InletSpec& in) { return !in.clump.empty(); }))
-    throw RunError("inlets of clumps do not run on several ranks yet: run on one rank");
   // The bricks tile the domain; without one, the particles' bounding box (the outer bricks reach
   // to infinity, so this only places the cuts). Every rank loaded the whole scene: the same box.
   Vec3 lo = d.min, hi = d.max;

@@ -134,6 +134,8 @@ void Simulation::insert_from_inlets() {
   // inlets, gathered), then keeps those of its brick.
   Particles fresh = inlets_->insert(time_, comm_ ? near_inlets() : scene_.particles, scene_.barriers);
   if (fresh.size() == 0) return;
+  // New bodies: the bodies' predictor history no longer covers them all (before a rank keeps its own).
+  if (fresh.has_bodies()) trapezoidal_.bodies().forget();
   if (comm_) keep_own(fresh);
   interactions_->add_particles(scene_.particles, scene_.barriers, std::move(fresh));
   // The new particles' forces (gravity, fields; no contact yet): re-evaluate the rates.

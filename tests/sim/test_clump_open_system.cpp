@@ -29,20 +29,14 @@ constexpr double kR = 1e-3;   // m, member radius
 constexpr double kL = 0.02;   // m, the periods along x and y
 constexpr int kSteps = 2500;  // dt = 2e-5 s: 0.05 s
 
+// fed_box_scene's contacts, material and gravity; its walls give way to a floor and the periodic
+// faces, its inlet to one of bodies.
 Scene open_periodic(Integrator integ) {
-  Scene s = make_scene(2e-5, kSteps * 2e-5);
+  Scene s = fed_box_scene(kSteps * 2e-5, 0.05);
+  s.barriers = Barriers{};
   Params& prm = s.model.params;
   prm.time.integrator = integ;
   prm.time.phi = 0.5;
-  prm.fields.gravity = {0.0, 0.0, -9.81};
-  prm.neighbor.skin = 2e-4;
-  prm.checks.max_overlap = 0.2;
-  ContactLawParams& c = prm.contact.particle_particle;
-  c.restitution = 0.5;
-  c.mu_static = 0.5;
-  c.mu_dynamic = 0.4;
-  prm.contact.particle_barrier = c;
-  set_material(s, 2500.0, 1e6, 0.3);
   DomainParams& d = prm.domain;
   d.bounded = true;
   d.min = {0.0, 0.0, -0.01};
@@ -56,7 +50,9 @@ Scene open_periodic(Integrator integ) {
   const double a = 0.7 * kR;
   const int tet = add_template(s, "tetra", {{{a, a, a}, kR}, {{a, -a, -a}, kR}, {{-a, a, -a}, kR}, {{-a, -a, a}, kR}});
   const int db = add_template(s, "dumbbell", {{{0, 0, -kR}, kR}, {{0, 0, kR}, 0.8 * kR}});
-  InletSpec in = box_inlet({0.003, 0.003, 0.008}, {0.017, 0.017, 0.018}, kR, 0.05);
+  InletSpec& in = prm.inlets.front();
+  in.volume.region.min = {0.003, 0.003, 0.008};
+  in.volume.region.max = {0.017, 0.017, 0.018};
   in.clump.clumps = {tet, db};
   in.clump.fractions = {0.6, 0.4};
   in.radius.law = RadiusLaw::Discrete;  // the members' radii, as the scene reader sets them
@@ -64,7 +60,6 @@ Scene open_periodic(Integrator integ) {
   in.radius.fractions = {1.0, 1.0};
   in.velocity = {0.4, 0.25, -0.4};  // across the periodic faces while falling
   in.seed = 5;
-  prm.inlets.push_back(in);
   SinkSpec sink;
   sink.name = "half";
   sink.region.min = {0.0, 0.0, -0.01};  // the floor's lower half in x, up to where a landed centre sits
@@ -135,21 +130,7 @@ TEST(ClumpOpenSystem, ResumeIsBitwise) {
     Simulation resumed(open_periodic(integ), RunOptions{{}, false, false});
     resumed.resume_from(dir.path / "ck.bin");
     run_steps(resumed, kTotal);
-    const Particles &p = whole.particles(), &q = resumed.particles();
-    ASSERT_EQ(p.size(), q.size());
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      ASSERT_EQ(p.id[i], q.id[i]);
-      EXPECT_EQ(p.x[i], q.x[i]);
-      EXPECT_EQ(p.v[i], q.v[i]);
-      EXPECT_EQ(p.w[i], q.w[i]);
-    }
-    ASSERT_EQ(p.bodies.size(), q.bodies.size());
-    for (std::size_t b = 0; b < p.bodies.size(); ++b) {
-      EXPECT_EQ(p.bodies.id[b], q.bodies.id[b]);
-      EXPECT_EQ(p.bodies.x[b], q.bodies.x[b]);
-      EXPECT_EQ(p.bodies.image[b], q.bodies.image[b]);
-      EXPECT_EQ(p.bodies.w[b], q.bodies.w[b]);
-    }
+    expect_same_run(whole.particles(), resumed.particles());
     EXPECT_EQ(whole.sinks()->states()[0].removed_mass, resumed.sinks()->states()[0].removed_mass);
     EXPECT_EQ(whole.inlets()->states()[0].inserted_mass, resumed.inlets()->states()[0].inserted_mass);
   }

@@ -44,6 +44,33 @@ inline std::size_t member_of(const Particles& p, std::int64_t body, std::uint32_
   return 0;
 }
 
+// The bodies of two runs bitwise alike: ids, templates and state (image counts included).
+inline void expect_same_bodies(const Bodies& a, const Bodies& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a.id[k], b.id[k]);
+    EXPECT_EQ(a.clump[k], b.clump[k]);
+    EXPECT_EQ(a.x[k], b.x[k]);
+    EXPECT_EQ(a.image[k], b.image[k]);
+    EXPECT_EQ(a.v[k], b.v[k]);
+    EXPECT_EQ(a.w[k], b.w[k]);
+    EXPECT_TRUE(a.q[k].w == b.q[k].w && a.q[k].x == b.q[k].x && a.q[k].y == b.q[k].y && a.q[k].z == b.q[k].z);
+  }
+}
+
+// The particles (ids, centres, velocities, spins) and bodies of two runs bitwise alike: a resumed
+// run against the uninterrupted one.
+inline void expect_same_run(const Particles& p, const Particles& q) {
+  ASSERT_EQ(p.size(), q.size());
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    ASSERT_EQ(p.id[i], q.id[i]);
+    EXPECT_EQ(p.x[i], q.x[i]);
+    EXPECT_EQ(p.v[i], q.v[i]);
+    EXPECT_EQ(p.w[i], q.w[i]);
+  }
+  expect_same_bodies(p.bodies, q.bodies);
+}
+
 // Gives the members their ids (after the free spheres'), as a loaded scene has them.
 inline void finish_clumps(Scene& s) { assign_member_ids(s.particles, "test"); }
 

@@ -34,8 +34,7 @@ struct DmtLaw {
   static constexpr std::size_t kTwoPiW = kLawSlots + 2;      // N/m, 2 pi w: the pull-off is kTwoPiW r*
   static constexpr std::size_t kEnd = kLawSlots + 3;
   static constexpr bool kElastic = true, kAdhesion = true;
-  static constexpr double kGap = 0.0;
-  static constexpr std::size_t kStateDoubles = 0;
+  static constexpr bool kHysteresis = false;
 
   static auto coefficients(const LawInputs& in) {
     return law_slots<DmtLaw>(2.0 * in.E_star, 8.0 * in.G_star, 2.0 * std::numbers::pi * in.key(kKeys[0]).value_or(0.0));
@@ -44,9 +43,10 @@ struct DmtLaw {
 
   // The Hertz spring (same slots) less the pull.
   template <class Pair>
-  static Stiffness stiffness(const Pair& law, double r_star, double overlap) {
+  static Stiffness stiffness(const Pair& law, double r_star, double overlap, double /*inv_reach*/ = 0.0) {
     Stiffness s = HertzLaw::stiffness(law, r_star, overlap);
     s.adhesion = law.c[kTwoPiW] * r_star;
+    s.load_offset = s.adhesion;
     s.f_el -= s.adhesion;
     s.energy -= s.adhesion * overlap;
     return s;

@@ -15,8 +15,7 @@ struct HertzLaw {
   static constexpr std::size_t kEightG = kLawSlots + 1;  // Pa, 8 G*: k_t = 8 G* sqrt(r* delta) (65)
   static constexpr std::size_t kEnd = kLawSlots + 2;
   static constexpr bool kElastic = true, kAdhesion = false;
-  static constexpr double kGap = 0.0;
-  static constexpr std::size_t kStateDoubles = 0;
+  static constexpr bool kHysteresis = false;
 
   static auto coefficients(const LawInputs& in) { return law_slots<HertzLaw>(2.0 * in.E_star, 8.0 * in.G_star); }
   // The Hertz calibration of the damping ratio (section 5 Departure).
@@ -25,7 +24,7 @@ struct HertzLaw {
   // With root = sqrt(r* delta): k_n = 2 E* root, f_el = 4/3 E* sqrt(r*) delta^(3/2) = 2/3 k_n delta
   // (49), k_t = 8 G* root (65), energy 8/15 E* sqrt(r*) delta^(5/2) = 2/5 f_el delta (section 12).
   template <class Pair>
-  static Stiffness stiffness(const Pair& law, double r_star, double overlap) {
+  static Stiffness stiffness(const Pair& law, double r_star, double overlap, double /*inv_reach*/ = 0.0) {
     Stiffness s;
     const double root = std::sqrt(r_star * overlap);  // m
     s.k_n = law.c[kTwiceE] * root;

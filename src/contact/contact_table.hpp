@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "contact/bridges/bridge_law.hpp"
 #include "contact/laws/law_list.hpp"
 #include "model/params.hpp"
 #include "model/scene.hpp"
@@ -32,6 +33,13 @@ class ContactTable {
   LawSet particle_laws() const { return particle_laws_; }
   LawSet barrier_laws() const { return barrier_laws_; }
   bool any_rolling() const { return rolling_; }  // some pair has mu_r > 0
+  // TEMPORARY until the bridge branch merges.
+  bool any_particle_bridges() const { return false; }
+  bool any_barrier_bridges() const { return false; }
+  const BridgeLaw* particle_bridges() const { return nullptr; }
+  const BridgeLaw& barrier_bridge(std::size_t, std::size_t) const { static const BridgeLaw none; return none; }
+  double bridge_reach(double) const { return 0.0; }
+  double barrier_bridge_reach(double) const { return 0.0; }
 
  private:
   std::size_t n_ = 0;

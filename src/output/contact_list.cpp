@@ -15,7 +15,7 @@ std::vector<ContactEntry> contact_list(const Particles& p, const Barriers& b, co
   if (rec.size() == second.size()) {
     for (std::size_t k = 0; k < rec.size(); ++k) {
       const PairRecord& r = rec[k];
-      if (!(r.overlap > 0.0)) continue;
+      if (r.live == 0) continue;
       const std::size_t i = first[k], j = second[k];
       ContactEntry e;
       e.first = p.id[i];

@@ -122,6 +122,13 @@ double break_overlap(const PairLaw& c, double r_star) {
   else return 0.0;
 }
 
+// True when a law of the set keeps a formed state per contact (kHysteresis).
+inline bool any_hysteresis(LawSet set) {
+  bool any = false;
+  for_each_law([&]<class L>(std::type_identity<L>, LawId id) { any = any || (L::kHysteresis && ((set >> id) & 1u)); });
+  return any;
+}
+
 // f(std::type_identity<Law>{}) with the law of id (0 <= id < kLawCount).
 template <class F>
 decltype(auto) with_law(LawId id, F&& f) {

@@ -24,7 +24,7 @@
 
 namespace mpdem {
 
-struct DmtLaw {
+struct DmtLaw : HertzEstimates {  // the Hertz impact estimates
   static constexpr std::string_view kLaw = "hertz", kCohesion = "dmt";
   static constexpr std::array<LawKey, 1> kKeys{{
       {"surface_energy", "J/m^2", kNonNegative, 0.0, false, "0", "surface energy w: pull-off 2 pi w r*"},
@@ -51,19 +51,6 @@ struct DmtLaw {
     s.energy -= s.adhesion * overlap;
     return s;
   }
-
-  // The Hertz estimates: the adhesion is small against the kinetic energy of impacts fast enough
-  // to matter for the time step or checks.max_overlap.
-  template <class Pair>
-  static double contact_time(const Pair& law, double E_star, double m, double r, double v) {
-    return HertzLaw::contact_time(law, E_star, m, r, v);
-  }
-  template <class Pair>
-  static double peak_overlap(const Pair& law, double E_star, double m, double r, double v) {
-    return HertzLaw::peak_overlap(law, E_star, m, r, v);
-  }
-  static constexpr std::string_view kStiffnessKey = "young", kSpringName = "Hertz";
-  static constexpr double kOverlapExponent = 2.5;
 };
 
 }  // namespace mpdem

@@ -8,7 +8,25 @@
 
 namespace mpdem {
 
-struct HertzLaw {
+// The Hertz impact estimates, for the time-step advice and checks.max_overlap: undamped impacts at
+// speed v (m/s) with effective mass m (kg), radius r (m) and modulus E* (Pa). Hertz's, and the
+// adhesive laws' built on its spring: the adhesion is small against the kinetic energy of impacts
+// fast enough to matter for either.
+struct HertzEstimates {
+  template <class Pair>
+  static double contact_time(const Pair&, double E_star, double m, double r, double v) {
+    return hertz_contact_time(m, E_star, r, v);
+  }
+  template <class Pair>
+  static double peak_overlap(const Pair&, double E_star, double m, double r, double v) {
+    return hertz_peak_overlap(m, E_star, r, v);
+  }
+  // For checks.max_overlap's advice: delta ~ E*^(-2/5).
+  static constexpr std::string_view kStiffnessKey = "young", kSpringName = "Hertz";
+  static constexpr double kOverlapExponent = 2.5;
+};
+
+struct HertzLaw : HertzEstimates {
   static constexpr std::string_view kLaw = "hertz", kCohesion = "none";
   static constexpr std::array<LawKey, 0> kKeys{};        // E and nu come from the materials
   static constexpr std::size_t kTwiceE = kLawSlots;      // Pa, 2 E*: k_n = 2 E* sqrt(r* delta)
@@ -33,19 +51,6 @@ struct HertzLaw {
     s.energy = 0.4 * s.f_el * overlap;
     return s;
   }
-
-  // Undamped impacts at speed v (m/s) with effective mass m (kg), radius r (m) and modulus E* (Pa).
-  template <class Pair>
-  static double contact_time(const Pair&, double E_star, double m, double r, double v) {
-    return hertz_contact_time(m, E_star, r, v);
-  }
-  template <class Pair>
-  static double peak_overlap(const Pair&, double E_star, double m, double r, double v) {
-    return hertz_peak_overlap(m, E_star, r, v);
-  }
-  // For checks.max_overlap's advice: delta ~ E*^(-2/5).
-  static constexpr std::string_view kStiffnessKey = "young", kSpringName = "Hertz";
-  static constexpr double kOverlapExponent = 2.5;
 };
 
 }  // namespace mpdem

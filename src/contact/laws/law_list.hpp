@@ -14,13 +14,15 @@
 
 #include "contact/laws/dmt.hpp"
 #include "contact/laws/hertz.hpp"
+#include "contact/laws/jkr.hpp"
 #include "contact/laws/law_interface.hpp"
 #include "contact/laws/linear.hpp"
+#include "contact/laws/sjkr.hpp"
 
 namespace mpdem {
 
 // The first law is the default (law = "hertz", no cohesion).
-using ContactLaws = std::tuple<HertzLaw, LinearLaw, DmtLaw>;
+using ContactLaws = std::tuple<HertzLaw, LinearLaw, DmtLaw, JkrLaw, SjkrLaw>;
 
 inline constexpr std::size_t kLawCount = std::tuple_size_v<ContactLaws>;
 

@@ -47,8 +47,8 @@ void contact_law_lanes(const EvalRequest& req, BarrierBatch& b) {
     ContactResult r;
     if constexpr (kCohesive) {
       const PairLaw law = b.law_of(t);
-      const CohesiveNormal cn =
-          cohesive_normal<Law>(law, b.bridge[t], b.state0[t], c.r_star, c.m_star, c.overlap, c.normal_rate, 0.0);
+      const CohesiveNormal cn = cohesive_normal<Law>(law, b.bridge[t], b.state0[t], c.r_star, c.m_star, c.overlap,
+                                                     c.normal_rate, 0.0);
       r = tangential_contact(law.c[kMuS], law.c[kMuD], law.spring, cn.n, c.spring, c.normal, c.increment, c.vt,
                              c.decide);
       if ((cn.live & kLawFormed) == 0) without_contact(r, cn.n);

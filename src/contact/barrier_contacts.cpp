@@ -281,8 +281,8 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
       for (std::size_t c = 0; c < count; ++c) held |= batch.hist[batch.count - count + c] == &old[s];
       if (held) continue;
       const auto e = static_cast<std::size_t>(old[s].element);
-      const PairLaw& law =
-          table_.barrier_pair(static_cast<std::size_t>(p.material[i]), static_cast<std::size_t>(b.material[e]));
+      const PairLaw& law = table_.barrier_pair(static_cast<std::size_t>(p.material[i]),
+                                               static_cast<std::size_t>(b.material[e]));
       const BridgeLaw* bridge = table_.any_barrier_bridges()
                                     ? &table_.barrier_bridge(static_cast<std::size_t>(p.material[i]), b.material[e])
                                     : nullptr;

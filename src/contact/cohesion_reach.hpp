@@ -20,7 +20,8 @@ inline double particle_cohesion_gap(const ContactTable& t, double r_max) {
     for (std::size_t a = 0; a < n; ++a)
       for (std::size_t b = 0; b < n; ++b) {
         const PairLaw& c = t.particle_pair(a, b);
-        with_law(c.law, [&]<class Law>(std::type_identity<Law>) { gap = std::max(gap, -break_overlap<Law>(c, 0.5 * r_max)); });
+        with_law(c.law,
+                 [&]<class Law>(std::type_identity<Law>) { gap = std::max(gap, -break_overlap<Law>(c, 0.5 * r_max)); });
       }
   if (t.any_particle_bridges()) gap = std::max(gap, t.bridge_reach(r_max));
   return gap;
@@ -34,7 +35,8 @@ inline double barrier_cohesion_gap(const ContactTable& t, double r_max) {
     for (std::size_t a = 0; a < n; ++a)
       for (std::size_t b = 0; b < n; ++b) {
         const PairLaw& c = t.barrier_pair(a, b);
-        with_law(c.law, [&]<class Law>(std::type_identity<Law>) { gap = std::max(gap, -break_overlap<Law>(c, r_max)); });
+        with_law(c.law,
+                 [&]<class Law>(std::type_identity<Law>) { gap = std::max(gap, -break_overlap<Law>(c, r_max)); });
       }
   if (t.any_barrier_bridges()) gap = std::max(gap, t.barrier_bridge_reach(r_max));
   return gap;

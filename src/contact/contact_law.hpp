@@ -71,8 +71,8 @@ struct NormalContact {
 // load; JKR: fn + 2 F_c, Thornton's).
 // inv_reach: 1 / (R_i + R_j) (m^-1; 0 at a barrier), for laws that need the overlap's exact geometry.
 template <class Law>
-inline NormalContact normal_contact(const PairLaw& c, double r_star, double m_star, double overlap,
-                                    double normal_rate, double inv_reach = 0.0) {
+inline NormalContact normal_contact(const PairLaw& c, double r_star, double m_star, double overlap, double normal_rate,
+                                    double inv_reach = 0.0) {
   NormalContact out;
   const Stiffness k = Law::stiffness(c, r_star, overlap, inv_reach);
   const double mass_root = std::sqrt(m_star * k.k_n);  // sqrt(kg N/m)
@@ -133,8 +133,8 @@ inline ContactResult tangential_contact(double mu_s, double mu_d, TangentialSpri
 template <class Law>
 inline ContactResult evaluate_contact(const PairLaw& c, const ContactState& s) {
   return tangential_contact(c.c[kMuS], c.c[kMuD], c.spring,
-                            normal_contact<Law>(c, s.r_star, s.m_star, s.overlap, s.normal_rate, s.inv_reach), s.spring, s.normal,
-                            s.increment, s.vt, s.decide);
+                            normal_contact<Law>(c, s.r_star, s.m_star, s.overlap, s.normal_rate, s.inv_reach), s.spring,
+                            s.normal, s.increment, s.vt, s.decide);
 }
 
 }  // namespace mpdem

@@ -13,7 +13,7 @@ struct PairRecord {
   double overlap = 0.0;       // m, < 0 across a liquid bridge's gap or a JKR neck past touching
   double normal_force = 0.0;  // N, net normal force along `normal` (on the first member)
   std::uint32_t sliding = 0;  // 1: at the Coulomb limit
-  std::uint32_t live = 0;     // 0: not in contact; else kLawFormed (a contact) | kBridgeFormed (a bridge), pair_batch.hpp
+  std::uint32_t live = 0;  // 0: not in contact; else kLawFormed (a contact) | kBridgeFormed (a bridge), pair_batch.hpp
 };
 
 }  // namespace mpdem

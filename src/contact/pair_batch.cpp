@@ -283,7 +283,7 @@ void record_batch(const PairPass& pass, const Batch& b) {
   for (std::size_t t = 0; t < b.count; ++t) {
     const std::uint32_t live = kCohesive ? b.live[t] : (b.overlap[t] > 0.0 ? kLawFormed : 0u);
     if (live != 0)
-      pass.record[b.slot[t]] = {Vec3{b.fx[t], b.fy[t], b.fz[t]}, b.normal(t), b.overlap[t], b.fn_net[t],
+      pass.record[b.slot[t]] = {Vec3{b.fx[t], b.fy[t], b.fz[t]},       b.normal(t), b.overlap[t], b.fn_net[t],
                                 static_cast<std::uint32_t>(b.slip[t]), live};
   }
 }

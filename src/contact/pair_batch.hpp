@@ -87,9 +87,9 @@ struct PairPass {
   bool vector_select = true;                // AVX-512 candidate selection, when built in (kVectorSelect)
   PairRecord* __restrict record = nullptr;  // [pairs] each touching slot's contact, or null (not recording)
   // Cohesion: a law with hysteresis or liquid bridges in the table. Null / 0 without: the plain kernel.
-  std::uint8_t* __restrict state = nullptr;        // [pairs] kLawFormed | kBridgeFormed (cohesive_contact.hpp), committed
-  const BridgeLaw* __restrict bridges = nullptr;   // [materials x materials] (ContactTable), or null: none
-  double gap = 0.0;                                // m, >= 0, the candidates' reach beyond touching
+  std::uint8_t* __restrict state = nullptr;  // [pairs] kLawFormed | kBridgeFormed (cohesive_contact.hpp), committed
+  const BridgeLaw* __restrict bridges = nullptr;  // [materials x materials] (ContactTable), or null: none
+  double gap = 0.0;                               // m, >= 0, the candidates' reach beyond touching
 };
 
 // True when the build has the AVX-512 candidate selection (bitwise the same as the scalar one).

@@ -16,8 +16,8 @@
 namespace mpdem {
 
 bool ParticleContacts::holds_history(std::size_t k) const {
-  return norm2(spring_[k]) > 0.0 || (!vt0_.empty() && norm2(vt0_[k]) > 0.0) || (!wr0_.empty() && norm2(wr0_[k]) > 0.0) ||
-         (!state_.empty() && state_[k] != 0);
+  return norm2(spring_[k]) > 0.0 || (!vt0_.empty() && norm2(vt0_[k]) > 0.0) ||
+         (!wr0_.empty() && norm2(wr0_[k]) > 0.0) || (!state_.empty() && state_[k] != 0);
 }
 
 bool ParticleContacts::cohesive() const {
@@ -185,7 +185,8 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
 std::size_t ParticleContacts::memory_bytes() const {
   return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() + cross_torque_.capacity()) *
              sizeof(Vec3) +
-         slipped_.capacity() + state_.capacity() + terms_.capacity() * sizeof(Terms) + block_sums_.capacity() * sizeof(PairBlockSums) +
+         slipped_.capacity() + state_.capacity() + terms_.capacity() * sizeof(Terms) +
+         block_sums_.capacity() * sizeof(PairBlockSums) +
          (block_seconds_.capacity() + block_cost_.capacity()) * sizeof(double);
 }
 

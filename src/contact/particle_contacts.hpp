@@ -21,10 +21,10 @@ namespace mpdem {
 // acts on), used to carry springs across list rebuilds and reorderings.
 struct PairHistory {
   std::int64_t id_first = 0, id_second = 0;
-  Vec3 spring;               // m
-  Vec3 vt0;                  // m/s
-  Vec3 wr0;                  // rad/s, relative rotation w_first - w_second at the step start
-  std::uint64_t state = 0;   // kLawFormed | kBridgeFormed (contact/pair_batch.hpp), cohesion only
+  Vec3 spring;              // m
+  Vec3 vt0;                 // m/s
+  Vec3 wr0;                 // rad/s, relative rotation w_first - w_second at the step start
+  std::uint64_t state = 0;  // kLawFormed | kBridgeFormed (contact/pair_batch.hpp), cohesion only
 };
 // Checkpoints hold these records byte for byte: a layout change is a format change.
 static_assert(sizeof(PairHistory) == 96 && std::is_trivially_copyable_v<PairHistory>,

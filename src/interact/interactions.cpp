@@ -84,11 +84,10 @@ Interactions::Interactions(const Model& model, const Particles& p, const Barrier
     : model_(model), policy_(policy), table_(table_for(model)),
       // The list reaches beyond contact by the near-field cutoff (0 when the near field is off)
       // and as far as cohesive contacts hold (0 without).
-      search_(std::make_unique<NeighborSearch>(
-          default_skin(model, p),
-          std::max(near_field_extra_range(model.params.near_field, p),
-                   particle_cohesion_gap(table_, largest_radius(model, p))),
-          model.params.domain, largest_member_offset(model.clumps))),
+      search_(std::make_unique<NeighborSearch>(default_skin(model, p),
+                                               std::max(near_field_extra_range(model.params.near_field, p),
+                                                        particle_cohesion_gap(table_, largest_radius(model, p))),
+                                               model.params.domain, largest_member_offset(model.clumps))),
       particle_contacts_(std::make_unique<ParticleContacts>(table_, policy.step_start)),
       barrier_contacts_(std::make_unique<BarrierContacts>(table_, b)) {
   const double r_max = largest_radius(model, p);

@@ -59,8 +59,9 @@ void write_sections(CheckpointWriter& w, const InteractionStats& s, const std::a
     w.section("fields",
               [&](BinaryWriter& o) { for_each_saved_stat(s, StatSaved::fields, [&](const auto& v) { o.value(v); }); });
   if (cohesion)
-    w.section("cohesion",
-              [&](BinaryWriter& o) { for_each_saved_stat(s, StatSaved::cohesion, [&](const auto& v) { o.value(v); }); });
+    w.section("cohesion", [&](BinaryWriter& o) {
+      for_each_saved_stat(s, StatSaved::cohesion, [&](const auto& v) { o.value(v); });
+    });
   w.section("neighbor", neighbor);
   w.section("particle_contacts", pairs);
   w.section("barrier_contacts", barriers);
@@ -70,7 +71,8 @@ void write_sections(CheckpointWriter& w, const InteractionStats& s, const std::a
 void Interactions::save(CheckpointWriter& w, const Particles& p) const {
   write_sections(
       w, stats_, {out_barriers_, out_convected_, out_radiated_}, dissipative_fields(model_.params.fields),
-      has_cohesion(table_), [&](BinaryWriter& o) { search_->save(o); }, [&](BinaryWriter& o) { particle_contacts_->save(o, p, *search_); },
+      has_cohesion(table_), [&](BinaryWriter& o) { search_->save(o); },
+      [&](BinaryWriter& o) { particle_contacts_->save(o, p, *search_); },
       [&](BinaryWriter& o) { barrier_contacts_->save(o); });
 }
 
@@ -100,8 +102,7 @@ void Interactions::save_gathered(CheckpointWriter& w, const Particles& p, const 
   });
   write_sections(
       w, s, out, dissipative_fields(model_.params.fields), has_cohesion(table_),
-      [&](BinaryWriter& o) { search_->save(o, xb_all); },
-      [&](BinaryWriter& o) { o.vector(pairs); },
+      [&](BinaryWriter& o) { search_->save(o, xb_all); }, [&](BinaryWriter& o) { o.vector(pairs); },
       [&](BinaryWriter& o) { BarrierContacts::save_records(o, barrier, ids, overflows); });
 }
 

@@ -34,10 +34,12 @@ double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 // The closed forms, written out here independently of the law's header.
 // a(delta) is parametric: delta(a) = a^2/r* - sqrt(2 pi w a / E*), F(a) = 4 E* a^3/(3 r*) - sqrt(8 pi w E* a^3).
 double jkr_delta(double a) { return a * a / kRStar - std::sqrt(2.0 * kPi * kW * a / kEStar); }
-double jkr_force(double a) { return 4.0 * kEStar * a * a * a / (3.0 * kRStar) - std::sqrt(8.0 * kPi * kW * kEStar * a * a * a); }
-const double kA0 = std::cbrt(9.0 * kPi * kW * kRStar * kRStar / (2.0 * kEStar));  // m, zero load
-const double kDelta0 = jkr_delta(kA0);                                              // m
-const double kFc = 1.5 * kPi * kW * kRStar;                                         // N
+double jkr_force(double a) {
+  return 4.0 * kEStar * a * a * a / (3.0 * kRStar) - std::sqrt(8.0 * kPi * kW * kEStar * a * a * a);
+}
+const double kA0 = std::cbrt(9.0 * kPi * kW * kRStar * kRStar / (2.0 * kEStar));             // m, zero load
+const double kDelta0 = jkr_delta(kA0);                                                       // m
+const double kFc = 1.5 * kPi * kW * kRStar;                                                  // N
 const double kDeltaC = -0.75 * std::cbrt(kPi * kPi * kW * kW * kRStar / (kEStar * kEStar));  // m
 // The contact radius at delta_c, where d delta / da = 0: a_c = (pi w r*^2 / (8 E*))^(1/3).
 const double kAc = std::cbrt(kPi * kW * kRStar * kRStar / (8.0 * kEStar));
@@ -240,8 +242,8 @@ TEST(LiquidBridge, WillettForceAgainstTheGapAndRupture) {
     const auto gap = [&] { return norm(p.x[test::index_of(p, 2)] - p.x[test::index_of(p, 1)]) - 2.0 * kWillettR; };
     const double rupture = std::cbrt(kVolume);
     // m and N: Willett's table, the gaps and the printed forces of the issue.
-    const double table[5][2] = {{0.0, 0.3082e-3}, {0.05e-3, 0.2057e-3}, {0.1e-3, 0.1286e-3}, {0.2e-3, 0.0571e-3},
-                                {0.3e-3, 0.0308e-3}};
+    const double table[5][2] = {
+        {0.0, 0.3082e-3}, {0.05e-3, 0.2057e-3}, {0.1e-3, 0.1286e-3}, {0.2e-3, 0.0571e-3}, {0.3e-3, 0.0308e-3}};
     std::size_t checked = 0;
     bool ruptured = false;
     for (int k = 0; k < 600000; ++k) {

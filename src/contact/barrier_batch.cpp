@@ -52,7 +52,7 @@ void contact_law_lanes(const EvalRequest& req, BarrierBatch& b) {
       r = tangential_contact(law.c[kMuS], law.c[kMuD], law.spring, cn.n, c.spring, c.normal, c.increment, c.vt,
                              c.decide);
       if ((cn.live & kLawFormed) == 0) without_contact(r, cn.n);
-      b.live[t] = cn.live;
+      b.live[t] = cn.live, b.next[t] = cn.next, b.broke[t] = cn.broke;
       b.loss[t] = cn.loss;
     } else {
       r = evaluate_contact<Law>(b.law_of(t), c);

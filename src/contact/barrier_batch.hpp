@@ -61,6 +61,8 @@ struct BarrierBatch {
   std::uint8_t state0[kContacts];
   const BridgeLaw* bridge[kContacts];
   std::uint8_t live[kContacts];
+  std::uint8_t next[kContacts];
+  std::uint8_t broke[kContacts];
   double loss[kContacts];
 
   // Room for one more particle with all its contacts.

@@ -290,8 +290,8 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
         const CohesiveNormal gone = cohesive_normal<Law>(law, bridge, static_cast<std::uint8_t>(old[s].state), r, m,
                                                          -1e300, 0.0, 0.0);
         if (req.commit) {
-          acc[10] += (old[s].state & kLawFormed) != 0 ? 1.0 : 0.0;
-          acc[11] += (old[s].state & kBridgeFormed) != 0 ? 1.0 : 0.0;
+          acc[10] += (gone.broke & kLawFormed) != 0 ? 1.0 : 0.0;
+          acc[11] += (gone.broke & kBridgeFormed) != 0 ? 1.0 : 0.0;
           acc[12] += gone.loss;
         }
       });
@@ -343,7 +343,7 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
       ts.vt0 = {batch.vtx[t], batch.vty[t], batch.vtz[t]};
       ts.normal = {batch.nx[t], batch.ny[t], batch.nz[t]};
       ts.wr0 = w;
-      ts.state = cohesive_ ? batch.live[t] : 0u;
+      ts.state = cohesive_ ? batch.next[t] : 0u;
       BarrierLoad& ls = load[c];
       ls.force = -f;
       ls.point = batch.point[t];
@@ -359,9 +359,8 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
         sum0 += (batch.live[t] & kLawFormed) != 0 ? 1.0 : 0.0;
         acc[9] += (batch.live[t] & kBridgeFormed) != 0 ? 1.0 : 0.0;
         if (req.commit) {
-          const std::uint8_t broke = batch.state0[t] & static_cast<std::uint8_t>(~batch.live[t]);
-          acc[10] += (broke & kLawFormed) != 0 ? 1.0 : 0.0;
-          acc[11] += (broke & kBridgeFormed) != 0 ? 1.0 : 0.0;
+          acc[10] += (batch.broke[t] & kLawFormed) != 0 ? 1.0 : 0.0;
+          acc[11] += (batch.broke[t] & kBridgeFormed) != 0 ? 1.0 : 0.0;
           acc[12] += batch.loss[t];
         }
       } else {

@@ -18,9 +18,11 @@ namespace mpdem {
 inline constexpr std::uint8_t kLawFormed = 1, kBridgeFormed = 2;
 
 struct CohesiveNormal {
-  NormalContact n;        // the law's part (zero when it does not act) plus the bridge's force
-  std::uint8_t live = 0;  // the state after this evaluation: kLawFormed | kBridgeFormed (0: apart)
-  double loss = 0.0;      // J, the energy held by what broke now
+  NormalContact n;         // the law's part (zero when it does not act) plus the bridge's force
+  std::uint8_t live = 0;   // what acts now: kLawFormed (the law) | kBridgeFormed (a bridge); 0: apart
+  std::uint8_t next = 0;   // the state to commit: live, less kLawFormed for a law without hysteresis
+  std::uint8_t broke = 0;  // what broke now: a neck (kLawFormed) | a bridge (kBridgeFormed)
+  double loss = 0.0;       // J, the energy held by what broke now
 };
 
 // before: the committed state; overlap (m) keeps its sign (negative: a gap); bridge: the pair's
@@ -32,7 +34,10 @@ inline CohesiveNormal cohesive_normal(const PairLaw& c, const BridgeLaw* bridge,
   const double brk = break_overlap<Law>(c, r_star);  // m, <= 0
   const bool law_on = overlap > 0.0 || ((before & kLawFormed) != 0 && overlap > brk);
   if (law_on) out.n = normal_contact<Law>(c, r_star, m_star, overlap, normal_rate, inv_reach);
-  else if ((before & kLawFormed) != 0) out.loss += Law::stiffness(c, r_star, brk, inv_reach).energy;
+  else if ((before & kLawFormed) != 0) {
+    out.loss += Law::stiffness(c, r_star, brk, inv_reach).energy;
+    out.broke |= kLawFormed;
+  }
   bool bridge_on = false;
   if (bridge && bridge->model != BridgeModel::none) {
     const double rupture = bridge_rupture_distance(*bridge, r_star, inv_reach);  // m
@@ -44,9 +49,11 @@ inline CohesiveNormal cohesive_normal(const PairLaw& c, const BridgeLaw* bridge,
       out.n.damping += f.damping;
     } else if ((before & kBridgeFormed) != 0) {
       out.loss += bridge_force(*bridge, r_star, inv_reach, -rupture, 0.0).energy;
+      out.broke |= kBridgeFormed;
     }
   }
   out.live = static_cast<std::uint8_t>((law_on ? kLawFormed : 0) | (bridge_on ? kBridgeFormed : 0));
+  out.next = static_cast<std::uint8_t>((law_on && brk < 0.0 ? kLawFormed : 0) | (bridge_on ? kBridgeFormed : 0));
   return out;
 }
 

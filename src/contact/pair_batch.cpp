@@ -133,7 +133,7 @@ void geometry_normal_cohesive(const PairPass& pass, Batch& b) {
     const Vec3 vt = vrel - vn * nrm;  // (60)
     const CohesiveNormal cn = cohesive_normal<Law>(b.pair_law(t), b.bridge[t], b.state0[t], r, m, ov, vn, inv_reach);
     const NormalContact& n = cn.n;
-    b.live[t] = cn.live;
+    b.live[t] = cn.live, b.next[t] = cn.next, b.broke[t] = cn.broke;
     b.loss[t] = cn.loss;
     b.overlap[t] = ov;
     b.nx[t] = nrm.x, b.ny[t] = nrm.y, b.nz[t] = nrm.z;
@@ -219,11 +219,10 @@ void apply(const PairPass& pass, const Batch& b, PairBlockSums& out) {
     if constexpr (kCohesive) {
       if (commit) {
         // What held and broke now: its energy is dissipated (the force drops to zero).
-        const std::uint8_t broke = b.state0[t] & static_cast<std::uint8_t>(~b.live[t]);
-        s.breaks += (broke & kLawFormed) != 0 ? 1.0 : 0.0;
-        s.ruptures += (broke & kBridgeFormed) != 0 ? 1.0 : 0.0;
+        s.breaks += (b.broke[t] & kLawFormed) != 0 ? 1.0 : 0.0;
+        s.ruptures += (b.broke[t] & kBridgeFormed) != 0 ? 1.0 : 0.0;
         s.cohesion_loss += b.loss[t];
-        pass.state[k] = b.live[t];
+        pass.state[k] = b.next[t];
       }
       s.bridges += (b.live[t] & kBridgeFormed) != 0 ? 1.0 : 0.0;
       if (b.live[t] == 0) {

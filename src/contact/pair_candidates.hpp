@@ -74,11 +74,13 @@ struct Batch {
   double tangential_loss[kBatch];             // J, tangential loss of the step (ContactResult)
   // The vector stages run over whole vectors: the lanes past count repeat the last candidate
   // (gather_members, gather_history), so they compute finite values nobody reads.
-  // Cohesion (PairPass::state): the committed state, the bridge law, the new state (0: apart) and
-  // the energy a contact or bridge that breaks now held (J).
+  // Cohesion (PairPass::state): the committed state, the bridge law, what acts (0: apart), the
+  // state to commit, what broke and the energy it held (J) (contact/cohesive_contact.hpp).
   std::uint8_t state0[kBatch];
   const BridgeLaw* bridge[kBatch];
   std::uint8_t live[kBatch];
+  std::uint8_t next[kBatch];
+  std::uint8_t broke[kBatch];
   double loss[kBatch];
   std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }
   // Lane t's law, slot by slot (several materials).

@@ -65,3 +65,24 @@ def test_bad_liquid_bridge_key_names_it():
     with pytest.raises(mpdem.InputError) as e:
         mpdem.Simulation(scene, write_output=False)
     assert e.value.key == "liquid_bridge.surface_tension"
+
+
+def test_contact_list_shows_the_bridge_across_its_gap():
+    """contacts(): a bridge across a gap is listed with its negative overlap, bridge True and
+    touching False, and its force is the particles' force (Newton's third law)."""
+    scene = two_spheres(model="willett", surface_tension=GAMMA, contact_angle=0.0, volume=VOLUME)
+    sim = mpdem.Simulation(scene, threads=1, write_output=False)
+    sim.record_contacts = True
+    sim.step(10000)  # 0.1 mm apart
+    c = sim.contacts()
+    assert len(c["i"]) == 1 and c["j"][0] >= 0
+    assert bool(c["bridge"][0]) and not bool(c["touching"][0])
+    x = sim.particles.position
+    gap = x[1, 0] - x[0, 0] - 2.0 * R
+    assert c["overlap"][0] == pytest.approx(-gap, rel=1e-9)
+    f = c["normal_force"][0] + c["tangential_force"][0]
+    first = 0 if int(c["i"][0]) == 1 else 1  # the listed force acts on the entry's first particle
+    assert np.allclose(f, sim.particles.force[first], rtol=0, atol=1e-12 * abs(f[0]))
+    assert abs(abs(f[0]) - willett(gap)) / willett(gap) < 1e-9
+    assert np.allclose(c["tangential_force"][0], 0.0, atol=0)
+    assert sim.log()["contacts_pp"] == 0 and sim.log()["bridges"] == 1

@@ -64,7 +64,7 @@ std::vector<std::string> cohesion_summary_lines(const Scene& scene) {
                                    bridge_line(pair, t.particle_bridge(a, b), 0.5 * r, 0.5 / r)})
         if (!l.empty()) lines.push_back(l);
     }
-  bool barriers = !scene.barriers.material.empty();
+  const bool barriers = !scene.barriers.material.empty();
   for (std::size_t a = 0; a < n && barriers; ++a)
     for (std::size_t b = 0; b < n; ++b) {
       if (std::find(scene.barriers.material.begin(), scene.barriers.material.end(), static_cast<int>(b)) ==
@@ -75,11 +75,10 @@ std::vector<std::string> cohesion_summary_lines(const Scene& scene) {
            {law_line(pair, t.barrier_pair(a, b), r), bridge_line(pair, t.barrier_bridge(a, b), r, 0.0)})
         if (!l.empty()) lines.push_back(l);
     }
-  const double pp = particle_cohesion_gap(t, r), pb = barrier_cohesion_gap(t, r);
+  const double pp = particle_cohesion_gap(t, r), pb = barriers ? barrier_cohesion_gap(t, r) : 0.0;
   if (pp > 0.0 || pb > 0.0)
-    lines.push_back(fmt::format("  contacts held past touching: the neighbour list reaches {:.4g} m (particles) and "
-                                "{:.4g} m (barriers) beyond touching",
-                                pp, pb));
+    lines.push_back(fmt::format("  contacts held past touching: the neighbour list reaches {:.4g} m beyond touching{}",
+                                pp, barriers ? fmt::format(", the barrier detection {:.4g} m", pb) : ""));
   return lines;
 }
 

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 
@@ -163,6 +164,7 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
   out.breaks = static_cast<std::size_t>(sums[10]);
   out.ruptures = static_cast<std::size_t>(sums[11]);
   out.cohesion_loss = sums[12];
+  out.elastic_magnitude = sums[13];
   return out;
 }
 
@@ -181,13 +183,16 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
   const BarrierSlot* old = store_.committed(k);
   const int old_used = store_.committed_used(k);
   if (cohesive_) {
-    // Detected gap_ beyond touching; kept when touching or formed (the state of the contact's history).
+    // Detected gap_ beyond touching; kept when touching, or apart with a formed neck or bridge it
+    // may take the history of (the same element, or a seam neighbour's as below).
     detect_barrier_contacts(b, topo_, tris_, p.x[i], p.radius[i] + gap_, cand, found);
     std::erase_if(found, [&](BarrierContact& f) {
       f.overlap -= gap_;
       if (f.overlap > 0.0) return false;
       for (int s = 0; s < old_used; ++s)
-        if (old[s].element == static_cast<std::int32_t>(f.element)) return old[s].state == 0;
+        if (old[s].state != 0 &&
+            (old[s].element == static_cast<std::int32_t>(f.element) || dot(old[s].normal, f.normal) > kInheritCos))
+          return false;
       return true;
     });
   } else {
@@ -358,6 +363,7 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
       if (cohesive_) {
         sum0 += (batch.live[t] & kLawFormed) != 0 ? 1.0 : 0.0;
         acc[9] += (batch.live[t] & kBridgeFormed) != 0 ? 1.0 : 0.0;
+        acc[13] += std::abs(batch.energy[t]);
         if (req.commit) {
           acc[10] += (batch.broke[t] & kLawFormed) != 0 ? 1.0 : 0.0;
           acc[11] += (batch.broke[t] & kBridgeFormed) != 0 ? 1.0 : 0.0;

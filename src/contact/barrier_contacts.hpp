@@ -83,8 +83,8 @@ class BarrierContacts {
   // {contacts, elastic energy J, normal damping power W, rolling friction power W, dropped
   // contacts, tangential loss J of the sticking and of the sliding contacts, stored springs'
   // energy J at this step's stiffness and of the new springs (ContactResult), bridges held,
-  // contacts and bridges broken, the energy they held J (cohesion)}
-  using BarrierSums = std::array<double, 13>;
+  // contacts and bridges broken, the energy they held J, the contacts' |stored energy| J (cohesion)}
+  using BarrierSums = std::array<double, 14>;
   // Contacts of active particle k, stage 1: detects them, finds their history, sets its record
   // counts and appends the contacts with the particle's values to the batch (acc[4]: dropped).
   // kRotating: some element rotates (surface velocity at the contact point, springs turned).

@@ -100,7 +100,8 @@ void geometry_normal(const PairPass& pass, Batch& b) {
     const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
     const double vn = dot(vrel, nrm);
     const Vec3 vt = vrel - vn * nrm;  // (60)
-    const NormalContact n = normal_contact<Law>(kUniform ? u : b.pair_law(t), r, m, overlap, vn);
+    const double inv_reach = Law::kExactGeometry ? 1.0 / b.reach[t] : 0.0;  // 1/m (SJKR's lens)
+    const NormalContact n = normal_contact<Law>(kUniform ? u : b.pair_law(t), r, m, overlap, vn, inv_reach);
     b.overlap[t] = overlap;
     b.nx[t] = nrm.x, b.ny[t] = nrm.y, b.nz[t] = nrm.z;
     b.vtx[t] = vt.x, b.vty[t] = vt.y, b.vtz[t] = vt.z;
@@ -260,6 +261,7 @@ void apply(const PairPass& pass, const Batch& b, PairBlockSums& out) {
     *tj -= roll + rj * arm;
     s.contacts += kCohesive ? ((b.live[t] & kLawFormed) != 0 ? 1.0 : 0.0) : 1.0;
     s.elastic_energy += b.energy[t];
+    if constexpr (kCohesive) s.elastic_magnitude += std::abs(b.energy[t]);
     s.damping_power += b.damping[t];
     s.rolling_power -= dot(roll, wrel);
     // Selected values, not a selected address: that would keep the sums in memory.

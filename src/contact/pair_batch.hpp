@@ -48,6 +48,7 @@ struct PairBlockSums {
   double breaks = 0.0;
   double ruptures = 0.0;
   double cohesion_loss = 0.0;
+  double elastic_magnitude = 0.0;  // J, sum of |stored energy| of the contacts (cohesion only)
   DeepestPair deepest;
 };
 

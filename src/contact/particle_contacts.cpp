@@ -177,6 +177,7 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
     st.breaks += static_cast<std::size_t>(s.breaks);
     st.ruptures += static_cast<std::size_t>(s.ruptures);
     st.cohesion_loss += s.cohesion_loss;
+    st.elastic_magnitude += s.elastic_magnitude;
     if (s.deepest.ratio > deepest_.ratio) deepest_ = {s.deepest.ratio, s.deepest.first, s.deepest.second, -1};
   }
   return st;

@@ -43,6 +43,7 @@ struct PairStats {
   // energy they held then (J).
   std::size_t bridges = 0, breaks = 0, ruptures = 0;
   double cohesion_loss = 0.0;
+  double elastic_magnitude = 0.0;  // J, sum of the contacts' |stored energy| (cohesion only)
 };
 
 // The deepest contact of the last evaluation, relative to the smaller radius.

@@ -94,7 +94,10 @@ struct StatInfo {
   X(std::uint64_t, bridges, "-", count, false, cohesion, none, "bridges", cohesion, counts)                            \
   X(std::uint64_t, cohesion_breaks, "-", sum, true, cohesion, none, "breaks", cohesion, counts)                        \
   X(std::uint64_t, ruptures, "-", sum, true, cohesion, none, "ruptures", cohesion, counts)                             \
-  X(double, cohesion_dissipated, "J", sum, true, cohesion, dissipated, "cohesion_dissipated", cohesion, energies)
+  X(double, cohesion_dissipated, "J", sum, true, cohesion, dissipated, "cohesion_dissipated", cohesion, energies)    \
+  /* the sum of the contacts' stored energies' magnitudes at the last evaluation (cohesion only: the scale */         \
+  /* of the energy checks, integrate/energy_balance.hpp active_energy) */                                             \
+  X(double, elastic_magnitude, "J", sum, false, cohesion, none, nullptr, never, energies)
 // clang-format on
 
 struct InteractionStats {

@@ -312,6 +312,7 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   stats_.contacts_pb = pb.contacts;
   stats_.elastic_energy = pp.elastic_energy + pb.elastic_energy;
   stats_.bridges = pp.bridges + pb.bridges;
+  stats_.elastic_magnitude = pp.elastic_magnitude + pb.elastic_magnitude;
   if (req.commit) {
     // Cohesion: what broke held energy the force no longer stores (contact/pair_batch.hpp).
     stats_.cohesion_breaks += pp.breaks + pb.breaks;

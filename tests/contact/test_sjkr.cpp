@@ -12,6 +12,9 @@
 #include "contact/contact_law.hpp"
 #include "contact/contact_table.hpp"
 #include "scene/scene_reader.hpp"
+#include "sim/simulation.hpp"
+#include "support/contact_scenes.hpp"
+#include "support/scene_builder.hpp"
 #include "support/run_command.hpp"
 #include "support/temp_dir.hpp"
 
@@ -148,3 +151,36 @@ TEST(SjkrLaw, SceneKeys) {
 }
 
 }  // namespace
+
+// Through the engine (the pair kernel and the barrier kernel): two fixed spheres of 1 mm and
+// 0.6 mm at rest at three overlaps, and a fixed sphere pressed into a plate: the force on each is
+// the Hertz force less k times the lens area, 1e-9 (the kernels hand the laws 1 / (R_i + R_j)).
+TEST(SjkrLaw, ThroughThePairAndBarrierKernels) {
+  for (const double delta : {1e-7, 2e-6, 3e-5}) {
+    Scene s = test::make_scene(1e-7, 1.0);
+    s.model.params.fields.gravity = {};
+    s.model.params.checks.max_overlap = 0.0;
+    test::set_material(s, 2500.0, 1e7, 0.3);
+    for (ContactLawParams* c : {&s.model.params.contact.particle_particle, &s.model.params.contact.particle_barrier}) {
+      c->cohesion = "sjkr";
+      c->law_keys["cohesion_energy_density"] = kK;
+    }
+    const Pair pair{1e-3, 0.6e-3}, wall{1e-3, 0.0};
+    test::add_particle(s, 1, pair.r1, {0.0, 0.0, 0.0});
+    test::add_particle(s, 2, pair.r2, {pair.r1 + pair.r2 - delta, 0.0, 0.0});
+    // a plate in the plane z = -0.01 (normal +z) and a third sphere pressed into it
+    test::add_grid(s.barriers, "plate", {-0.02, -0.02, -0.01}, {0.04, 0.0, 0.0}, {0.0, 0.04, 0.0}, 2, 2, 1e7, 0.3);
+    test::add_particle(s, 3, wall.r1, {0.005, 0.005, -0.01 + wall.r1 - delta});
+    for (std::size_t i = 0; i < 3; ++i) s.particles.fixed[i] = 1;
+    Simulation sim(std::move(s), RunOptions{{}, false, false});
+    sim.advance(1e-7);
+    const Particles& p = sim.particles();
+    const double hertz_pair = 4.0 / 3.0 * kEStar * std::sqrt(pair.r_star()) * std::pow(delta, 1.5);
+    // A barrier's E* of two equal materials (physics.md section 7): the particle and the plate alike.
+    const double hertz_wall = 4.0 / 3.0 * kEStar * std::sqrt(wall.r_star()) * std::pow(delta, 1.5);
+    const double f_pair = p.force[test::index_of(p, 2)].x, f_wall = p.force[test::index_of(p, 3)].z;
+    EXPECT_LT(rel(hertz_pair - f_pair, kK * pair.area(delta)), 1e-9) << delta;
+    EXPECT_EQ(p.force[test::index_of(p, 1)].x, -f_pair);
+    EXPECT_LT(rel(hertz_wall - f_wall, kK * wall.area(delta)), 1e-9) << delta;
+  }
+}

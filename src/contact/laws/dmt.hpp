@@ -35,6 +35,7 @@ struct DmtLaw : HertzEstimates {  // the Hertz impact estimates
   static constexpr std::size_t kEnd = kLawSlots + 3;
   static constexpr bool kElastic = true, kAdhesion = true;
   static constexpr bool kHysteresis = false;
+  static constexpr bool kExactGeometry = false;
 
   static auto coefficients(const LawInputs& in) {
     return law_slots<DmtLaw>(2.0 * in.E_star, 8.0 * in.G_star, 2.0 * std::numbers::pi * in.key(kKeys[0]).value_or(0.0));

@@ -34,6 +34,7 @@ struct HertzLaw : HertzEstimates {
   static constexpr std::size_t kEnd = kLawSlots + 2;
   static constexpr bool kElastic = true, kAdhesion = false;
   static constexpr bool kHysteresis = false;
+  static constexpr bool kExactGeometry = false;
 
   static auto coefficients(const LawInputs& in) { return law_slots<HertzLaw>(2.0 * in.E_star, 8.0 * in.G_star); }
   // The Hertz calibration of the damping ratio (section 5 Departure).

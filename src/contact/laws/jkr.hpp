@@ -71,6 +71,7 @@ struct JkrLaw : HertzEstimates {  // the Hertz impact estimates
   static constexpr std::size_t kEnd = kLawSlots + 4;
   static constexpr bool kElastic = true, kAdhesion = true;
   static constexpr bool kHysteresis = true;
+  static constexpr bool kExactGeometry = false;
 
   static auto coefficients(const LawInputs& in) {
     const double w = in.key(kKeys[0]).value_or(0.0);

@@ -17,6 +17,7 @@
 //                          when it breaks (stiffness(..., break_overlap).energy) as dissipated
 //   coefficients(in)       its own slots (law_slots) from the materials' moduli and its keys (LawInputs)
 //   damping_ratio(e)       the normal damping ratio that gives restitution e
+//   kExactGeometry         stiffness() reads k below (the pair kernel computes it only then)
 //   stiffness(c, r*, d, k) k_n, the elastic force, k_t and the stored energy at overlap d >= 0
 //                          (kHysteresis: d >= break_overlap); k = 1 / (R_i + R_j) (m^-1, 0 at a
 //                          barrier) for laws that need the exact geometry of the overlap (SJKR's

@@ -90,6 +90,11 @@ struct MixedLaw {
     for_each_law([&]<class L>(std::type_identity<L>, LawId) { any = any || L::kHysteresis; });
     return any;
   }();
+  static constexpr bool kExactGeometry = [] {
+    bool any = false;
+    for_each_law([&]<class L>(std::type_identity<L>, LawId) { any = any || L::kExactGeometry; });
+    return any;
+  }();
   static Stiffness stiffness(const PairLaw& c, double r_star, double overlap, double inv_reach = 0.0) {
     Stiffness out = std::tuple_element_t<0, ContactLaws>::stiffness(c, r_star, overlap, inv_reach);
     for_each_law([&]<class L>(std::type_identity<L>, LawId id) {

@@ -22,6 +22,7 @@ struct LinearLaw {
   static constexpr std::size_t kEnd = kLawSlots + 2;
   static constexpr bool kElastic = false, kAdhesion = false;
   static constexpr bool kHysteresis = false;
+  static constexpr bool kExactGeometry = false;
 
   static auto coefficients(const LawInputs& in) {
     const double k_n = in.key(kKeys[0]).value_or(0.0);  // the reader requires it

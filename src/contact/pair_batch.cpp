@@ -99,7 +99,7 @@ void geometry_normal(const PairPass& pass, Batch& b) {
     // (61) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
     const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
     const double vn = dot(vrel, nrm);
-    const Vec3 vt = vrel - vn * nrm;  // (60)
+    const Vec3 vt = vrel - vn * nrm;                                        // (60)
     const double inv_reach = Law::kExactGeometry ? 1.0 / b.reach[t] : 0.0;  // 1/m (SJKR's lens)
     const NormalContact n = normal_contact<Law>(kUniform ? u : b.pair_law(t), r, m, overlap, vn, inv_reach);
     b.overlap[t] = overlap;

@@ -57,7 +57,7 @@ void read_liquid_bridge(const TomlSection& root, ContactParams& c) {
 }
 
 LiquidBridgeKeys read_pair_liquid_bridge(const TomlSection& s, const LiquidBridgeParams& d) {
-  const LiquidBridgeKeys k = read_keys(s);
+  LiquidBridgeKeys k = read_keys(s);
   check_complete(s, overridden(d.defaults.value_or(LiquidBridgeKeys{}), k));
   return k;
 }

@@ -11,35 +11,35 @@
 
 namespace mpdem {
 
+namespace cohesion_reach_detail {
+// m, >= 0: the largest |break_overlap| at r* over the pairs pair(a, b) of the table's laws.
+template <class PairOf>
+double neck_gap(const ContactTable& t, LawSet laws, PairOf pair, double r_star) {
+  double gap = 0.0;
+  if (!any_hysteresis(laws)) return gap;
+  for (std::size_t a = 0; a < t.materials(); ++a)
+    for (std::size_t b = 0; b < t.materials(); ++b) {
+      const PairLaw& c = pair(a, b);
+      with_law(c.law, [&]<class Law>(std::type_identity<Law>) { gap = std::max(gap, -break_overlap<Law>(c, r_star)); });
+    }
+  return gap;
+}
+}  // namespace cohesion_reach_detail
+
 // m, >= 0. Both grow with the radii (JKR's |delta_c| ~ r*^(1/3), a bridge's volume and rupture
 // distance with the particles' volumes), so the largest pair of radius r_max bounds them.
 inline double particle_cohesion_gap(const ContactTable& t, double r_max) {
-  double gap = 0.0;
-  const std::size_t n = t.materials();
-  if (any_hysteresis(t.particle_laws()))
-    for (std::size_t a = 0; a < n; ++a)
-      for (std::size_t b = 0; b < n; ++b) {
-        const PairLaw& c = t.particle_pair(a, b);
-        with_law(c.law,
-                 [&]<class Law>(std::type_identity<Law>) { gap = std::max(gap, -break_overlap<Law>(c, 0.5 * r_max)); });
-      }
-  if (t.any_particle_bridges()) gap = std::max(gap, t.bridge_reach(r_max));
-  return gap;
+  const double neck = cohesion_reach_detail::neck_gap(
+      t, t.particle_laws(), [&](std::size_t a, std::size_t b) -> const PairLaw& { return t.particle_pair(a, b); },
+      0.5 * r_max);
+  return std::max(neck, t.any_particle_bridges() ? t.bridge_reach(r_max) : 0.0);
 }
 
 // m, >= 0: the same for particle-barrier contacts (r* = R).
 inline double barrier_cohesion_gap(const ContactTable& t, double r_max) {
-  double gap = 0.0;
-  const std::size_t n = t.materials();
-  if (any_hysteresis(t.barrier_laws()))
-    for (std::size_t a = 0; a < n; ++a)
-      for (std::size_t b = 0; b < n; ++b) {
-        const PairLaw& c = t.barrier_pair(a, b);
-        with_law(c.law,
-                 [&]<class Law>(std::type_identity<Law>) { gap = std::max(gap, -break_overlap<Law>(c, r_max)); });
-      }
-  if (t.any_barrier_bridges()) gap = std::max(gap, t.barrier_bridge_reach(r_max));
-  return gap;
+  const double neck = cohesion_reach_detail::neck_gap(
+      t, t.barrier_laws(), [&](std::size_t a, std::size_t b) -> const PairLaw& { return t.barrier_pair(a, b); }, r_max);
+  return std::max(neck, t.any_barrier_bridges() ? t.barrier_bridge_reach(r_max) : 0.0);
 }
 
 // True when the table's contacts keep a cohesion state: a law with hysteresis or a liquid bridge.

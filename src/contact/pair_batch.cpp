@@ -81,15 +81,17 @@ MPDEM_SCALAR_LOOPS void gather_history(const PairPass& pass, Batch& b) {
 // Stage 1: geometry and kinematics (60)-(62) and the normal half of the law (normal_contact,
 // contact_law.hpp), over contiguous arrays (vectorised; an apart candidate, overlap 0, gets finite
 // values that apply() skips). One loop: the intermediate values stay in registers.
-template <bool kUniform, class Law>
+// kCohesive (PairPass::state): the overlap keeps its sign (negative: a gap), and the law and a
+// liquid bridge act by the contact's formed state (contact/cohesive_contact.hpp), which records
+// what acts now and what broke with the energy it held; scalar, the bridges read through the table.
+template <bool kUniform, class Law, bool kCohesive = false>
 void geometry_normal(const PairPass& pass, Batch& b) {
-  gather_members<kUniform>(pass, b);
+  gather_members<kUniform, kCohesive>(pass, b);
   const PairLaw u = pass.uniform_law;
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const Vec3 d{b.dx[t], b.dy[t], b.dz[t]};
     const double dist = std::sqrt(norm2(d));
     const double ov = b.reach[t] - dist;
-    const double overlap = ov > 0.0 ? ov : 0.0;
     // Coincident centres get +z, so nothing becomes NaN.
     const double inv = 1.0 / (dist > 0.0 ? dist : 1.0);
     const Vec3 nrm = dist > 0.0 ? d * inv : Vec3{0.0, 0.0, 1.0};
@@ -99,58 +101,26 @@ void geometry_normal(const PairPass& pass, Batch& b) {
     // (61) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
     const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
     const double vn = dot(vrel, nrm);
-    const Vec3 vt = vrel - vn * nrm;                                        // (60)
-    const double inv_reach = Law::kExactGeometry ? 1.0 / b.reach[t] : 0.0;  // 1/m (SJKR's lens)
-    const NormalContact n = normal_contact<Law>(kUniform ? u : b.pair_law(t), r, m, overlap, vn, inv_reach);
-    b.overlap[t] = overlap;
+    const Vec3 vt = vrel - vn * nrm;                                                     // (60)
+    const double inv_reach = kCohesive || Law::kExactGeometry ? 1.0 / b.reach[t] : 0.0;  // 1/m (SJKR's lens)
+    NormalContact n;
+    if constexpr (kCohesive) {
+      const CohesiveNormal cn = cohesive_normal<Law>(b.pair_law(t), b.bridge[t], b.state0[t], r, m, ov, vn, inv_reach);
+      n = cn.n;
+      b.live[t] = cn.live, b.next[t] = cn.next, b.broke[t] = cn.broke;
+      b.loss[t] = cn.loss;
+      b.overlap[t] = ov;
+    } else {
+      const double overlap = ov > 0.0 ? ov : 0.0;
+      n = normal_contact<Law>(kUniform ? u : b.pair_law(t), r, m, overlap, vn, inv_reach);
+      b.overlap[t] = overlap;
+    }
     b.nx[t] = nrm.x, b.ny[t] = nrm.y, b.nz[t] = nrm.z;
     b.vtx[t] = vt.x, b.vty[t] = vt.y, b.vtz[t] = vt.z;
     b.r_star[t] = r;
     b.fn_net[t] = n.fn, b.fn_load[t] = n.fn_limit;
     b.tangential_stiffness[t] = n.k_t, b.tangential_damping[t] = n.d_t;
     b.normal_energy[t] = n.energy, b.normal_damping[t] = n.damping;
-  }
-}
-
-// Stage 1 with cohesion (PairPass::state): the overlap keeps its sign (negative: a gap). The
-// law acts while the surfaces touch, or (kHysteresis) while a formed contact has not reached its
-// break_overlap; a liquid bridge (contact/bridges/) from the first touch until its rupture
-// distance. What breaks at this evaluation is recorded with the energy it held (loss). Scalar:
-// the bridges are read through the table.
-template <class Law>
-void geometry_normal_cohesive(const PairPass& pass, Batch& b) {
-  gather_members<false, true>(pass, b);
-  for (std::size_t t = 0; t < b.count; ++t) {
-    const Vec3 d{b.dx[t], b.dy[t], b.dz[t]};
-    const double dist = std::sqrt(norm2(d));
-    const double ov = b.reach[t] - dist;  // m, < 0 across a gap
-    const double inv = 1.0 / (dist > 0.0 ? dist : 1.0);
-    const Vec3 nrm = dist > 0.0 ? d * inv : Vec3{0.0, 0.0, 1.0};
-    const double inv_rm = 1.0 / (b.reach[t] * b.inverse_mass_sum[t]);
-    const double r = b.radius_product[t] * b.inverse_mass_sum[t] * inv_rm, m = b.reach[t] * inv_rm;
-    const double inv_reach = 1.0 / b.reach[t];
-    const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
-    const double vn = dot(vrel, nrm);
-    const Vec3 vt = vrel - vn * nrm;  // (60)
-    const CohesiveNormal cn = cohesive_normal<Law>(b.pair_law(t), b.bridge[t], b.state0[t], r, m, ov, vn, inv_reach);
-    const NormalContact& n = cn.n;
-    b.live[t] = cn.live, b.next[t] = cn.next, b.broke[t] = cn.broke;
-    b.loss[t] = cn.loss;
-    b.overlap[t] = ov;
-    b.nx[t] = nrm.x, b.ny[t] = nrm.y, b.nz[t] = nrm.z;
-    b.vtx[t] = vt.x, b.vty[t] = vt.y, b.vtz[t] = vt.z;
-    b.r_star[t] = r;
-    b.fn_net[t] = n.fn, b.fn_load[t] = n.fn_limit;
-    b.tangential_stiffness[t] = n.k_t, b.tangential_damping[t] = n.d_t;
-    b.normal_energy[t] = n.energy, b.normal_damping[t] = n.damping;
-  }
-  for (std::size_t t = b.count; t < b.lanes(); ++t) {  // the padding lanes repeat the last
-    const std::size_t l = b.count - 1;
-    b.live[t] = b.live[l], b.overlap[t] = b.overlap[l], b.nx[t] = b.nx[l], b.ny[t] = b.ny[l], b.nz[t] = b.nz[l];
-    b.vtx[t] = b.vtx[l], b.vty[t] = b.vty[l], b.vtz[t] = b.vtz[l], b.r_star[t] = b.r_star[l];
-    b.fn_net[t] = b.fn_net[l], b.fn_load[t] = b.fn_load[l];
-    b.tangential_stiffness[t] = b.tangential_stiffness[l], b.tangential_damping[t] = b.tangential_damping[l];
-    b.normal_energy[t] = b.normal_energy[l], b.normal_damping[t] = b.normal_damping[l];
   }
 }
 
@@ -291,8 +261,7 @@ void record_batch(const PairPass& pass, const Batch& b) {
 
 template <bool kUniform, class Law, bool kStepStart, bool kCohesive>
 void run(const PairPass& pass, Batch& b, PairBlockSums& out) {
-  if constexpr (kCohesive) geometry_normal_cohesive<Law>(pass, b);
-  else geometry_normal<kUniform, Law>(pass, b);
+  geometry_normal<kUniform, Law, kCohesive>(pass, b);
   tangential_stage<kUniform, kStepStart, kCohesive>(pass, b);
   apply<kUniform, kCohesive>(pass, b, out);
   if (pass.record) record_batch<kCohesive>(pass, b);

@@ -15,6 +15,7 @@
 
 #include "core/parallel.hpp"
 #include "sim/simulation.hpp"
+#include "support/cohesive_scenes.hpp"
 #include "support/contact_scenes.hpp"
 #include "support/scene_builder.hpp"
 #include "support/temp_dir.hpp"
@@ -35,15 +36,7 @@ Scene wet_layer(Integrator integ) {
   s.model.params.checks.max_overlap = 0.0;
   test::set_material(s, 2500.0, 1e7, 0.3);
   test::add_open_box(s.barriers, W, 4.0 * kR, 4, 1e7, 0.3);
-  for (ContactLawParams* c : {&s.model.params.contact.particle_particle, &s.model.params.contact.particle_barrier}) {
-    c->cohesion = "jkr";
-    c->law_keys["surface_energy"] = 0.05;
-    c->restitution = 0.5;
-  }
-  LiquidBridgeKeys k;
-  k.surface_tension = 0.07;
-  k.liquid_fraction = 0.001;
-  s.model.params.contact.liquid_bridge.defaults = k;
+  test::make_wet(s, 0.05, 0.5, 0.07, 1e-3);
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> U(-1.0, 1.0);
   std::int64_t id = 0;

@@ -16,6 +16,7 @@
 
 #include "parallel/communicator.hpp"
 #include "sim/simulation.hpp"
+#include "support/cohesive_scenes.hpp"
 #include "support/dense_granular_scene.hpp"
 #include "support/scene_builder.hpp"
 #include "support/shared_temp_dir.hpp"
@@ -39,15 +40,7 @@ Scene wet_cloud(Integrator integ) {
   s.model.params.checks.energy_jump = 0.0;
   Material& m = s.model.materials.front();
   m.density = 2500.0, m.young = 1e7, m.poisson = 0.3;
-  for (ContactLawParams* c : {&s.model.params.contact.particle_particle, &s.model.params.contact.particle_barrier}) {
-    c->cohesion = "jkr";
-    c->law_keys["surface_energy"] = 0.05;
-    c->restitution = 0.5;
-  }
-  LiquidBridgeKeys k;
-  k.surface_tension = 0.07;
-  k.liquid_fraction = 1e-3;
-  s.model.params.contact.liquid_bridge.defaults = k;
+  make_wet(s, 0.05, 0.5, 0.07, 1e-3);
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   const double a = 2.3 * kR;

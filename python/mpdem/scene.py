@@ -19,8 +19,8 @@ from .toml_writer import dumps
 __all__ = ["Scene"]
 
 # Tables that appear once, and tables that repeat ([[name]]), as in docs/scene.md.
-TABLES = ("time", "tolerance", "analysis", "gravity", "fields", "near_field", "contact", "thermal",
-          "domain", "neighbor", "parallel", "checks", "output")
+TABLES = ("time", "tolerance", "analysis", "gravity", "fields", "near_field", "contact", "liquid_bridge",
+          "thermal", "domain", "neighbor", "parallel", "checks", "output")
 REPEATED = ("material", "particles", "barriers", "inlet", "sink")
 
 # Particle CSV columns of the array sources (docs/scene.md, "Particle CSV"): (array, columns).
@@ -196,6 +196,13 @@ class Scene:
         """One [[contact.pair]] entry: the coefficients of one pair of materials."""
         self.data.setdefault("contact", {}).setdefault("pair", []).append(keys)
         return self
+
+    def liquid_bridge(self, **keys):
+        """[liquid_bridge]: capillary bridges between every pair of materials: model ("willett" |
+        "rabinovich" | "none"), surface_tension (N/m), contact_angle (deg), volume (m^3) or
+        liquid_fraction, viscosity (Pa s), min_gap, barriers (docs/scene.md). A pair's own
+        bridge is contact_pair(..., liquid_bridge={...})."""
+        return self._set("liquid_bridge", keys)
 
     def thermal(self, **keys):
         return self._set("thermal", keys)

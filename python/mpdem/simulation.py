@@ -206,9 +206,11 @@ class Simulation:
         """The contacts of the last evaluation (the forces that made the particles' `force`), as a
         dict of numpy arrays, one row per contact: i (the particle the forces act on), j (the
         other particle's id, -1 for a barrier contact), element (the barrier element's id, -1 for
-        a pair), point (M, 3) m, normal (M, 3) unit towards i, overlap (M,) m, normal_force and
-        tangential_force (M, 3) N on i (j takes minus them), sliding (M,) bool. Needs
-        record_contacts = True before the step (RuntimeError otherwise)."""
+        a pair), point (M, 3) m, normal (M, 3) unit towards i, overlap (M,) m (< 0: a gap),
+        normal_force and tangential_force (M, 3) N on i (j takes minus them), sliding (M,) bool,
+        touching (M,) bool (a contact law acts: a contact), bridge (M,) bool (a liquid bridge
+        acts; alone, not a contact). Needs record_contacts = True before the step (RuntimeError
+        otherwise)."""
         return self._core.contacts()
 
     @property

@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
 #include "check/clump_summary.hpp"
+#include "check/cohesion_summary.hpp"
 #include "contact/contact_table.hpp"
 #include "model/body_members.hpp"
 #include "physics/barrier_moduli.hpp"
@@ -100,6 +102,15 @@ TimeStepAdvice time_step_advice(const Scene& scene) {
       a.hertz = true;
       rayleigh = std::min(rayleigh, rayleigh_time(r, m.density, m.young, m.poisson));
     }
+    // A viscous liquid bridge: the lubrication force 6 pi mu r*^2 v_n / S_min is a dashpot of
+    // c = 6 pi mu r* / min_gap (S_min = min_gap r*), whose relaxation time m*/c the step must resolve.
+    const auto viscous = [&](const BridgeLaw& br, double r_star, double m_star) {
+      if (br.model == BridgeModel::none || !(br.viscosity > 0.0)) return;
+      const double c = 6.0 * std::numbers::pi * br.viscosity * r_star / br.min_gap;  // N s/m
+      a.viscous = a.viscous > 0.0 ? std::min(a.viscous, m_star / c) : m_star / c;
+    };
+    viscous(table.particle_bridge(k, k), 0.5 * r, 0.5 * mass);
+    for (const int bm : barrier_materials) viscous(table.barrier_bridge(k, static_cast<std::size_t>(bm)), r, mass);
   };
   for (std::size_t i = 0; i < p.size(); ++i) take(p.radius[i], p.mass[i], static_cast<std::size_t>(p.material[i]));
   // The inlets' smallest particles (a silo filled from empty has none at t = 0).
@@ -114,6 +125,7 @@ TimeStepAdvice time_step_advice(const Scene& scene) {
   a.contact_pp = pp;
   a.contact_pb = std::isfinite(pb) ? pb : 0.0;
   a.recommended = std::min(std::isfinite(rayleigh) ? 0.2 * rayleigh : inf, std::min(pp, pb) / 50.0);
+  if (a.viscous > 0.0) a.recommended = std::min(a.recommended, 0.5 * a.viscous);
   return a;
 }
 
@@ -139,6 +151,7 @@ void print_summary(const Scene& scene) {
     fmt::print("  {:<16} density {:.6g} kg/m^3  E {}  nu {:.4g}\n", m.name, m.density,
                is_rigid(m) ? std::string("rigid") : fmt::format("{:.6g} Pa", m.young), m.poisson);
   for (const std::string& line : clump_summary_lines(scene)) fmt::print("{}\n", line);
+  for (const std::string& line : cohesion_summary_lines(scene)) fmt::print("{}\n", line);
   fmt::print("barriers: {} triangles in {} groups\n", b.size(), b.group_names.size());
   for (std::size_t g = 0; g < b.group_names.size(); ++g) {
     std::size_t n = 0, rigid = 0;
@@ -159,8 +172,10 @@ void print_summary(const Scene& scene) {
   const TimeStepAdvice a = time_step_advice(scene);
   fmt::print("time step: {}; {}: particle-particle {:.4g} s", rayleigh_text(a), contact_text(a), a.contact_pp);
   if (a.contact_pb > 0.0) fmt::print(", particle-barrier {:.4g} s", a.contact_pb);
-  fmt::print("\nrecommended dt <= {:.4g} s ({})\n", a.recommended,
-             a.hertz ? "min of 0.2 x Rayleigh time and contact time / 50" : "contact time / 50");
+  if (a.viscous > 0.0) fmt::print("; viscous bridges' relaxation time m*/c {:.4g} s", a.viscous);
+  fmt::print("\nrecommended dt <= {:.4g} s ({}{})\n", a.recommended,
+             a.hertz ? "min of 0.2 x Rayleigh time and contact time / 50" : "contact time / 50",
+             a.viscous > 0.0 ? ", and 0.5 x the bridges' relaxation time" : "");
 }
 
 bool warn_about_time_step(const Scene& scene) {

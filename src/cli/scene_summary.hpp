@@ -15,7 +15,8 @@ struct TimeStepAdvice {
   bool linear = false;  // some contact uses a law of constant stiffness (linear): pi sqrt(m*/k_n), any speed
   double reference_speed = 0.0;  // m/s, max(expected impact speed, 1 m/s)
   ImpactSpeed impact;            // the expected impact speed and what sets it
-  double recommended = 0.0;      // s, min(0.2 rayleigh, contact / 50)
+  double viscous = 0.0;          // s, shortest relaxation time m*/c of a viscous liquid bridge (0: none)
+  double recommended = 0.0;      // s, min(0.2 rayleigh, contact / 50, 0.5 viscous)
 };
 
 TimeStepAdvice time_step_advice(const Scene& scene);

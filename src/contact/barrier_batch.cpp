@@ -1,5 +1,6 @@
 #include "contact/barrier_batch.hpp"
 
+#include "contact/cohesive_contact.hpp"
 #include "contact/contact_law.hpp"
 #include "physics/contact_geometry.hpp"
 
@@ -22,10 +23,11 @@ void pad(BarrierBatch& b) {
     b.vt0x[t] = b.vt0x[l], b.vt0y[t] = b.vt0y[l], b.vt0z[t] = b.vt0z[l];
     b.set_law(t, b.law_of(l));
     b.r_star[t] = b.r_star[l], b.m_star[t] = b.m_star[l];
+    b.state0[t] = b.state0[l], b.bridge[t] = b.bridge[l];
   }
 }
 
-template <class Law>
+template <class Law, bool kCohesive>
 void contact_law_lanes(const EvalRequest& req, BarrierBatch& b) {
   const double dt = req.dt, phi = req.phi;
   for (std::size_t t = 0; t < b.lanes(); ++t) {
@@ -42,7 +44,19 @@ void contact_law_lanes(const EvalRequest& req, BarrierBatch& b) {
     c.spring = {b.s0x[t], b.s0y[t], b.s0z[t]};
     c.increment = dt * ((1.0 - phi) * Vec3{b.vt0x[t], b.vt0y[t], b.vt0z[t]} + phi * c.vt);  // (64)
     c.decide = b.decide[t];
-    const ContactResult r = evaluate_contact<Law>(b.law_of(t), c);
+    ContactResult r;
+    if constexpr (kCohesive) {
+      const PairLaw law = b.law_of(t);
+      const CohesiveNormal cn = cohesive_normal<Law>(law, b.bridge[t], b.state0[t], c.r_star, c.m_star, c.overlap,
+                                                     c.normal_rate, 0.0);
+      r = tangential_contact(law.c[kMuS], law.c[kMuD], law.spring, cn.n, c.spring, c.normal, c.increment, c.vt,
+                             c.decide);
+      if ((cn.live & kLawFormed) == 0) without_contact(r, cn.n);
+      b.live[t] = cn.live, b.next[t] = cn.next, b.broke[t] = cn.broke;
+      b.loss[t] = cn.loss;
+    } else {
+      r = evaluate_contact<Law>(b.law_of(t), c);
+    }
     const Vec3 f = r.fn * c.normal + r.ft;
     const Vec3 arm = cross(rP, r.ft);
     b.fx[t] = f.x, b.fy[t] = f.y, b.fz[t] = f.z;
@@ -62,9 +76,12 @@ void contact_law_lanes(const EvalRequest& req, BarrierBatch& b) {
 }  // namespace
 
 // Lane by lane (vectorised; the laws are branch-free).
-void barrier_contact_law(LawSet laws, const EvalRequest& req, BarrierBatch& b) {
+void barrier_contact_law(LawSet laws, const EvalRequest& req, BarrierBatch& b, bool cohesive) {
   pad(b);
-  with_laws(laws, [&]<class Law>(std::type_identity<Law>) { contact_law_lanes<Law>(req, b); });
+  with_laws(laws, [&]<class Law>(std::type_identity<Law>) {
+    if (cohesive) contact_law_lanes<Law, true>(req, b);
+    else contact_law_lanes<Law, false>(req, b);
+  });
 }
 
 }  // namespace mpdem

@@ -56,6 +56,14 @@ struct BarrierBatch {
   double spring_energy_after[kContacts];                  // J, the new spring's energy
   double tangential_loss[kContacts];                      // J, tangential loss (ContactResult)
   std::int64_t slip[kContacts];                           // 1 when sliding (8 bytes, like SlipDecision)
+  // --- cohesion (BarrierContacts::gap() > 0): the committed state, the bridge law (or null), the
+  // state after the law and the energy of what broke (J) (contact/cohesive_contact.hpp)
+  std::uint8_t state0[kContacts];
+  const BridgeLaw* bridge[kContacts];
+  std::uint8_t live[kContacts];
+  std::uint8_t next[kContacts];
+  std::uint8_t broke[kContacts];
+  double loss[kContacts];
 
   // Room for one more particle with all its contacts.
   bool room() const { return count + kSlots <= kContacts && particles < kContacts; }
@@ -77,6 +85,7 @@ struct BarrierBatch {
 // The contact law (contact_law.hpp; physics.md sections 5-7, 13) of every contact of the batch
 // (count >= 1), for the laws the table holds (ContactTable::barrier_laws): fills the results from the inputs, lane by
 // lane.
-void barrier_contact_law(LawSet laws, const EvalRequest& req, BarrierBatch& b);
+// cohesive: with the states and bridges of the batch (contact/cohesive_contact.hpp).
+void barrier_contact_law(LawSet laws, const EvalRequest& req, BarrierBatch& b, bool cohesive = false);
 
 }  // namespace mpdem

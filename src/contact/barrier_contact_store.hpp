@@ -33,9 +33,11 @@ struct BarrierSlot {          // history of one contact (no padding: checkpoints
   Vec3 vt0;                   // m/s, tangential velocity (start of the next step)
   Vec3 normal;                // -, contact normal (towards the particle)
   Vec3 wr0;                   // rad/s, the particle's rotation (start of the next step, rolling law)
+  std::uint32_t state = 0;    // cohesion: kLawFormed | kBridgeFormed (contact/cohesive_contact.hpp)
+  std::uint32_t unused = 0;   // (padding, written as zero)
 };
 // Checkpoints hold these records byte for byte: a layout change is a format change.
-static_assert(sizeof(BarrierSlot) == 104 && std::is_trivially_copyable_v<BarrierSlot>,
+static_assert(sizeof(BarrierSlot) == 112 && std::is_trivially_copyable_v<BarrierSlot>,
               "BarrierSlot changed: bump kCheckpointFormat (io/checkpoint_format.hpp) and this size");
 
 struct BarrierLoad {          // one contact's action on its element

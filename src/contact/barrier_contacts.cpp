@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 
@@ -10,6 +11,7 @@
 #include "physics/rolling.hpp"
 #include "physics/tangential.hpp"
 #include "contact/barrier_batch.hpp"
+#include "contact/cohesive_contact.hpp"
 
 namespace mpdem {
 
@@ -157,7 +159,13 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
   if (direct)
     for (std::size_t e = 0; e < m; ++e) b.pressure[e] = element_pressure(b, e);
   if (req.commit) store_.commit();
-  return {static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3], sums[5], sums[6], sums[7], sums[8]};
+  PairStats out{static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3], sums[5], sums[6], sums[7], sums[8]};
+  out.bridges = static_cast<std::size_t>(sums[9]);
+  out.breaks = static_cast<std::size_t>(sums[10]);
+  out.ruptures = static_cast<std::size_t>(sums[11]);
+  out.cohesion_loss = sums[12];
+  out.elastic_magnitude = sums[13];
+  return out;
 }
 
 template <bool kRotating>
@@ -172,9 +180,24 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
     if (req.iteration == 1) store_.first_used(k) = 0;
     return;
   }
-  detect_barrier_contacts(b, topo_, tris_, p.x[i], p.radius[i], cand, found);
   const BarrierSlot* old = store_.committed(k);
   const int old_used = store_.committed_used(k);
+  if (cohesive_) {
+    // Detected gap_ beyond touching; kept when touching, or apart with a formed neck or bridge it
+    // may take the history of (the same element, or a seam neighbour's as below).
+    detect_barrier_contacts(b, topo_, tris_, p.x[i], p.radius[i] + gap_, cand, found);
+    std::erase_if(found, [&](BarrierContact& f) {
+      f.overlap -= gap_;
+      if (f.overlap > 0.0) return false;
+      for (int s = 0; s < old_used; ++s)
+        if (old[s].state != 0 &&
+            (old[s].element == static_cast<std::int32_t>(f.element) || dot(old[s].normal, f.normal) > kInheritCos))
+          return false;
+      return true;
+    });
+  } else {
+    detect_barrier_contacts(b, topo_, tris_, p.x[i], p.radius[i], cand, found);
+  }
   const BarrierFirst* first = store_.first(k);
   const std::size_t first_used = store_.first_used(k);
   // At most one contact per candidate element, so the capacity never binds before kSlots.
@@ -248,7 +271,36 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
     batch.vt0x[t] = vt0.x, batch.vt0y[t] = vt0.y, batch.vt0z[t] = vt0.z;
     batch.set_law(t, law);
     batch.r_star[t] = r, batch.m_star[t] = m;
+    if (cohesive_) {
+      batch.state0[t] = static_cast<std::uint8_t>(hist ? hist->state : 0u);
+      batch.bridge[t] = table_.any_barrier_bridges() ? &table_.barrier_bridge(static_cast<std::size_t>(p.material[i]),
+                                                                              static_cast<std::size_t>(b.material[e]))
+                                                     : nullptr;
+    }
   }
+  // Cohesion: a formed contact no longer detected (moved beyond the reach within one step) broke.
+  if (cohesive_)
+    for (int s = 0; s < old_used; ++s) {
+      if (old[s].state == 0) continue;
+      bool held = false;
+      for (std::size_t c = 0; c < count; ++c) held |= batch.hist[batch.count - count + c] == &old[s];
+      if (held) continue;
+      const auto e = static_cast<std::size_t>(old[s].element);
+      const PairLaw& law = table_.barrier_pair(static_cast<std::size_t>(p.material[i]),
+                                               static_cast<std::size_t>(b.material[e]));
+      const BridgeLaw* bridge = table_.any_barrier_bridges()
+                                    ? &table_.barrier_bridge(static_cast<std::size_t>(p.material[i]), b.material[e])
+                                    : nullptr;
+      with_law(law.law, [&]<class Law>(std::type_identity<Law>) {
+        const CohesiveNormal gone = cohesive_normal<Law>(law, bridge, static_cast<std::uint8_t>(old[s].state), r, m,
+                                                         -1e300, 0.0, 0.0);
+        if (req.commit) {
+          acc[10] += (gone.broke & kLawFormed) != 0 ? 1.0 : 0.0;
+          acc[11] += (gone.broke & kBridgeFormed) != 0 ? 1.0 : 0.0;
+          acc[12] += gone.loss;
+        }
+      });
+    }
   batch.k[batch.particles] = static_cast<std::uint32_t>(k);
   batch.end[batch.particles] = static_cast<std::uint32_t>(batch.count);
   ++batch.particles;
@@ -257,7 +309,7 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
 void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch,
                             BarrierSums& acc) {
   if (batch.particles == 0) return;
-  if (batch.count > 0) barrier_contact_law(table_.barrier_laws(), req, batch);
+  if (batch.count > 0) barrier_contact_law(table_.barrier_laws(), req, batch, cohesive_);
   // In particle order, each particle's contacts in order: the original per-particle sums.
   const bool rolling = table_.any_rolling();
   const double dt = req.dt;
@@ -296,6 +348,7 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
       ts.vt0 = {batch.vtx[t], batch.vty[t], batch.vtz[t]};
       ts.normal = {batch.nx[t], batch.ny[t], batch.nz[t]};
       ts.wr0 = w;
+      ts.state = cohesive_ ? batch.next[t] : 0u;
       BarrierLoad& ls = load[c];
       ls.force = -f;
       ls.point = batch.point[t];
@@ -307,7 +360,18 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
         loads_to->moment[e] += cross(ls.point - centres_[e], ls.force);
       }
       if (req.iteration == 1) first[c] = BarrierFirst{el, slipped};
-      sum0 += 1.0;
+      if (cohesive_) {
+        sum0 += (batch.live[t] & kLawFormed) != 0 ? 1.0 : 0.0;
+        acc[9] += (batch.live[t] & kBridgeFormed) != 0 ? 1.0 : 0.0;
+        acc[13] += std::abs(batch.energy[t]);
+        if (req.commit) {
+          acc[10] += (batch.broke[t] & kLawFormed) != 0 ? 1.0 : 0.0;
+          acc[11] += (batch.broke[t] & kBridgeFormed) != 0 ? 1.0 : 0.0;
+          acc[12] += batch.loss[t];
+        }
+      } else {
+        sum0 += 1.0;
+      }
       sum1 += batch.energy[t];
       sum2 += batch.damping[t];
       sum3 -= dot(roll, w);

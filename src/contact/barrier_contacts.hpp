@@ -71,12 +71,20 @@ class BarrierContacts {
   // The contact records: after a committed evaluation, committed(k) and loads(k) hold its
   // contacts, load_used(k) of them (output/contact_list.cpp reads them).
   const BarrierContactStore& store() const { return store_; }
+  // Cohesion: how far beyond touching contacts are detected (m, >= 0: the largest break or
+  // rupture distance of the table's barrier pairs; contact/cohesion_reach.hpp), and whether the
+  // contacts keep a cohesion state; set by the owner (0: the plain contacts).
+  void set_gap(double gap, bool cohesive) {
+    gap_ = gap;
+    cohesive_ = cohesive;
+  }
 
  private:
   // {contacts, elastic energy J, normal damping power W, rolling friction power W, dropped
   // contacts, tangential loss J of the sticking and of the sliding contacts, stored springs'
-  // energy J at this step's stiffness and of the new springs (ContactResult)}
-  using BarrierSums = std::array<double, 9>;
+  // energy J at this step's stiffness and of the new springs (ContactResult), bridges held,
+  // contacts and bridges broken, the energy they held J, the contacts' |stored energy| J (cohesion)}
+  using BarrierSums = std::array<double, 14>;
   // Contacts of active particle k, stage 1: detects them, finds their history, sets its record
   // counts and appends the contacts with the particle's values to the batch (acc[4]: dropped).
   // kRotating: some element rotates (surface velocity at the contact point, springs turned).
@@ -98,6 +106,8 @@ class BarrierContacts {
   std::vector<Vec3> centres_;          // [M] m, their centroids (Barriers::centre), moment arms
   std::vector<Mat3> step_turn_;        // [L] -, each rotation law's turn since the step's start
   std::uint64_t overflows_ = 0;
+  double gap_ = 0.0;       // m, see set_gap
+  bool cohesive_ = false;  // see set_gap
 };
 
 }  // namespace mpdem

@@ -22,6 +22,7 @@ struct ContactState {
   double overlap = 0.0;      // m, > 0 in contact
   double r_star = 0.0;       // m, (52) (barrier: R)
   double m_star = 0.0;       // kg, (53) (barrier: m)
+  double inv_reach = 0.0;    // 1/m, 1 / (R_i + R_j) (barrier: 0)
   Vec3 normal;               // -, unit, towards the body the force acts on
   double normal_rate = 0.0;  // m/s, v_rel . n (negative approaching)
   Vec3 vt;                   // m/s, tangential relative velocity (60)
@@ -32,7 +33,7 @@ struct ContactState {
 
 struct ContactResult {
   double fn = 0.0;        // N, net normal force along n, >= -adhesion where the law clamps
-  double fn_limit = 0.0;  // N, max(fn + adhesion, 0): what Coulomb's limit and rolling resistance scale with
+  double fn_limit = 0.0;  // N, max(fn + load_offset, 0): what Coulomb's limit and rolling resistance scale with
   Vec3 ft;                // N, tangential force
   Vec3 spring;            // m (N: incremental form, k_t s), spring for the next step
   bool slipped = false;
@@ -53,7 +54,7 @@ struct ContactResult {
 // The normal half of a contact: what the tangential half and the sums need of it.
 struct NormalContact {
   double fn = 0.0;        // N, net normal force (ContactResult::fn)
-  double fn_limit = 0.0;  // N, max(fn + adhesion, 0)
+  double fn_limit = 0.0;  // N, max(fn + load_offset, 0)
   double k_t = 0.0;       // N/m, tangential stiffness
   double d_t = 0.0;       // N s/m, tangential damping
   double energy = 0.0;    // J, elastic energy of the normal spring
@@ -66,12 +67,14 @@ struct NormalContact {
 // (f_el - f_n) rate (tests/support/hertz_oracle.hpp's damped_normal_force explains the clamped case).
 // An adhesive law (Law::kAdhesion) clamps at the pull-off instead of zero: the dashpot never makes
 // the force more attractive than -adhesion, and Coulomb's limit and rolling resistance scale with
-// the load pressing the surfaces together, fn + adhesion (the adhesion acts as an extra load).
+// the load pressing the surfaces together, fn + load_offset (DMT: the adhesion acts as an extra
+// load; JKR: fn + 2 F_c, Thornton's).
+// inv_reach: 1 / (R_i + R_j) (m^-1; 0 at a barrier), for laws that need the overlap's exact geometry.
 template <class Law>
-inline NormalContact normal_contact(const PairLaw& c, double r_star, double m_star, double overlap,
-                                    double normal_rate) {
+inline NormalContact normal_contact(const PairLaw& c, double r_star, double m_star, double overlap, double normal_rate,
+                                    double inv_reach = 0.0) {
   NormalContact out;
-  const Stiffness k = Law::stiffness(c, r_star, overlap);
+  const Stiffness k = Law::stiffness(c, r_star, overlap, inv_reach);
   const double mass_root = std::sqrt(m_star * k.k_n);  // sqrt(kg N/m)
   const double d_n = 2.0 * c.c[kXiN] * mass_root;
   out.d_t = 2.0 * c.c[kXiT] * mass_root * c.c[kShearRoot];
@@ -79,7 +82,7 @@ inline NormalContact normal_contact(const PairLaw& c, double r_star, double m_st
   if constexpr (Law::kAdhesion) {
     const double floor = 0.0 - k.adhesion;  // +0 without adhesion, as the clamp at zero gives
     out.fn = (k.clamp & (f < floor)) ? floor : f;
-    const double load = out.fn + k.adhesion;
+    const double load = out.fn + k.load_offset;
     out.fn_limit = load > 0.0 ? load : 0.0;
   } else {
     out.fn = (k.clamp & (f < 0.0)) ? 0.0 : f;
@@ -130,8 +133,8 @@ inline ContactResult tangential_contact(double mu_s, double mu_d, TangentialSpri
 template <class Law>
 inline ContactResult evaluate_contact(const PairLaw& c, const ContactState& s) {
   return tangential_contact(c.c[kMuS], c.c[kMuD], c.spring,
-                            normal_contact<Law>(c, s.r_star, s.m_star, s.overlap, s.normal_rate), s.spring, s.normal,
-                            s.increment, s.vt, s.decide);
+                            normal_contact<Law>(c, s.r_star, s.m_star, s.overlap, s.normal_rate, s.inv_reach), s.spring,
+                            s.normal, s.increment, s.vt, s.decide);
 }
 
 }  // namespace mpdem

@@ -14,20 +14,24 @@ namespace mpdem {
 
 namespace {
 
-// The defaults of one contact kind with the overrides of every [[contact.pair]] entry that names
-// materials a and b (or the materials they are variants of) and applies to that kind.
-ContactLawParams pair_params(const Model& model, const ContactLawParams& defaults, std::size_t a, std::size_t b,
-                             bool particle_particle) {
+// Whether a [[contact.pair]] entry names materials a and b (or the materials they are variants
+// of) and applies to the contact kind.
+bool applies(const Model& model, const ContactPairParams& e, std::size_t a, std::size_t b, bool particle_particle) {
+  if (particle_particle ? !e.particle_particle : !e.particle_barrier) return false;
   const auto named = [&](std::size_t m, const std::string& name) {
     const Material& mat = model.materials[m];
     return mat.name == name || (mat.variant_of >= 0 && model.materials[mat.variant_of].name == name);
   };
+  return (named(a, e.material_a) && named(b, e.material_b)) || (named(a, e.material_b) && named(b, e.material_a));
+}
+
+// The defaults of one contact kind with the overrides of every [[contact.pair]] entry that
+// applies to materials a and b and that kind.
+ContactLawParams pair_params(const Model& model, const ContactLawParams& defaults, std::size_t a, std::size_t b,
+                             bool particle_particle) {
   ContactLawParams p = defaults;
   for (const ContactPairParams& e : model.params.contact.pairs) {
-    if (particle_particle ? !e.particle_particle : !e.particle_barrier) continue;
-    const bool match = (named(a, e.material_a) && named(b, e.material_b)) ||
-                       (named(a, e.material_b) && named(b, e.material_a));
-    if (!match) continue;
+    if (!applies(model, e, a, b, particle_particle)) continue;
     if (e.law) p.law = *e.law;
     if (e.cohesion) p.cohesion = *e.cohesion;
     for (const auto& [key, value] : e.law_keys) p.law_keys.insert_or_assign(key, value);
@@ -42,6 +46,26 @@ ContactLawParams pair_params(const Model& model, const ContactLawParams& default
     if (e.tangential_damping) p.tangential_damping = e.tangential_damping;
   }
   return p;
+}
+
+// The bridge of materials a and b for one contact kind: [liquid_bridge] (at barriers only with
+// barriers = true), then every applying entry's liquid_bridge table, which turns bridges on.
+BridgeLaw pair_bridge(const Model& model, std::size_t a, std::size_t b, bool particle_particle) {
+  const LiquidBridgeParams& d = model.params.contact.liquid_bridge;
+  LiquidBridgeKeys k = d.defaults.value_or(LiquidBridgeKeys{});
+  bool on = d.defaults.has_value() && (particle_particle || d.barriers);
+  for (const ContactPairParams& e : model.params.contact.pairs) {
+    if (!e.liquid_bridge || !applies(model, e, a, b, particle_particle)) continue;
+    k = overridden(k, *e.liquid_bridge);
+    on = true;
+  }
+  return resolve_bridge_law(k, on);
+}
+
+double reach_of(const std::vector<BridgeLaw>& laws, double r_max, bool barrier) {
+  double reach = 0.0;
+  for (const BridgeLaw& l : laws) reach = std::max(reach, bridge_reach(l, r_max, barrier));
+  return reach;
 }
 
 LawSet laws_of(const std::vector<PairLaw>& laws) {
@@ -82,11 +106,32 @@ PairLaw resolve_pair_law(const ContactLawParams& p, double E_star, double G_star
   return l;
 }
 
+BridgeLaw resolve_bridge_law(const LiquidBridgeKeys& k, bool on) {
+  const std::string model = k.model.value_or(LiquidBridgeKeys::kModel);
+  BridgeLaw b;
+  if (!on || model == "none") return b;
+  if (model == "willett") b.model = BridgeModel::willett;
+  else if (model == "rabinovich") b.model = BridgeModel::rabinovich;
+  else throw std::invalid_argument("no liquid bridge model is called \"" + model + "\"");
+  b.surface_tension = k.surface_tension.value_or(0.0);
+  b.contact_angle = k.contact_angle.value_or(0.0);
+  b.volume = k.volume.value_or(0.0);
+  b.liquid_fraction = k.liquid_fraction.value_or(0.0);
+  b.viscosity = k.viscosity.value_or(0.0);
+  b.min_gap = k.min_gap.value_or(LiquidBridgeKeys::kMinGap);
+  return b;
+}
+
+double ContactTable::bridge_reach(double r_max) const { return reach_of(particle_bridges_, r_max, false); }
+double ContactTable::barrier_bridge_reach(double r_max) const { return reach_of(barrier_bridges_, r_max, true); }
+
 void ContactTable::build(const Model& model) {
   const std::vector<Material>& mats = model.materials;
   n_ = mats.size();
   particle_pairs_.resize(n_ * n_);
   barrier_pairs_.resize(n_ * n_);
+  particle_bridges_.resize(n_ * n_);
+  barrier_bridges_.resize(n_ * n_);
   rolling_ = false;
   for (std::size_t a = 0; a < n_; ++a) {
     const Material& ma = mats[a];
@@ -110,8 +155,15 @@ void ContactTable::build(const Model& model) {
           rigid_a ? 0.0 : barrier_effective_modulus(ma.young, ma.poisson, mb.young, mb.poisson),
           rigid_a ? 0.0 : barrier_effective_shear_modulus(ma.young, ma.poisson, mb.young, mb.poisson));
       rolling_ = rolling_ || particle_pairs_[a * n_ + b].mu_r() > 0.0 || barrier_pairs_[a * n_ + b].mu_r() > 0.0;
+      particle_bridges_[a * n_ + b] = pair_bridge(model, a, b, true);
+      barrier_bridges_[a * n_ + b] = pair_bridge(model, a, b, false);
     }
   }
+  const auto any = [](const std::vector<BridgeLaw>& v) {
+    return std::any_of(v.begin(), v.end(), [](const BridgeLaw& l) { return l.model != BridgeModel::none; });
+  };
+  any_particle_bridges_ = any(particle_bridges_);
+  any_barrier_bridges_ = any(barrier_bridges_);
   particle_laws_ = laws_of(particle_pairs_);
   barrier_laws_ = laws_of(barrier_pairs_);
 }

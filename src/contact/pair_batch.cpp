@@ -4,6 +4,7 @@
 #include <cmath>
 #include <type_traits>
 
+#include "contact/cohesive_contact.hpp"
 #include "contact/contact_law.hpp"
 #include "contact/pair_candidates.hpp"
 #include "physics/rolling.hpp"
@@ -27,7 +28,7 @@ constexpr std::size_t kAhead = 32;  // slots ahead to prefetch
 // Stage 1a: the members' values for the batch (indexed loads). Kept scalar: vectorised, the
 // compiler emulates the gathers element by element, which is slower than plain loads.
 // Several materials (!kUniform): each pair's law from the table, by the members' materials.
-template <bool kUniform>
+template <bool kUniform, bool kCohesive = false>
 MPDEM_SCALAR_LOOPS void gather_members(const PairPass& pass, Batch& b) {
   // Lanes past count repeat the last candidate (run() is called with count >= 1).
   for (std::size_t t = b.count; t < b.lanes(); ++t) {
@@ -50,6 +51,12 @@ MPDEM_SCALAR_LOOPS void gather_members(const PairPass& pass, Batch& b) {
     }
     b.radius_product[t] = ri * rj;
     b.inverse_mass_sum[t] = ti.inv_mass + tj.inv_mass;
+    if constexpr (kCohesive) {
+      b.state0[t] = pass.state[b.slot[t]];
+      b.bridge[t] = pass.bridges ? pass.bridges + static_cast<std::size_t>(pass.material[i]) * pass.materials +
+                                       static_cast<std::size_t>(pass.material[j])
+                                 : nullptr;
+    }
   }
 }
 
@@ -74,15 +81,17 @@ MPDEM_SCALAR_LOOPS void gather_history(const PairPass& pass, Batch& b) {
 // Stage 1: geometry and kinematics (60)-(62) and the normal half of the law (normal_contact,
 // contact_law.hpp), over contiguous arrays (vectorised; an apart candidate, overlap 0, gets finite
 // values that apply() skips). One loop: the intermediate values stay in registers.
-template <bool kUniform, class Law>
+// kCohesive (PairPass::state): the overlap keeps its sign (negative: a gap), and the law and a
+// liquid bridge act by the contact's formed state (contact/cohesive_contact.hpp), which records
+// what acts now and what broke with the energy it held; scalar, the bridges read through the table.
+template <bool kUniform, class Law, bool kCohesive = false>
 void geometry_normal(const PairPass& pass, Batch& b) {
-  gather_members<kUniform>(pass, b);
+  gather_members<kUniform, kCohesive>(pass, b);
   const PairLaw u = pass.uniform_law;
   for (std::size_t t = 0; t < b.lanes(); ++t) {
     const Vec3 d{b.dx[t], b.dy[t], b.dz[t]};
     const double dist = std::sqrt(norm2(d));
     const double ov = b.reach[t] - dist;
-    const double overlap = ov > 0.0 ? ov : 0.0;
     // Coincident centres get +z, so nothing becomes NaN.
     const double inv = 1.0 / (dist > 0.0 ? dist : 1.0);
     const Vec3 nrm = dist > 0.0 ? d * inv : Vec3{0.0, 0.0, 1.0};
@@ -92,9 +101,20 @@ void geometry_normal(const PairPass& pass, Batch& b) {
     // (61) with the arms r_Pi = -R_i n, r_Pj = R_j n (62).
     const Vec3 vrel = Vec3{b.dvx[t], b.dvy[t], b.dvz[t]} - cross(Vec3{b.wsx[t], b.wsy[t], b.wsz[t]}, nrm);
     const double vn = dot(vrel, nrm);
-    const Vec3 vt = vrel - vn * nrm;  // (60)
-    const NormalContact n = normal_contact<Law>(kUniform ? u : b.pair_law(t), r, m, overlap, vn);
-    b.overlap[t] = overlap;
+    const Vec3 vt = vrel - vn * nrm;                                                     // (60)
+    const double inv_reach = kCohesive || Law::kExactGeometry ? 1.0 / b.reach[t] : 0.0;  // 1/m (SJKR's lens)
+    NormalContact n;
+    if constexpr (kCohesive) {
+      const CohesiveNormal cn = cohesive_normal<Law>(b.pair_law(t), b.bridge[t], b.state0[t], r, m, ov, vn, inv_reach);
+      n = cn.n;
+      b.live[t] = cn.live, b.next[t] = cn.next, b.broke[t] = cn.broke;
+      b.loss[t] = cn.loss;
+      b.overlap[t] = ov;
+    } else {
+      const double overlap = ov > 0.0 ? ov : 0.0;
+      n = normal_contact<Law>(kUniform ? u : b.pair_law(t), r, m, overlap, vn, inv_reach);
+      b.overlap[t] = overlap;
+    }
     b.nx[t] = nrm.x, b.ny[t] = nrm.y, b.nz[t] = nrm.z;
     b.vtx[t] = vt.x, b.vty[t] = vt.y, b.vtz[t] = vt.z;
     b.r_star[t] = r;
@@ -106,7 +126,7 @@ void geometry_normal(const PairPass& pass, Batch& b) {
 
 // Stage 2: the tangential half of the law (tangential_contact) with the spring increment (64)
 // (Verlet: phi = 1), and the contact's force, torque arm and energy terms (vectorised).
-template <bool kUniform, bool kStepStart>
+template <bool kUniform, bool kStepStart, bool kCohesive = false>
 void tangential_stage(const PairPass& pass, Batch& b) {
   gather_history<kStepStart>(pass, b);
   const double dt = pass.dt, phi = pass.phi, dt_phi = pass.dt * pass.phi;
@@ -126,9 +146,13 @@ void tangential_stage(const PairPass& pass, Batch& b) {
     n.fn = b.fn_net[t], n.fn_limit = b.fn_load[t];
     n.k_t = b.tangential_stiffness[t], n.d_t = b.tangential_damping[t];
     n.energy = b.normal_energy[t], n.damping = b.normal_damping[t];
-    const ContactResult r = tangential_contact(
+    ContactResult r = tangential_contact(
         kUniform ? mu_s_u : b.coefficients[kMuS][t], kUniform ? mu_d_u : b.coefficients[kMuD][t],
         kUniform ? form_u : b.spring_form[t], n, {b.s0x[t], b.s0y[t], b.s0z[t]}, nrm, increment, vt, decide);
+    if constexpr (kCohesive) {
+      // A bridge alone (the law apart) pulls along the normal only: no spring, no friction.
+      if ((b.live[t] & kLawFormed) == 0) without_contact(r, n);
+    }
     b.sx[t] = r.spring.x, b.sy[t] = r.spring.y, b.sz[t] = r.spring.z;
     b.slip[t] = r.slipped ? 1 : 0;
     const Vec3 f = r.fn * nrm + r.ft;
@@ -147,7 +171,7 @@ void tangential_stage(const PairPass& pass, Batch& b) {
 // The sums and the arrays' addresses are local: kept in out and pass, every store to a particle
 // would make the compiler reload them, and each contact's sums would wait for the previous
 // contact's store (a store-to-load chain through memory).
-template <bool kUniform>
+template <bool kUniform, bool kCohesive = false>
 void apply(const PairPass& pass, const Batch& b, PairBlockSums& out) {
   const bool rolling = pass.rolling, commit = pass.commit, first_iteration = pass.iteration == 1;
   const double uniform_mu_r = pass.uniform_law.mu_r();
@@ -163,7 +187,20 @@ void apply(const PairPass& pass, const Batch& b, PairBlockSums& out) {
   PairBlockSums s = out;
   for (std::size_t t = 0; t < b.count; ++t) {
     const std::size_t i = b.i[t], j = b.j[t], k = b.slot[t];
-    if (!(b.overlap[t] > 0.0)) {  // a candidate within the margin but apart: forget its history
+    if constexpr (kCohesive) {
+      if (commit) {
+        // What held and broke now: its energy is dissipated (the force drops to zero).
+        s.breaks += (b.broke[t] & kLawFormed) != 0 ? 1.0 : 0.0;
+        s.ruptures += (b.broke[t] & kBridgeFormed) != 0 ? 1.0 : 0.0;
+        s.cohesion_loss += b.loss[t];
+        pass.state[k] = b.next[t];
+      }
+      s.bridges += (b.live[t] & kBridgeFormed) != 0 ? 1.0 : 0.0;
+      if (b.live[t] == 0) {
+        if (commit) forget_history(pass, k);
+        continue;
+      }
+    } else if (!(b.overlap[t] > 0.0)) {  // a candidate within the margin but apart: forget its history
       if (commit) forget_history(pass, k);
       continue;
     }
@@ -192,8 +229,9 @@ void apply(const PairPass& pass, const Batch& b, PairBlockSums& out) {
     Vec3* tj = (internal ? torque : cross_torque) + (internal ? j : b.cross[t]);
     *fj -= f;
     *tj -= roll + rj * arm;
-    s.contacts += 1.0;
+    s.contacts += kCohesive ? ((b.live[t] & kLawFormed) != 0 ? 1.0 : 0.0) : 1.0;
     s.elastic_energy += b.energy[t];
+    if constexpr (kCohesive) s.elastic_magnitude += std::abs(b.energy[t]);
     s.damping_power += b.damping[t];
     s.rolling_power -= dot(roll, wrel);
     // Selected values, not a selected address: that would keep the sums in memory.
@@ -211,23 +249,26 @@ void apply(const PairPass& pass, const Batch& b, PairBlockSums& out) {
 
 // Recording (PairPass::record): each touching slot's contact, from the batch's results, in a loop
 // of its own so that apply's loop is the same with recording off.
+template <bool kCohesive>
 void record_batch(const PairPass& pass, const Batch& b) {
-  for (std::size_t t = 0; t < b.count; ++t)
-    if (b.overlap[t] > 0.0)
-      pass.record[b.slot[t]] = {Vec3{b.fx[t], b.fy[t], b.fz[t]}, b.normal(t), b.overlap[t], b.fn_net[t],
-                                static_cast<std::uint32_t>(b.slip[t])};
+  for (std::size_t t = 0; t < b.count; ++t) {
+    const std::uint32_t live = kCohesive ? b.live[t] : (b.overlap[t] > 0.0 ? kLawFormed : 0u);
+    if (live != 0)
+      pass.record[b.slot[t]] = {Vec3{b.fx[t], b.fy[t], b.fz[t]},       b.normal(t), b.overlap[t], b.fn_net[t],
+                                static_cast<std::uint32_t>(b.slip[t]), live};
+  }
 }
 
-template <bool kUniform, class Law, bool kStepStart>
+template <bool kUniform, class Law, bool kStepStart, bool kCohesive>
 void run(const PairPass& pass, Batch& b, PairBlockSums& out) {
-  geometry_normal<kUniform, Law>(pass, b);
-  tangential_stage<kUniform, kStepStart>(pass, b);
-  apply<kUniform>(pass, b, out);
-  if (pass.record) record_batch(pass, b);
+  geometry_normal<kUniform, Law, kCohesive>(pass, b);
+  tangential_stage<kUniform, kStepStart, kCohesive>(pass, b);
+  apply<kUniform, kCohesive>(pass, b, out);
+  if (pass.record) record_batch<kCohesive>(pass, b);
   b.count = 0;
 }
 
-template <bool kUniform, class Law, bool kStepStart>
+template <bool kUniform, class Law, bool kStepStart, bool kCohesive = false>
 PairBlockSums evaluate_block(const PairPass& pass, std::size_t lo, std::size_t hi, std::size_t cross_first,
                              std::size_t cross_last) {
   PairBlockSums out;
@@ -276,23 +317,30 @@ PairBlockSums evaluate_block(const PairPass& pass, std::size_t lo, std::size_t h
     }
     if (k + 4 * kAhead < pass.pairs) __builtin_prefetch(pass.idx + k + 4 * kAhead);
     const std::size_t cnt = std::min(kGroup, k1 - k);
+    if constexpr (kCohesive) {
+      select_scalar<true>(pass, b, k, cnt, end, c);
+    } else {
 #if MPDEM_VECTOR_SELECT
-    if (pass.vector_select) select_vector(pass, b, k, cnt, end, c);
-    else select_scalar(pass, b, k, cnt, end, c);
+      if (pass.vector_select) select_vector(pass, b, k, cnt, end, c);
+      else select_scalar(pass, b, k, cnt, end, c);
 #else
-    select_scalar(pass, b, k, cnt, end, c);
+      select_scalar(pass, b, k, cnt, end, c);
 #endif
-    if (b.count + kGroup > kBatch) run<kUniform, Law, kStepStart>(pass, b, out);
+    }
+    if (b.count + kGroup > kBatch) run<kUniform, Law, kStepStart, kCohesive>(pass, b, out);
   }
-  if (b.count > 0) run<kUniform, Law, kStepStart>(pass, b, out);
+  if (b.count > 0) run<kUniform, Law, kStepStart, kCohesive>(pass, b, out);
   return out;
 }
 
 // One instantiation per law mix, material count (one or several) and integrator history. One
-// material has one law: no mix then.
+// material has one law: no mix then. Cohesion: the table's path (several materials) for any count.
 template <class Law>
 PairBlockSums block_for_law(const PairPass& pass, std::size_t lo, std::size_t hi, std::size_t c0, std::size_t c1) {
   const bool step_start = pass.vt0 != nullptr;
+  if (pass.state)
+    return step_start ? evaluate_block<false, Law, true, true>(pass, lo, hi, c0, c1)
+                      : evaluate_block<false, Law, false, true>(pass, lo, hi, c0, c1);
   if constexpr (!std::is_same_v<Law, MixedLaw>) {
     if (pass.uniform)
       return step_start ? evaluate_block<true, Law, true>(pass, lo, hi, c0, c1)

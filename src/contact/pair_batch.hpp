@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "core/vec3.hpp"
+#include "contact/bridges/bridge_law.hpp"
 #include "contact/contact_record.hpp"
 #include "contact/contact_table.hpp"
 
@@ -41,8 +42,16 @@ struct PairBlockSums {
   double sliding_loss = 0.0;    // J, tangential loss of the sliding contacts
   double spring_before = 0.0;   // J, the stored springs' energy at this step's stiffness
   double spring_after = 0.0;    // J, the new springs' energy
+  // Cohesion (PairPass::state): bridges held, contacts and bridges that broke at this commit,
+  // and the energy they held then (J, dissipated).
+  double bridges = 0.0;
+  double breaks = 0.0;
+  double ruptures = 0.0;
+  double cohesion_loss = 0.0;
+  double elastic_magnitude = 0.0;  // J, sum of |stored energy| of the contacts (cohesion only)
   DeepestPair deepest;
 };
+
 
 // Everything the kernel reads and writes, as plain pointers into distinct arrays.
 struct PairPass {
@@ -78,6 +87,10 @@ struct PairPass {
   std::size_t pairs = 0;                    // list slots
   bool vector_select = true;                // AVX-512 candidate selection, when built in (kVectorSelect)
   PairRecord* __restrict record = nullptr;  // [pairs] each touching slot's contact, or null (not recording)
+  // Cohesion: a law with hysteresis or liquid bridges in the table. Null / 0 without: the plain kernel.
+  std::uint8_t* __restrict state = nullptr;  // [pairs] kLawFormed | kBridgeFormed (cohesive_contact.hpp), committed
+  const BridgeLaw* __restrict bridges = nullptr;  // [materials x materials] (ContactTable), or null: none
+  double gap = 0.0;                               // m, >= 0, the candidates' reach beyond touching
 };
 
 // True when the build has the AVX-512 candidate selection (bitwise the same as the scalar one).
@@ -85,7 +98,8 @@ extern const bool kVectorSelect;
 
 // A pair is a candidate of the kernel when |x_i - x_j|^2 <= (R_i + R_j)^2 kCandidateReach: a
 // relative margin that leaves the exact decision (overlap > 0) to the contact law, so every
-// touching pair is a candidate.
+// touching pair is a candidate. With cohesion, (R_i + R_j + gap)^2 kCandidateReach, and every
+// slot with a formed state.
 inline constexpr double kCandidateReach = 1.0 + 1e-9;
 
 // Evaluates the pairs whose first member is in [lo, hi), one PairBlocks block; its cross pairs

@@ -74,6 +74,14 @@ struct Batch {
   double tangential_loss[kBatch];             // J, tangential loss of the step (ContactResult)
   // The vector stages run over whole vectors: the lanes past count repeat the last candidate
   // (gather_members, gather_history), so they compute finite values nobody reads.
+  // Cohesion (PairPass::state): the committed state, the bridge law, what acts (0: apart), the
+  // state to commit, what broke and the energy it held (J) (contact/cohesive_contact.hpp).
+  std::uint8_t state0[kBatch];
+  const BridgeLaw* bridge[kBatch];
+  std::uint8_t live[kBatch];
+  std::uint8_t next[kBatch];
+  std::uint8_t broke[kBatch];
+  double loss[kBatch];
   std::size_t lanes() const { return (count + kLanes - 1) / kLanes * kLanes; }
   // Lane t's law, slot by slot (several materials).
   PairLaw pair_law(std::size_t t) const {
@@ -90,6 +98,7 @@ struct Batch {
 // A commit forgets the history of slot k, whose pair is apart.
 inline void forget_history(const PairPass& pass, std::size_t k) {
   pass.spring[k] = Vec3{};
+  if (pass.state) pass.state[k] = 0;
   if (pass.vt0) pass.vt0[k] = Vec3{};
   if (pass.wr0) pass.wr0[k] = Vec3{};
 }
@@ -98,7 +107,9 @@ inline void forget_history(const PairPass& pass, std::size_t k) {
 // the batch, in slot order, and numbers the cross slots from c on. A candidate is a pair within
 // reach up to a relative margin that leaves the exact decision (overlap > 0) to stage 1; a
 // commit forgets the history of the other slots. Every slot is written, the count advances only
-// for a candidate (no data-dependent branch).
+// for a candidate (no data-dependent branch). kCohesive: the reach grows by pass.gap, and a slot
+// with a formed state is a candidate wherever it is (its break is booked by the kernel).
+template <bool kCohesive = false>
 inline void select_scalar(const PairPass& pass, Batch& b, std::size_t k, std::size_t cnt, std::uint32_t end,
                           std::uint32_t& c) {
   for (const std::size_t stop = k + cnt; k < stop; ++k) {
@@ -108,7 +119,13 @@ inline void select_scalar(const PairPass& pass, Batch& b, std::size_t k, std::si
     c += internal ? 0u : 1u;
     const double reach = pass.terms[i].radius + pass.terms[j].radius;
     const Vec3 d = pass.x[i] - pass.x[j];
-    const bool cand = norm2(d) <= reach * reach * kCandidateReach;
+    bool cand;
+    if constexpr (kCohesive) {
+      const double r = reach + pass.gap;
+      cand = (norm2(d) <= r * r * kCandidateReach) | (pass.state[k] != 0);
+    } else {
+      cand = norm2(d) <= reach * reach * kCandidateReach;
+    }
     const std::size_t t = b.count;
     b.i[t] = i;
     b.j[t] = j;

@@ -16,18 +16,28 @@
 namespace mpdem {
 
 bool ParticleContacts::holds_history(std::size_t k) const {
-  return norm2(spring_[k]) > 0.0 || (!vt0_.empty() && norm2(vt0_[k]) > 0.0) || (!wr0_.empty() && norm2(wr0_[k]) > 0.0);
+  return norm2(spring_[k]) > 0.0 || (!vt0_.empty() && norm2(vt0_[k]) > 0.0) ||
+         (!wr0_.empty() && norm2(wr0_[k]) > 0.0) || (!state_.empty() && state_[k] != 0);
+}
+
+bool ParticleContacts::cohesive() const {
+  return any_hysteresis(table_.particle_laws()) || table_.any_particle_bridges();
 }
 
 void ParticleContacts::ensure_history(std::size_t pairs) {
   const bool rolling = step_start_ && table_.any_rolling();
-  // Rolling resistance switched on between steps needs the step-start rotations from then on.
+  const bool cohesion = cohesive();
+  // Rolling resistance switched on between steps needs the step-start rotations from then on,
+  // and cohesion its state.
   if (rolling && spring_.size() == pairs && wr0_.size() != pairs) wr0_.assign(pairs, Vec3{});
+  if (cohesion && spring_.size() == pairs && state_.size() != pairs) state_.assign(pairs, 0);
+  if (!cohesion && !state_.empty() && spring_.size() == pairs) state_.clear();
   if (spring_.size() == pairs) return;  // first use: no history yet
   spring_.assign(pairs, Vec3{});
   vt0_.assign(step_start_ ? pairs : 0, Vec3{});
   wr0_.assign(rolling ? pairs : 0, Vec3{});
   slipped_.assign(step_start_ ? pairs : 0, 0);
+  state_.assign(cohesion ? pairs : 0, 0);
 }
 
 void ParticleContacts::refresh_terms(const Particles& p, std::uint64_t generation) {
@@ -99,7 +109,10 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
                       n,
                       list.num_pairs(),
                       vector_select_,
-                      recording_ ? records_.data() : nullptr};
+                      recording_ ? records_.data() : nullptr,
+                      state_.empty() ? nullptr : state_.data(),
+                      table_.any_particle_bridges() ? table_.particle_bridges() : nullptr,
+                      state_.empty() ? 0.0 : gap_};
 
   // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
   const std::size_t nb = blocks.num_blocks();
@@ -160,6 +173,11 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
     st.sliding_loss += s.sliding_loss;
     st.spring_before += s.spring_before;
     st.spring_after += s.spring_after;
+    st.bridges += static_cast<std::size_t>(s.bridges);
+    st.breaks += static_cast<std::size_t>(s.breaks);
+    st.ruptures += static_cast<std::size_t>(s.ruptures);
+    st.cohesion_loss += s.cohesion_loss;
+    st.elastic_magnitude += s.elastic_magnitude;
     if (s.deepest.ratio > deepest_.ratio) deepest_ = {s.deepest.ratio, s.deepest.first, s.deepest.second, -1};
   }
   return st;
@@ -168,7 +186,8 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
 std::size_t ParticleContacts::memory_bytes() const {
   return (spring_.capacity() + vt0_.capacity() + wr0_.capacity() + cross_force_.capacity() + cross_torque_.capacity()) *
              sizeof(Vec3) +
-         slipped_.capacity() + terms_.capacity() * sizeof(Terms) + block_sums_.capacity() * sizeof(PairBlockSums) +
+         slipped_.capacity() + state_.capacity() + terms_.capacity() * sizeof(Terms) +
+         block_sums_.capacity() * sizeof(PairBlockSums) +
          (block_seconds_.capacity() + block_cost_.capacity()) * sizeof(double);
 }
 
@@ -185,7 +204,7 @@ ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborS
   const auto& idx = list.indices();
   const std::size_t n = list.owned();
   const PeriodicImages& images = search.images();
-  const bool vt = !vt0_.empty(), wr = !wr0_.empty();
+  const bool vt = !vt0_.empty(), wr = !wr0_.empty(), st = !state_.empty();
   // Keyed by the owned members' old indices, the smaller first (a ghost stands for its source,
   // and a pair with one may have its source first: the history is then flipped).
   const auto members = [&](std::size_t i, std::size_t k) {
@@ -205,6 +224,7 @@ ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborS
   h.spring.resize(total);
   if (vt) h.vt0.resize(total);
   if (wr) h.wr0.resize(total);
+  if (st) h.state.resize(total);
   std::vector<std::uint32_t> fill(h.offset.begin(), h.offset.end() - 1);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
@@ -216,12 +236,14 @@ ParticleContacts::CarriedHistory ParticleContacts::carry_history(const NeighborS
       h.spring[c] = flip ? -spring_[k] : spring_[k];
       if (vt) h.vt0[c] = flip ? -vt0_[k] : vt0_[k];
       if (wr) h.wr0[c] = flip ? -wr0_[k] : wr0_[k];
+      if (st) h.state[c] = state_[k];
     }
   // The slot arrays are rebuilt for the new list; free them now (peak memory).
   release(spring_);
   release(vt0_);
   release(wr0_);
   release(slipped_);
+  release(state_);
   return h;
 }
 
@@ -236,6 +258,7 @@ void ParticleContacts::restore_history(const NeighborSearch& search, CarriedHist
   const std::size_t n = list.owned();
   const PeriodicImages& images = search.images();
   const bool vt = !vt0_.empty() && !h.vt0.empty(), wr = !wr0_.empty() && !h.wr0.empty();
+  const bool st = !state_.empty() && !h.state.empty();
 #pragma omp parallel for schedule(static) if (n > kParallelThreshold)
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t k = off[i]; k < off[i + 1]; ++k) {
@@ -250,6 +273,7 @@ void ParticleContacts::restore_history(const NeighborSearch& search, CarriedHist
         spring_[k] = flip ? -h.spring[c] : h.spring[c];
         if (vt) vt0_[k] = flip ? -h.vt0[c] : h.vt0[c];
         if (wr) wr0_[k] = flip ? -h.wr0[c] : h.wr0[c];
+        if (st) state_[k] = h.state[c];
         break;
       }
     }
@@ -270,6 +294,7 @@ void ParticleContacts::compact_slots(const std::vector<std::uint32_t>& from, std
   move(vt0_);
   move(wr0_);
   move(slipped_);
+  move(state_);
   move(records_);
 }
 
@@ -287,11 +312,12 @@ std::vector<PairHistory> ParticleContacts::export_history(const Particles& p, co
   if (spring_.size() != list.num_pairs() || list.size() != p.size_with_ghosts()) return h;
   const auto& off = list.offsets();
   const auto& idx = list.indices();
-  const bool vt = !vt0_.empty(), wr = !wr0_.empty();
+  const bool vt = !vt0_.empty(), wr = !wr0_.empty(), st = !state_.empty();
   for (std::size_t i = 0; i < list.owned(); ++i)
     for (std::size_t k = off[i]; k < off[i + 1]; ++k)
       if (holds_history(k))
-        h.push_back({p.id[i], p.id[idx[k]], spring_[k], vt ? vt0_[k] : Vec3{}, wr ? wr0_[k] : Vec3{}});
+        h.push_back({p.id[i], p.id[idx[k]], spring_[k], vt ? vt0_[k] : Vec3{}, wr ? wr0_[k] : Vec3{},
+                     st ? std::uint64_t{state_[k]} : 0u});
   return h;
 }
 
@@ -300,7 +326,7 @@ void ParticleContacts::import_history(const Particles& p, const NeighborSearch& 
   spring_.clear();
   ensure_history(list.num_pairs());
   if (h.empty()) return;
-  const bool vt = !vt0_.empty(), wr = !wr0_.empty();
+  const bool vt = !vt0_.empty(), wr = !wr0_.empty(), st = !state_.empty();
   // Orient every record as (smaller id, larger id); look slots up by hash.
   for (PairHistory& r : h)
     if (r.id_first > r.id_second) {
@@ -326,6 +352,7 @@ void ParticleContacts::import_history(const Particles& p, const NeighborSearch& 
       spring_[k] = flip ? -h[r].spring : h[r].spring;
       if (vt) vt0_[k] = flip ? -h[r].vt0 : h[r].vt0;
       if (wr) wr0_[k] = flip ? -h[r].wr0 : h[r].wr0;
+      if (st) state_[k] = static_cast<std::uint8_t>(h[r].state);
     }
 }
 

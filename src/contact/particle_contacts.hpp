@@ -21,12 +21,13 @@ namespace mpdem {
 // acts on), used to carry springs across list rebuilds and reorderings.
 struct PairHistory {
   std::int64_t id_first = 0, id_second = 0;
-  Vec3 spring;  // m
-  Vec3 vt0;     // m/s
-  Vec3 wr0;     // rad/s, relative rotation w_first - w_second at the step start
+  Vec3 spring;              // m
+  Vec3 vt0;                 // m/s
+  Vec3 wr0;                 // rad/s, relative rotation w_first - w_second at the step start
+  std::uint64_t state = 0;  // kLawFormed | kBridgeFormed (contact/pair_batch.hpp), cohesion only
 };
 // Checkpoints hold these records byte for byte: a layout change is a format change.
-static_assert(sizeof(PairHistory) == 88 && std::is_trivially_copyable_v<PairHistory>,
+static_assert(sizeof(PairHistory) == 96 && std::is_trivially_copyable_v<PairHistory>,
               "PairHistory changed: bump kCheckpointFormat (io/checkpoint_format.hpp) and this size");
 
 struct PairStats {
@@ -38,6 +39,11 @@ struct PairStats {
   double sliding_loss = 0.0;    // J, tangential loss of the step of the sliding contacts
   double spring_before = 0.0;   // J, the stored springs' energy at this step's stiffness (ContactResult)
   double spring_after = 0.0;    // J, the new springs' energy
+  // Cohesion: liquid bridges held, hysteresis contacts and bridges broken at this commit, and the
+  // energy they held then (J).
+  std::size_t bridges = 0, breaks = 0, ruptures = 0;
+  double cohesion_loss = 0.0;
+  double elastic_magnitude = 0.0;  // J, sum of the contacts' |stored energy| (cohesion only)
 };
 
 // The deepest contact of the last evaluation, relative to the smaller radius.
@@ -68,6 +74,7 @@ class ParticleContacts {
     std::vector<std::uint32_t> offset{0};  // [N_old + 1] CSR over the old first member
     std::vector<std::uint32_t> second;     // [kept] old index of the second member, ascending
     std::vector<Vec3> spring, vt0, wr0;    // [kept] m, m/s, rad/s (vt0, wr0 empty when unused)
+    std::vector<std::uint8_t> state;       // [kept] cohesion state (empty without cohesion)
   };
   CarriedHistory carry_history(const NeighborSearch& search);
   // ... and put back onto the rebuilt list; old_index[i] is the old index of particle i.
@@ -98,6 +105,13 @@ class ParticleContacts {
   // For tests: the committed spring of the pair (i, j), or zero when none.
   Vec3 spring_between(const NeighborSearch& search, std::size_t i, std::size_t j) const;
   std::size_t memory_bytes() const;
+  // Cohesion: the candidates' reach beyond touching (m, >= 0: the largest break or rupture
+  // distance of the table for the scene's particles), set by the owner before evaluations.
+  void set_gap(double gap) { gap_ = gap; }
+  double gap() const { return gap_; }
+  // True when the table has a law with hysteresis or a liquid bridge between particles: the
+  // kernel keeps a state per slot.
+  bool cohesive() const;
   // For tests: choose the scalar candidate selection even when the AVX-512 one is built in.
   void use_vector_select(bool on) { vector_select_ = on; }
 
@@ -115,6 +129,8 @@ class ParticleContacts {
   std::vector<Vec3> vt0_;              // m/s, tangential velocity at the step start (step_start)
   std::vector<Vec3> wr0_;              // rad/s, w_first - w_second at the step start (step_start, mu_r > 0)
   std::vector<std::uint8_t> slipped_;  // stick (0) / slip (1) of the first iteration (step_start)
+  std::vector<std::uint8_t> state_;    // kLawFormed | kBridgeFormed, committed (cohesion only, else empty)
+  double gap_ = 0.0;                   // m, see set_gap
   // Per cross pair [PairBlocks::num_cross()], the second member's share, added after the block pass:
   std::vector<Vec3> cross_force_;          // N
   std::vector<Vec3> cross_torque_;         // N m

@@ -41,9 +41,12 @@ double energy_balance(const ParticleEnergy& e, double electric, const Interactio
 double dissipated_energy(const InteractionStats& s);
 
 // J, the energy in motion and in the contacts' springs: the scale of the energy checks. The stored
-// elastic energy counts by its magnitude, since an adhesive contact's is negative at rest.
-inline double active_energy(const ParticleEnergy& e, double elastic) {
-  return e.kinetic + e.rotational + std::abs(elastic);
+// elastic energy counts by its magnitude, since an adhesive contact's is negative at rest; with
+// cohesion by the sum of the contacts' magnitudes (InteractionStats::elastic_magnitude), since
+// necks at rest (negative) and loaded contacts (positive) can cancel in the sum.
+inline double active_energy(const ParticleEnergy& e, double elastic, double magnitude = 0.0) {
+  const double stored = std::abs(elastic);
+  return e.kinetic + e.rotational + (magnitude > stored ? magnitude : stored);
 }
 
 }  // namespace mpdem

@@ -1,5 +1,5 @@
 #pragma once
-// Velocity Verlet for the clumps' rigid bodies (docs/physics.md section 16): the
+// Velocity Verlet for the clumps' rigid bodies (docs/physics.md section 18): the
 // centre of mass kicks and drifts like a sphere; the rotation kicks the world angular momentum
 // L = R I R^T w by the torque and rotates freely in between (physics/rigid_rotation.hpp), so that
 // a torque-free body keeps L to round-off and its energy within O(dt^2) without drift. A fixed

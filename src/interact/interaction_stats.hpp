@@ -19,8 +19,9 @@ enum class StatRanks {
 };
 // The checkpoint section that holds a member ("interactions": always, in table order; "fields":
 // an optional section written only when a dissipative body force is on, so that the checkpoints
-// of scenes without one keep their bytes).
-enum class StatSaved { interactions, fields };
+// of scenes without one keep their bytes; "cohesion": likewise, only with a contact law with
+// hysteresis or liquid bridges).
+enum class StatSaved { interactions, fields, cohesion };
 // The member's part in the energy balance (integrate/energy_balance.hpp).
 enum class StatBalance {
   none,        // not an energy of the balance (powers, counts, the springs' share of elastic)
@@ -33,7 +34,7 @@ enum class StatBalance {
   heat  // the thermal balance (heat that left the particles), not the mechanical one
 };
 // When the member has a log.csv column (the optional ones only for the physics the scene uses).
-enum class StatLogged { never, always, near_field, driven_barriers, thermal, dissipative_field };
+enum class StatLogged { never, always, near_field, driven_barriers, thermal, dissipative_field, cohesion };
 // Where its column goes among the log's own (docs/output.md "log.csv"): after `removed`; after
 // `potential`; before `total_energy` (the work taken off it); after `total_energy`.
 enum class StatSlot { counts, energies, supplied, heat };
@@ -87,7 +88,16 @@ struct StatInfo {
   /* work of the dissipative body forces (interact/body_forces.hpp; trapezoid of field_power), and their */                 \
   /* power sum -F.v over the particles at the last commit */                                                           \
   X(double, field_dissipated, "J", sum, true, fields, dissipated, "field_dissipated", dissipative_field, energies)     \
-  X(double, field_power, "W", sum, false, fields, none, nullptr, never, energies)
+  X(double, field_power, "W", sum, false, fields, none, nullptr, never, energies)                              \
+  /* cohesion: liquid bridges held at the last evaluation; contacts with hysteresis (JKR) and bridges */               \
+  /* broken so far, and the energy they held when they broke (contact/pair_batch.hpp) */                               \
+  X(std::uint64_t, bridges, "-", count, false, cohesion, none, "bridges", cohesion, counts)                            \
+  X(std::uint64_t, cohesion_breaks, "-", sum, true, cohesion, none, "breaks", cohesion, counts)                        \
+  X(std::uint64_t, ruptures, "-", sum, true, cohesion, none, "ruptures", cohesion, counts)                             \
+  X(double, cohesion_dissipated, "J", sum, true, cohesion, dissipated, "cohesion_dissipated", cohesion, energies)    \
+  /* the sum of the contacts' stored energies' magnitudes at the last evaluation (cohesion only: the scale */         \
+  /* of the energy checks, integrate/energy_balance.hpp active_energy) */                                             \
+  X(double, elastic_magnitude, "J", sum, false, cohesion, none, nullptr, never, energies)
 // clang-format on
 
 struct InteractionStats {

@@ -11,6 +11,7 @@
 #include "core/parallel.hpp"
 #include "core/scoped_timer.hpp"
 #include "contact/barrier_contacts.hpp"
+#include "contact/cohesion_reach.hpp"
 #include "thermal/heat_transfer.hpp"
 #include "field/near_field_forces.hpp"
 #include "interact/verlet_drift.hpp"
@@ -70,14 +71,30 @@ double default_skin(const Model& model, const Particles& p) {
   return rmin > 0.0 ? 0.2 * rmin : 1e-3;
 }
 
+double largest_radius(const Model& model, const Particles& p) {
+  double r = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) r = std::max(r, p.radius[i]);
+  for (const InletSpec& in : model.params.inlets) r = std::max(r, in.radius.largest());
+  for (const ClumpTemplate& t : model.clumps)
+    for (const ClumpMember& m : t.members()) r = std::max(r, m.r);
+  return r;
+}
+
 Interactions::Interactions(const Model& model, const Particles& p, const Barriers& b, const StepPolicy& policy)
     : model_(model), policy_(policy), table_(table_for(model)),
-      // The list reaches beyond contact by the near-field cutoff (0 when the near field is off).
+      // The list reaches beyond contact by the near-field cutoff (0 when the near field is off)
+      // and as far as cohesive contacts hold (0 without).
       search_(std::make_unique<NeighborSearch>(default_skin(model, p),
-                                               near_field_extra_range(model.params.near_field, p), model.params.domain,
-                                               largest_member_offset(model.clumps))),
+                                               std::max(near_field_extra_range(model.params.near_field, p),
+                                                        particle_cohesion_gap(table_, largest_radius(model, p))),
+                                               model.params.domain, largest_member_offset(model.clumps))),
       particle_contacts_(std::make_unique<ParticleContacts>(table_, policy.step_start)),
       barrier_contacts_(std::make_unique<BarrierContacts>(table_, b)) {
+  const double r_max = largest_radius(model, p);
+  particle_contacts_->set_gap(particle_cohesion_gap(table_, r_max));
+  const double barrier_gap = barrier_cohesion_gap(table_, r_max);
+  barrier_contacts_->set_gap(barrier_gap, has_cohesion(table_));
+  search_->set_barrier_gap(barrier_gap);
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
   if (model.params.analysis.thermal) heat_ = std::make_unique<HeatTransfer>(model, b);
   search_->set_incoming_index(near_ || heat_);
@@ -294,7 +311,13 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
   stats_.contacts_pp = pp.contacts;
   stats_.contacts_pb = pb.contacts;
   stats_.elastic_energy = pp.elastic_energy + pb.elastic_energy;
+  stats_.bridges = pp.bridges + pb.bridges;
+  stats_.elastic_magnitude = pp.elastic_magnitude + pb.elastic_magnitude;
   if (req.commit) {
+    // Cohesion: what broke held energy the force no longer stores (contact/pair_batch.hpp).
+    stats_.cohesion_breaks += pp.breaks + pb.breaks;
+    stats_.ruptures += pp.ruptures + pb.ruptures;
+    stats_.cohesion_dissipated += pp.cohesion_loss + pb.cohesion_loss;
     // The normal dashpots' and rolling resistance's powers by the trapezoid over the step (the
     // start power is the last commit's), the order of accuracy of both integrators; the
     // tangential spring-dashpot by what each contact took in the step (ContactResult), under

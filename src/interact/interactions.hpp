@@ -224,5 +224,7 @@ class Interactions {
 
 // Verlet skin used for a scene: [neighbor] skin, or 0.1 x the smallest particle diameter.
 double default_skin(const Model& model, const Particles& p);
+// m, the largest particle radius of the scene: the particles', its inlets' and its clump members'.
+double largest_radius(const Model& model, const Particles& p);
 
 }  // namespace mpdem

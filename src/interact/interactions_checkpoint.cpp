@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "contact/barrier_contacts.hpp"
+#include "contact/cohesion_reach.hpp"
 #include "contact/particle_contacts.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "parallel/gather.hpp"
@@ -45,10 +46,11 @@ void read_section(CheckpointReader& r, const std::string& name, F&& read) {
 namespace {
 // The interactions' four sections; the lists and history sections from the callers' writers
 // (one layout for one rank and for several ranks' gathered state).
-// The "fields" section only when the scene has a dissipative body force (`fields`).
+// The "fields" section only when the scene has a dissipative body force (`fields`), the
+// "cohesion" one only with cohesion (contact/cohesion_reach.hpp has_cohesion).
 template <class N, class P, class B>
 void write_sections(CheckpointWriter& w, const InteractionStats& s, const std::array<double, 3>& out, bool fields,
-                    N&& neighbor, P&& pairs, B&& barriers) {
+                    bool cohesion, N&& neighbor, P&& pairs, B&& barriers) {
   w.section("interactions", [&](BinaryWriter& o) {
     for_each_saved_stat(s, StatSaved::interactions, [&](const auto& v) { o.value(v); });
     for (double v : out) o.value(v);
@@ -56,6 +58,10 @@ void write_sections(CheckpointWriter& w, const InteractionStats& s, const std::a
   if (fields)
     w.section("fields",
               [&](BinaryWriter& o) { for_each_saved_stat(s, StatSaved::fields, [&](const auto& v) { o.value(v); }); });
+  if (cohesion)
+    w.section("cohesion", [&](BinaryWriter& o) {
+      for_each_saved_stat(s, StatSaved::cohesion, [&](const auto& v) { o.value(v); });
+    });
   w.section("neighbor", neighbor);
   w.section("particle_contacts", pairs);
   w.section("barrier_contacts", barriers);
@@ -65,7 +71,8 @@ void write_sections(CheckpointWriter& w, const InteractionStats& s, const std::a
 void Interactions::save(CheckpointWriter& w, const Particles& p) const {
   write_sections(
       w, stats_, {out_barriers_, out_convected_, out_radiated_}, dissipative_fields(model_.params.fields),
-      [&](BinaryWriter& o) { search_->save(o); }, [&](BinaryWriter& o) { particle_contacts_->save(o, p, *search_); },
+      has_cohesion(table_), [&](BinaryWriter& o) { search_->save(o); },
+      [&](BinaryWriter& o) { particle_contacts_->save(o, p, *search_); },
       [&](BinaryWriter& o) { barrier_contacts_->save(o); });
 }
 
@@ -94,8 +101,8 @@ void Interactions::save_gathered(CheckpointWriter& w, const Particles& p, const 
     return std::minmax(a.id_first, a.id_second) < std::minmax(b.id_first, b.id_second);
   });
   write_sections(
-      w, s, out, dissipative_fields(model_.params.fields), [&](BinaryWriter& o) { search_->save(o, xb_all); },
-      [&](BinaryWriter& o) { o.vector(pairs); },
+      w, s, out, dissipative_fields(model_.params.fields), has_cohesion(table_),
+      [&](BinaryWriter& o) { search_->save(o, xb_all); }, [&](BinaryWriter& o) { o.vector(pairs); },
       [&](BinaryWriter& o) { BarrierContacts::save_records(o, barrier, ids, overflows); });
 }
 
@@ -111,6 +118,10 @@ void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b)
   if (r.has("fields"))
     read_section(r, "fields", [&](BinaryReader& in) {
       for_each_saved_stat(stats_, StatSaved::fields, [&](auto& v) { v = in.value<std::decay_t<decltype(v)>>(); });
+    });
+  if (r.has("cohesion"))
+    read_section(r, "cohesion", [&](BinaryReader& in) {
+      for_each_saved_stat(stats_, StatSaved::cohesion, [&](auto& v) { v = in.value<std::decay_t<decltype(v)>>(); });
     });
   if (!comm_) {
     read_section(r, "neighbor", [&](BinaryReader& in) { search_->restore(in, p, b); });

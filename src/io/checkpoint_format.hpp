@@ -22,7 +22,8 @@ namespace mpdem {
 // 13: the scene fingerprint names contact laws by their list names and keys (contact/laws/), so a
 // format-12 file would fail its fingerprint with a misleading "contact laws changed".
 // 14: particle arrays body and member (clumps), and the bodies' sections bodies/<array>.
-inline constexpr std::uint32_t kCheckpointFormat = 14;
+// 15: PairHistory records gain the cohesion state (96 bytes); the optional "cohesion" section.
+inline constexpr std::uint32_t kCheckpointFormat = 15;
 
 class CheckpointWriter {
  public:

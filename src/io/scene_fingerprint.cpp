@@ -207,15 +207,24 @@ void law_keys(KeyedPart& k, const std::string& kind, const ContactLawParams& c) 
   k.key(s + "tangential_spring", c.tangential_spring);
 }
 
+// One liquid_bridge table's keys as one item, after `base` (the item it belongs to, or 0).
+std::uint64_t bridge_hash(std::uint64_t base, const LiquidBridgeKeys& b) {
+  return hash_of(base, b.model, b.surface_tension, b.contact_angle, b.volume, b.liquid_fraction, b.viscosity,
+                 b.min_gap);
+}
+
 FingerprintPart contact_part(const ContactParams& c) {
   KeyedPart k("contact laws");
   law_keys(k, "particle_particle", c.particle_particle);
   law_keys(k, "particle_barrier", c.particle_barrier);
+  // Only with bridges, so that the scenes without them keep their fingerprints.
+  if (const auto& d = c.liquid_bridge.defaults) k.key("[liquid_bridge]", bridge_hash(0, *d), c.liquid_bridge.barriers);
   std::vector<std::string> labels;
   for (const ContactPairParams& e : c.pairs) {
-    k.part().items.push_back(hash_of(e.material_a, e.material_b, e.particle_particle, e.particle_barrier, e.law,
-                                     e.cohesion, e.law_keys, e.restitution, e.damping_ratio, e.mu_static, e.mu_dynamic,
-                                     e.mu_rolling, e.tangential_damping, e.tangential_spring));
+    const std::uint64_t item = hash_of(e.material_a, e.material_b, e.particle_particle, e.particle_barrier, e.law,
+                                       e.cohesion, e.law_keys, e.restitution, e.damping_ratio, e.mu_static,
+                                       e.mu_dynamic, e.mu_rolling, e.tangential_damping, e.tangential_spring);
+    k.part().items.push_back(e.liquid_bridge ? bridge_hash(item, *e.liquid_bridge) : item);
     labels.push_back("[[contact.pair]] '" + e.material_a + "'-'" + e.material_b + "'");
   }
   return k.finish("[[contact.pair]] entries", std::move(labels));

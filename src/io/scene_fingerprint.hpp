@@ -7,7 +7,7 @@
 //   barriers           each element: id, group and rest vertices; motion law; E, nu, t_b, T
 //   particle sources   each particle as loaded: id, material, radius, charge, x, v, w, q, T
 //   domain             bounded or not, min, max
-//   contact laws       [contact] per key, each [[contact.pair]] entry
+//   contact laws       [contact] per key, [liquid_bridge] (when given), each [[contact.pair]] entry
 //   physics            [analysis], gravity, [fields], [near_field], [thermal] per key
 //   time integration   time.integrator, time.phi, time.adaptive
 //   inlets and sinks   each [[inlet]] and [[sink]] entry (all its keys)

@@ -15,6 +15,7 @@
 
 #include "analysis/coarse_grain.hpp"
 #include "core/vec3.hpp"
+#include "model/liquid_bridge.hpp"
 #include "model/open_boundaries.hpp"
 
 namespace mpdem {
@@ -117,6 +118,9 @@ struct ContactPairParams {
   LawKeyValues law_keys;  // replace the defaults' values key by key
   std::optional<double> restitution, damping_ratio, mu_static, mu_dynamic, mu_rolling, tangential_damping;
   std::optional<TangentialSpring> tangential_spring;
+  // Its liquid_bridge table: bridges on for the pair (unless model = "none") with these keys over
+  // [liquid_bridge]'s.
+  std::optional<LiquidBridgeKeys> liquid_bridge;
   std::size_t line = 0;  // line of the entry, for messages
 };
 
@@ -124,6 +128,7 @@ struct ContactParams {
   ContactLawParams particle_particle;
   ContactLawParams particle_barrier;
   std::vector<ContactPairParams> pairs;
+  LiquidBridgeParams liquid_bridge;  // [liquid_bridge]: capillary bridges' defaults
 };
 
 struct ThermalParams {

@@ -120,7 +120,13 @@ void NeighborSearch::build(Particles& p, std::span<const Vec3> x_owned, const Ba
   } else {
     list_.build(x, p.radius, skin_, extra_, owned, p.id, after_list);
   }
-  broad_.build(x.first(owned), radius, b, skin_);
+  if (barrier_gap_ > 0.0) {
+    std::vector<double> grown(radius.begin(), radius.end());  // m, the radii reaching the gap
+    for (double& r : grown) r += barrier_gap_;
+    broad_.build(x.first(owned), grown, b, skin_);
+  } else {
+    broad_.build(x.first(owned), radius, b, skin_);
+  }
   barrier_offsets_build_ = b.offset;
   rotating_build_ = b.rotating();
   barrier_time_build_ = b.time;

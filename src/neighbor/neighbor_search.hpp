@@ -119,12 +119,16 @@ class NeighborSearch {
   // so caches indexed by particle must be refreshed.
   std::uint64_t generation() const { return generation_; }
   double skin() const { return skin_; }
+  // m, >= 0: the barrier candidates reach this far beyond the particles' surfaces too (cohesion:
+  // contacts that hold across a gap, contact/cohesion_reach.hpp); from the next build on.
+  void set_barrier_gap(double gap) { barrier_gap_ = gap; }
 
  private:
   // The particles or elements changed in count (or lost their ghosts) since the build.
   bool lists_mismatch(const Particles& p, const Barriers& b) const;
 
   double skin_;
+  double barrier_gap_ = 0.0;  // m, see set_barrier_gap
   double extra_;
   double member_offset_;  // m, widens the periodic images' band (clump members outside the period)
   PeriodicImages images_;

@@ -9,6 +9,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "contact/cohesion_reach.hpp"
 #include "model/body_members.hpp"
 #include "output/cg_writer.hpp"
 #include "output/contact_writer.hpp"
@@ -44,25 +45,6 @@ void cg_particles(const Model& model, const Particles& p, std::vector<CgParticle
   }
 }
 
-// The listed contacts' forces, and each particle's contact count; members found by id (ids [N]
-// of particles [N]; a periodic image or another rank's particle carries its source's id).
-void cg_contacts(std::span<const std::int64_t> ids, const std::vector<ContactEntry>& list,
-                 std::vector<CgParticle>& particles, std::vector<CgContact>& contacts) {
-  std::unordered_map<std::int64_t, std::size_t> index;  // id -> index
-  index.reserve(ids.size());
-  for (std::size_t i = 0; i < ids.size(); ++i) index.emplace(ids[i], i);
-  contacts.clear();
-  contacts.reserve(list.size());
-  for (const ContactEntry& c : list) {
-    const auto first = index.find(c.first);
-    if (first == index.end()) continue;  // not a listed particle's contact
-    ++particles[first->second].contacts;
-    if (c.second >= 0)
-      if (const auto it = index.find(c.second); it != index.end()) ++particles[it->second].contacts;
-    contacts.push_back({first->second, c.normal_force + c.tangential_force, c.branch, c.element >= 0});
-  }
-}
-
 // Contact snapshot rows that do not depend on the rank count or the particle order: each pair
 // seen from its member of lower id, the rows by first id, then second id (pairs) or element id
 // (barrier contacts).
@@ -83,6 +65,25 @@ void orient_and_sort(std::vector<ContactEntry>& list) {
 }
 
 }  // namespace
+
+void cg_contacts(std::span<const std::int64_t> ids, std::span<const ContactEntry> list,
+                 std::vector<CgParticle>& particles, std::vector<CgContact>& contacts) {
+  std::unordered_map<std::int64_t, std::size_t> index;  // id -> index
+  index.reserve(ids.size());
+  for (std::size_t i = 0; i < ids.size(); ++i) index.emplace(ids[i], i);
+  contacts.clear();
+  contacts.reserve(list.size());
+  for (const ContactEntry& c : list) {
+    const auto first = index.find(c.first);
+    if (first == index.end()) continue;  // not a listed particle's contact
+    if (c.touching) {                    // a bridge alone carries a force but is not a contact
+      ++particles[first->second].contacts;
+      if (c.second >= 0)
+        if (const auto it = index.find(c.second); it != index.end()) ++particles[it->second].contacts;
+    }
+    contacts.push_back({first->second, c.normal_force + c.tangential_force, c.branch, c.element >= 0});
+  }
+}
 
 AnalysisOutputs::AnalysisOutputs(const Model& model, fs::path dir, std::optional<double> resume_time,
                                  const Communicator* comm)
@@ -177,8 +178,10 @@ void AnalysisOutputs::after_step(double t, double h, double end, bool last, cons
       std::vector<ContactEntry> rows = list;
       orient_and_sort(rows);
       const bool bodies = !model_.clumps.empty();  // the members' body ids
-      write_contacts_vtu(dir_ / name, rows, t, prm.output.format, bodies);
-      write_contacts_csv(dir_ / fmt::format("contacts_csv/contacts_{:06d}.csv", contact_snapshots_), rows, t, bodies);
+      const bool cohesion = has_cohesion(model_);  // touching and bridge flags (the materials as now)
+      write_contacts_vtu(dir_ / name, rows, t, prm.output.format, bodies, cohesion);
+      write_contacts_csv(dir_ / fmt::format("contacts_csv/contacts_{:06d}.csv", contact_snapshots_), rows, t, bodies,
+                         cohesion);
       contacts_pvd_->add(t, name);
     }
     ++contact_snapshots_;

@@ -10,18 +10,27 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "analysis/coarse_grain.hpp"
 #include "core/binary_stream.hpp"
 #include "model/scene.hpp"
 #include "interact/interactions.hpp"
+#include "output/contact_list.hpp"
 
 namespace mpdem {
 
 class Communicator;
 class CsvLog;
 class PvdIndex;
+
+// The listed contacts as coarse-graining input (forces and branch vectors, bridges' included) and
+// each particle's contact count (touching entries only: a bridge alone is not a contact); members
+// found by id (ids [N] of particles [N]; a periodic image or another rank's particle carries its
+// source's id); entries whose `first` is not listed are left out.
+void cg_contacts(std::span<const std::int64_t> ids, std::span<const ContactEntry> list,
+                 std::vector<CgParticle>& particles, std::vector<CgContact>& contacts);
 
 class AnalysisOutputs {
  public:

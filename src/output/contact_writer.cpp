@@ -13,12 +13,12 @@
 namespace mpdem {
 
 void write_contacts_vtu(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time,
-                        VtkFormat format, bool bodies) {
+                        VtkFormat format, bool bodies, bool cohesion) {
   const std::size_t n = contacts.size();
   std::vector<Vec3> points(2 * n), point(n), normal(n), fn(n), ft(n);  // m, m, -, N, N
   std::vector<double> overlap(n), f_mag(n), fn_mag(n);                 // m, N, N
   std::vector<std::int64_t> first(n), second(n), element(n), first_body(n), second_body(n);
-  std::vector<std::uint8_t> sliding(n);
+  std::vector<std::uint8_t> sliding(n), touching(n), bridge(n);
   for (std::size_t k = 0; k < n; ++k) {
     const ContactEntry& c = contacts[k];
     points[2 * k] = c.centre;
@@ -36,6 +36,8 @@ void write_contacts_vtu(const std::filesystem::path& file, std::span<const Conta
     first_body[k] = c.first_body;
     second_body[k] = c.second_body;
     sliding[k] = c.sliding ? 1 : 0;
+    touching[k] = c.touching ? 1 : 0;
+    bridge[k] = c.bridge ? 1 : 0;
   }
   VtkXmlDocument d(format, "UnstructuredGrid");
   open_unstructured_piece(d, time, 2 * n, n);
@@ -55,6 +57,10 @@ void write_contacts_vtu(const std::filesystem::path& file, std::span<const Conta
     d.array({"first_body", "Int64", 0}, std::span<const std::int64_t>(first_body));    // -, body id or -1
     d.array({"second_body", "Int64", 0}, std::span<const std::int64_t>(second_body));  // -, body id or -1
   }
+  if (cohesion) {
+    d.array({"touching", "UInt8", 0}, std::span<const std::uint8_t>(touching));  // 1: a contact law acts
+    d.array({"bridge", "UInt8", 0}, std::span<const std::uint8_t>(bridge));      // 1: a liquid bridge acts
+  }
   d.text("      </CellData>\n      <Points>\n");
   d.array(kVtuPoints, std::span<const Vec3>(points));  // m: first's centre, then the other end
   d.text("      </Points>\n");
@@ -65,12 +71,13 @@ void write_contacts_vtu(const std::filesystem::path& file, std::span<const Conta
 }
 
 void write_contacts_csv(const std::filesystem::path& file, std::span<const ContactEntry> contacts, double time,
-                        bool bodies) {
+                        bool bodies, bool cohesion) {
   write_file_atomically(
       file,
       [&](std::ostream& os) {
         std::string line = "time,first,second,element,px,py,pz,nx,ny,nz,overlap,fnx,fny,fnz,ftx,fty,ftz,sliding";
-        line += bodies ? ",first_body,second_body\n" : "\n";
+        if (bodies) line += ",first_body,second_body";
+        line += cohesion ? ",touching,bridge\n" : "\n";
         for (const ContactEntry& c : contacts) {
           const double v[] = {time,
                               static_cast<double>(c.first),
@@ -100,6 +107,10 @@ void write_contacts_csv(const std::filesystem::path& file, std::span<const Conta
               line += ',';
               line.append(buf, std::to_chars(buf, buf + sizeof buf, b).ptr);
             }
+          if (cohesion) {
+            line += c.touching ? ",1" : ",0";
+            line += c.bridge ? ",1" : ",0";
+          }
           line += '\n';
           if (line.size() > (1u << 16)) {
             os << line;

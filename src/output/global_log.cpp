@@ -1,5 +1,7 @@
 #include "output/global_log.hpp"
 
+#include "contact/cohesion_reach.hpp"
+
 #include <algorithm>
 
 #include "field/near_field_forces.hpp"
@@ -28,6 +30,7 @@ GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
   bodies_ = !model.clumps.empty();
   const bool driven = std::any_of(barriers.motion.begin(), barriers.motion.end(),
                                   [](const MotionLaw& m) { return !m.is_static(); });
+  const bool cohesion = has_cohesion(model);
   for (std::size_t k = 0; k < kStatCount; ++k) {
     switch (kStats[k].logged) {
       case StatLogged::never: logged_[k] = false; break;
@@ -36,6 +39,7 @@ GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
       case StatLogged::driven_barriers: logged_[k] = driven; break;
       case StatLogged::thermal: logged_[k] = thermal_; break;
       case StatLogged::dissipative_field: logged_[k] = dissipative_fields(model.params.fields); break;
+      case StatLogged::cohesion: logged_[k] = cohesion; break;
     }
   }
   columns_ = {"step",         "time",      "dt",     "iterations", "evaluations", "evaluations_total",

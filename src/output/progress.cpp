@@ -21,7 +21,7 @@ void Progress::print_line(const std::string& line) {
 }
 
 void Progress::update(double sim_time, std::uint64_t steps, std::size_t contacts, std::size_t particles,
-                      double imbalance) {
+                      double imbalance, std::optional<std::uint64_t> bridges) {
   if (!enabled_) return;
   const auto now = Clock::now();
   if ((removal_lines_ > 0 || held_ > 0) &&
@@ -38,8 +38,10 @@ void Progress::update(double sim_time, std::uint64_t steps, std::size_t contacts
   const double span = duration_ - start_time_;
   const double done = span > 0.0 ? (sim_time - start_time_) / span : 1.0;
   const double eta = done > 0.0 ? elapsed * (1.0 - done) / done : 0.0;
-  std::string line = fmt::format("t = {:.6g} s  {:5.1f}%  {:.4g} steps/s  ETA {:.0f} s  contacts {}  particles {}",
-                                 sim_time, 100.0 * frac, rate, eta, contacts, particles);
+  std::string line = fmt::format("t = {:.6g} s  {:5.1f}%  {:.4g} steps/s  ETA {:.0f} s  contacts {}", sim_time,
+                                 100.0 * frac, rate, eta, contacts);
+  if (bridges) line += fmt::format("  bridges {}", *bridges);
+  line += fmt::format("  particles {}", particles);
   if (imbalance > 0.0) line += fmt::format("  imbalance {:.2f}", imbalance);
   if (tty_) {
     fmt::print(stderr, "\r{}\x1b[K", line);

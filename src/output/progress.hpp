@@ -1,11 +1,12 @@
 #pragma once
-// Progress on stderr: simulated time, percent done, steps/s, ETA and contacts. On a terminal
+// Progress on stderr: simulated time, percent done, steps/s, ETA and contacts (and bridges). On a terminal
 // one line is redrawn in place a few times a second; otherwise (a log file, CI) a plain line
 // is printed every `plain_every` seconds of wall time. Removed particles are reported here too,
 // a few lines per such interval at most: a pour can remove thousands.
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,9 @@ class Progress {
   Progress(double duration, double plain_every_seconds, bool enabled, double start_time = 0.0,
            std::uint64_t start_steps = 0);
   // imbalance: several ranks, max / mean cost per rank (Interactions::imbalance; 0: not shown).
-  void update(double sim_time, std::uint64_t steps, std::size_t contacts, std::size_t particles,
-              double imbalance = 0.0);
+  // bridges: the liquid bridges held, shown after the contacts (a scene with cohesion; none: not shown).
+  void update(double sim_time, std::uint64_t steps, std::size_t contacts, std::size_t particles, double imbalance = 0.0,
+              std::optional<std::uint64_t> bridges = std::nullopt);
   // A particle removed at the domain boundary at sim_time (s); removed_total counts the whole run.
   void removed(std::int64_t id, double sim_time, std::size_t removed_total);
   void finish(double sim_time, std::uint64_t steps);

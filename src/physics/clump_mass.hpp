@@ -1,6 +1,6 @@
 #pragma once
 // Mass properties of a clump template: the union of its member spheres, overlaps counted once
-// (physics.md section 15, "Clump templates: mass properties").
+// (physics.md section 17, "Clump templates: mass properties").
 //
 // Method. Members that overlap no other member (|x_i - x_j| >= r_i + r_j; touching, to 1e-12
 // relative, is not overlapping) are summed in closed form: V = 4/3 pi r^3 and, about the

@@ -1,5 +1,5 @@
 #pragma once
-// Principal axes of an inertia tensor (physics.md section 15): the eigen-decomposition of a
+// Principal axes of an inertia tensor (physics.md section 17): the eigen-decomposition of a
 // symmetric 3x3 matrix as ascending moments and a proper rotation, made deterministic so that
 // equal moments (a sphere, a dumbbell) get reproducible axes and an input that is already
 // principal keeps its axes exactly. Used for clump templates; any body's inertia tensor fits.

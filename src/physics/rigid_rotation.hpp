@@ -1,6 +1,6 @@
 #pragma once
 // Rotation of a rigid body with principal moments I = (I1, I2, I3) (kg m^2, body frame) and
-// orientation q (principal frame -> world), docs/physics.md section 16 "Clumps: rigid-body
+// orientation q (principal frame -> world), docs/physics.md section 18 "Clumps: rigid-body
 // dynamics".
 //
 // Euler's equations in the body frame, I dw'/dt + w' x (I w') = tau', are integrated in the

@@ -274,7 +274,7 @@ py::dict PySimulation::contacts() const {
   py::array_t<std::int64_t> first(m), second(m), element(m);
   py::array_t<double> point({m, py::ssize_t{3}}), normal({m, py::ssize_t{3}}), fn({m, py::ssize_t{3}}),
       ft({m, py::ssize_t{3}}), overlap(m);
-  py::array_t<bool> sliding(m);
+  py::array_t<bool> sliding(m), touching(m), bridge(m);
   auto put = [](py::array_t<double>& a, py::ssize_t k, const Vec3& v) {
     double* d = a.mutable_data(k, 0);
     d[0] = v.x, d[1] = v.y, d[2] = v.z;
@@ -290,6 +290,8 @@ py::dict PySimulation::contacts() const {
     put(ft, k, e.tangential_force);
     overlap.mutable_data()[k] = e.overlap;
     sliding.mutable_data()[k] = e.sliding;
+    touching.mutable_data()[k] = e.touching;
+    bridge.mutable_data()[k] = e.bridge;
   }
   py::dict d;
   d["i"] = first;
@@ -301,6 +303,8 @@ py::dict PySimulation::contacts() const {
   d["normal_force"] = fn;
   d["tangential_force"] = ft;
   d["sliding"] = sliding;
+  d["touching"] = touching;
+  d["bridge"] = bridge;
   if (!sim_->model().clumps.empty()) {  // the members' bodies, as the contact files name them
     py::array_t<std::int64_t> body_i(m), body_j(m);
     for (py::ssize_t k = 0; k < m; ++k) {

@@ -6,6 +6,7 @@
 #include "contact/laws/law_list.hpp"
 #include "core/value_range.hpp"
 #include "physics/restitution.hpp"
+#include "scene/liquid_bridge_reader.hpp"
 
 namespace mpdem {
 
@@ -70,7 +71,7 @@ const std::vector<const LawKey*>& law_keys() {
 // The keys of a [contact.*] table ([[contact.pair]]: with `materials` and `kind` first).
 std::vector<std::string_view> contact_keys(bool pair) {
   std::vector<std::string_view> out;
-  if (pair) out = {"materials", "kind"};
+  if (pair) out = {"materials", "kind", "liquid_bridge"};
   for (const std::string_view k : {"law", "cohesion", "restitution", "damping_ratio", "mu_static", "mu_dynamic",
                                    "mu_rolling", "tangential_damping", "tangential_spring"})
     out.push_back(k);
@@ -177,6 +178,8 @@ void read_contact_pairs(const TomlSection& contact, const Model& model, ContactP
     e.mu_dynamic = s.number("mu_dynamic", kNonNegative);
     e.mu_rolling = s.number("mu_rolling", kNonNegative);
     e.tangential_damping = s.number("tangential_damping", kNonNegative);
+    if (const auto b = s.table("liquid_bridge", liquid_bridge_keys()))
+      e.liquid_bridge = read_pair_liquid_bridge(*b, c.liquid_bridge);
     // Checked against each default table the entry applies to.
     for (const bool pp : {true, false}) {
       if (pp ? !e.particle_particle : !e.particle_barrier) continue;
@@ -193,6 +196,7 @@ void read_contact_pairs(const TomlSection& contact, const Model& model, ContactP
 }  // namespace
 
 void read_contact(const TomlSection& root, const Model& model, ContactParams& c) {
+  read_liquid_bridge(root, c);  // before the pairs, whose bridges override it
   const auto s = root.table("contact", {"particle_particle", "particle_barrier", "pair"});
   if (!s) return;
   read_contact_law(*s, "particle_particle", c.particle_particle);

@@ -340,10 +340,10 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& fil
   Scene scene;
   scene.file = std::filesystem::absolute(file).lexically_normal();
   scene.dir = scene.file.parent_path();
-  const TomlSection root(name, doc, "",
-                         {"time",    "tolerance", "analysis",  "gravity",  "fields",       "near_field", "contact",
-                          "thermal", "material",  "particles", "barriers", "domain",       "neighbor",   "output",
-                          "checks",  "inlet",     "sink",      "parallel", "coarse_grain", "clump"});
+  const TomlSection root(
+      name, doc, "", {"time",    "tolerance", "analysis",  "gravity",  "fields",       "near_field", "contact",
+                      "thermal", "material",  "particles", "barriers", "domain",       "neighbor",   "output",
+                      "checks",  "inlet",     "sink",      "parallel", "coarse_grain", "clump",      "liquid_bridge"});
   Params& p = scene.model.params;
   read_time(root, p.time);
   read_tolerance(root, p.tolerance);

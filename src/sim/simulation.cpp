@@ -1,5 +1,7 @@
 #include "sim/simulation.hpp"
 
+#include "contact/cohesion_reach.hpp"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -57,6 +59,7 @@ Simulation::Simulation(Scene&& scene, RunOptions options)
   // The inlets first: their first id follows every particle of the scene, whichever rank holds it.
   if (!scene_.model.params.inlets.empty()) inlets_ = std::make_unique<Inlets>(scene_.model, scene_.particles);
   if (!scene_.model.params.sinks.empty()) sinks_ = std::make_unique<Sinks>(scene_.model);
+  cohesive_ = has_cohesion(scene_.model);
   if (const Communicator& comm = options_.comm ? *options_.comm : Communicator::world(); !comm.serial())
     decompose(comm);
 }
@@ -169,7 +172,7 @@ double Simulation::energy_balance(const HealthScan& s) const {
 
 void Simulation::record_state(const HealthScan& s) {
   const double balance = energy_balance(s);
-  const double active = active_energy(s.energy, stats().elastic_energy);
+  const double active = active_energy(s.energy, stats().elastic_energy, stats().elastic_magnitude);
   if (!record_.started) {
     record_.start_balance = balance;
     record_.start_active = active;
@@ -342,7 +345,8 @@ void Simulation::step(double end) {
         {time_, steps_, comm_->size(), interactions_->imbalance(), interactions_->moved_at_last_measurement()});
   }
   const auto& st = stats();
-  progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count(), interactions_->imbalance());
+  progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count(), interactions_->imbalance(),
+                    cohesive_ ? std::optional<std::uint64_t>(st.bridges) : std::nullopt);
   if ((inlets_ || sinks_) && progress_->summary_due()) progress_->summary(open_system_summary());
   const auto every = static_cast<std::uint64_t>(prm.output.checkpoint_every);
   const std::filesystem::path dir = output_dir_for(scene_, options_);

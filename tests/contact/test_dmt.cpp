@@ -214,8 +214,8 @@ TEST(DmtLaw, SceneKeys) {
   for (const Case& c : std::vector<Case>{
            {"[contact.particle_particle]\nlaw = \"linear\"\nstiffness_normal = 1.0\ncohesion = \"dmt\"\n", 9,
             "contact.particle_particle.law", "cohesion = \"dmt\" needs law = \"hertz\", got law = \"linear\""},
-           {"[contact.particle_particle]\ncohesion = \"jkr\"\n", 9, "contact.particle_particle.cohesion",
-            "expected \"none\" or \"dmt\", got \"jkr\""},
+           {"[contact.particle_particle]\ncohesion = \"vdw\"\n", 9, "contact.particle_particle.cohesion",
+            "expected \"none\", \"dmt\", \"jkr\" or \"sjkr\", got \"vdw\""},
            {"[contact.particle_barrier]\ncohesion = \"dmt\"\nsurface_energy = -1\n", 10,
             "contact.particle_barrier.surface_energy", "expected a number >= 0"},
            {"[contact.particle_particle]\nlaw = \"linear\"\nstiffness_normal = 1.0\n"

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/checkpoint_format.hpp"
+#include "io/scene_fingerprint.hpp"
 #include "core/input_error.hpp"
 #include "sim/simulation.hpp"
 #include "support/run_command.hpp"
@@ -184,6 +185,32 @@ TEST(CheckpointFingerprint, ChangedContactLawOrIntegratorIsRefused) {
   Files gravity;
   gravity.scene = kScene + "[gravity]\nvector = [0, 0, -9.8]\n";
   expect_refused(gravity, {"physics (gravity.vector)"});
+}
+
+// Liquid bridges belong to the contact laws: a changed [liquid_bridge] key or an entry's
+// liquid_bridge table is refused naming it; scenes without bridges keep their items.
+TEST(CheckpointFingerprint, ChangedLiquidBridgeIsRefused) {
+  const auto difference = [](const std::string& a, const std::string& b) {
+    test::TempDir d("fingerprint");
+    Files f;
+    f.scene = a;
+    write(d, f);
+    const SceneFingerprint first = fingerprint_scene(load_scene(d.path / "scene.toml"));
+    f.scene = b;
+    write(d, f);
+    return fingerprint_difference(first, fingerprint_scene(load_scene(d.path / "scene.toml")));
+  };
+  const std::string bridge = kScene + "[liquid_bridge]\nsurface_tension = 0.07\nvolume = 1e-12\n";
+  EXPECT_EQ(difference(bridge, bridge), "");
+  for (const auto& [from, to] : {std::pair<std::string, std::string>{"volume = 1e-12", "volume = 2e-12"},
+                                 {"volume = 1e-12", "liquid_fraction = 0.01"},
+                                 {"volume = 1e-12", "volume = 1e-12\nbarriers = false"},
+                                 {"volume = 1e-12", "volume = 1e-12\nmodel = \"rabinovich\""}})
+    EXPECT_EQ(difference(bridge, replaced(bridge, from, to)), "contact laws ([liquid_bridge])") << to;
+  EXPECT_EQ(difference(kScene, bridge), "contact laws (its layout)");
+  const std::string pair = kScene + "[[contact.pair]]\nmaterials = [\"glass\", \"steel\"]\nmu_static = 0.5\n";
+  EXPECT_EQ(difference(pair, pair + "liquid_bridge = { surface_tension = 0.07, volume = 1e-12 }\n"),
+            "contact laws ([[contact.pair]] 'glass'-'steel')");
 }
 
 // The editable keys stay editable: the checkpoint carries the fingerprint, a longer duration,

@@ -1,4 +1,4 @@
-// Clumps in a periodic domain (parallel/periodic_images.hpp, docs/physics.md section 17): a body's
+// Clumps in a periodic domain (parallel/periodic_images.hpp, docs/physics.md section 19): a body's
 // centre is wrapped and its members move with it, so a dumbbell crossing a periodic face keeps its
 // shape (member - centre = R(q) d to round-off), momentum and spin, and never meets an image of
 // itself; a member lying outside the period by its offset from the centre meets another body's

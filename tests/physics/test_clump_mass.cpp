@@ -1,4 +1,4 @@
-// Mass properties of clump templates (physics.md section 15) against closed forms: separate
+// Mass properties of clump templates (physics.md section 17) against closed forms: separate
 // spheres (exact path), the union of two overlapping spheres and of a tetrahedral clump whose
 // members overlap pairwise only (sum of spheres minus lenses), the symmetry of a densely
 // overlapping tetrahedral clump, the principal frame, and bad input. Every integrated case also

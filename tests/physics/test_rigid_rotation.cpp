@@ -1,4 +1,4 @@
-// Free rotation of a rigid body (physics/rigid_rotation.hpp, physics.md section 16) against
+// Free rotation of a rigid body (physics/rigid_rotation.hpp, physics.md section 18) against
 // closed forms: a body with three distinct principal moments spun about its intermediate axis
 // flips (Dzhanibekov); L and the energy stay constant and the flip period is the Jacobi elliptic
 // solution of Euler's equations; the energy error is second order and the orientation converges
@@ -28,7 +28,7 @@ constexpr double kPi = std::numbers::pi;
 const Vec3 kMoments{1e-9, 2e-9, 3e-9};       // kg m^2, principal moments I1 < I2 < I3 (a T-handle-like body)
 constexpr double kSpin = 100.0;              // rad/s, W: the spin about the intermediate axis
 constexpr double kTurn = 2.0 * kPi / kSpin;  // s, T_rot = 2 pi / W
-// The documented step of the torque-free acceptance (physics.md section 16): T_rot / 2000, i.e.
+// The documented step of the torque-free acceptance (physics.md section 18): T_rot / 2000, i.e.
 // h W = pi / 1000 rad per step. It keeps the energy within 7e-8 relative (1e-6 required).
 constexpr double kStepsPerTurn = 2000.0;
 constexpr double kConserved = 1e-6;  // - relative, issue 47's acceptance for L (the vector) and the energy

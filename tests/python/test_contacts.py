@@ -58,6 +58,14 @@ def test_contact_geometry(tmp_path):
     assert np.allclose(c["point"][walls][:, 2], 0.0, atol=1e-15)
 
 
+def test_plain_scene_contacts_touch_and_hold_no_bridges(tmp_path):
+    # Without cohesion every listed row is a contact (a law acts) and none is a liquid bridge.
+    c = settled(tmp_path, "verlet").contacts()
+    for key in ("touching", "bridge"):
+        assert c[key].dtype == np.bool_ and c[key].shape == c["sliding"].shape
+    assert len(c["touching"]) > 0 and np.all(c["touching"]) and not np.any(c["bridge"])
+
+
 def test_recording_changes_nothing_and_is_needed(tmp_path):
     a = settled(tmp_path, "trapezoidal", record=True)
     b = settled(tmp_path, "trapezoidal", record=False)

@@ -1,9 +1,11 @@
 // [contact] of the scene file (scene/contact_reader.cpp): the law keys, [[contact.pair]] entries,
-// and messages naming file, line and key for bad values.
+// [liquid_bridge] and the entries' liquid_bridge tables (scene/liquid_bridge_reader.cpp), and
+// messages naming file, line and key for bad values.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "core/input_error.hpp"
 #include "model/scene.hpp"
@@ -123,6 +125,105 @@ TEST(ContactReader, RestitutionBelowTheCalibrationsSmallestIsRefused) {
   std::printf("xi_n(e = %g) = %.6f\n", kMinRestitution, xi);
   EXPECT_TRUE(std::isfinite(xi) && xi > 0.0);
   EXPECT_NEAR(restitution_for_damping_ratio(xi), kMinRestitution, 1e-10);
+}
+
+TEST(LiquidBridgeKeys, SectionAndPairTables) {
+  TempDir d("mpdem_bridge_keys");
+  const fs::path scene = d.write(
+      "scene.toml", kHead + "[liquid_bridge]\nmodel = \"rabinovich\"\nsurface_tension = 0.072\ncontact_angle = 45\n"
+                            "liquid_fraction = 0.01\nviscosity = 1e-3\nmin_gap = 0.01\nbarriers = false\n"
+                            "[[contact.pair]]\nmaterials = [\"glass\", \"steel\"]\n"
+                            "liquid_bridge = { model = \"willett\", volume = 1e-12 }\n"
+                            "[[contact.pair]]\nmaterials = [\"steel\", \"steel\"]\n"
+                            "[contact.pair.liquid_bridge]\nmodel = \"none\"\n");
+  const ContactParams& c = parse_scene_file(scene).model.params.contact;
+  ASSERT_TRUE(c.liquid_bridge.defaults.has_value());
+  const LiquidBridgeKeys& k = *c.liquid_bridge.defaults;
+  EXPECT_EQ(*k.model, "rabinovich");
+  EXPECT_EQ(*k.surface_tension, 0.072);
+  EXPECT_NEAR(*k.contact_angle, std::numbers::pi / 4.0, 1e-15);  // degrees in, radians kept
+  EXPECT_EQ(*k.liquid_fraction, 0.01);
+  EXPECT_FALSE(k.volume.has_value());
+  EXPECT_EQ(*k.viscosity, 1e-3);
+  EXPECT_EQ(*k.min_gap, 0.01);
+  EXPECT_FALSE(c.liquid_bridge.barriers);
+  ASSERT_EQ(c.pairs.size(), 2u);
+  ASSERT_TRUE(c.pairs[0].liquid_bridge.has_value());
+  EXPECT_EQ(*c.pairs[0].liquid_bridge->model, "willett");
+  EXPECT_EQ(*c.pairs[0].liquid_bridge->volume, 1e-12);
+  EXPECT_FALSE(c.pairs[0].liquid_bridge->surface_tension.has_value());  // the default's, resolved in the table
+  EXPECT_EQ(*c.pairs[1].liquid_bridge->model, "none");
+  // Without [liquid_bridge]: no defaults, barriers default true.
+  const ContactParams plain = parse_scene_file(d.write("plain.toml", kHead)).model.params.contact;
+  EXPECT_FALSE(plain.liquid_bridge.defaults.has_value());
+  EXPECT_TRUE(plain.liquid_bridge.barriers);
+  EXPECT_FALSE(plain.pairs.size());
+}
+
+TEST(LiquidBridgeKeys, BadValuesNameFileLineAndKey) {
+  struct Case {
+    std::string toml;
+    int line;
+    std::string key, expect;
+  };
+  const std::string ok = "surface_tension = 0.07\nvolume = 1e-12\n";  // 2 lines
+  const std::string pair = "[[contact.pair]]\nmaterials = [\"glass\", \"steel\"]\n";
+  const std::vector<Case> cases = {
+      {"[liquid_bridge]\nsurface_tension = 0\nvolume = 1e-12\n", 9, "liquid_bridge.surface_tension",
+       "expected a number > 0, got 0"},
+      {"[liquid_bridge]\nsurface_tension = -0.07\nvolume = 1e-12\n", 9, "liquid_bridge.surface_tension",
+       "expected a number > 0, got -0.07"},
+      {"[liquid_bridge]\nvolume = 1e-12\n", 8, "liquid_bridge.surface_tension", "missing required key"},
+      {"[liquid_bridge]\nsurface_tension = 0.07\nvolume = 0\n", 10, "liquid_bridge.volume",
+       "expected a number > 0, got 0"},
+      {"[liquid_bridge]\nsurface_tension = 0.07\nvolume = -1e-12\n", 10, "liquid_bridge.volume",
+       "expected a number > 0"},
+      {"[liquid_bridge]\n" + ok + "contact_angle = 95\n", 11, "liquid_bridge.contact_angle",
+       "expected a number in [0, 90], got 95"},
+      {"[liquid_bridge]\n" + ok + "contact_angle = -5\n", 11, "liquid_bridge.contact_angle",
+       "expected a number in [0, 90], got -5"},
+      {"[liquid_bridge]\nsurface_tension = 0.07\nliquid_fraction = 1\n", 10, "liquid_bridge.liquid_fraction",
+       "expected a number in (0, 1), got 1"},
+      {"[liquid_bridge]\nsurface_tension = 0.07\nliquid_fraction = 0\n", 10, "liquid_bridge.liquid_fraction",
+       "expected a number in (0, 1), got 0"},
+      {"[liquid_bridge]\n" + ok + "liquid_fraction = 0.1\n", 11, "liquid_bridge.liquid_fraction",
+       "give either volume or liquid_fraction, not both"},
+      {"[liquid_bridge]\nsurface_tension = 0.07\n", 8, "liquid_bridge.volume",
+       "give volume (m^3 per bridge, > 0) or liquid_fraction"},
+      {"[liquid_bridge]\n" + ok + "model = \"lian\"\n", 11, "liquid_bridge.model",
+       "expected \"willett\", \"rabinovich\" or \"none\", got \"lian\""},
+      {"[liquid_bridge]\n" + ok + "viscosity = -1\n", 11, "liquid_bridge.viscosity", "expected a number >= 0"},
+      {"[liquid_bridge]\n" + ok + "min_gap = 0\n", 11, "liquid_bridge.min_gap", "expected a number > 0"},
+      {"[liquid_bridge]\n" + ok + "barriers = 1\n", 11, "liquid_bridge.barriers", "expected a boolean"},
+      {"[liquid_bridge]\n" + ok + "tension = 1\n", 11, "liquid_bridge.tension", "unknown key"},
+      // A pair entry: inline and standard tables, alone and over [liquid_bridge].
+      {pair + "liquid_bridge = { surface_tension = 0.07 }\n", 10, "contact.pair.liquid_bridge.volume",
+       "missing required key"},
+      {pair + "liquid_bridge = { volume = 1e-12 }\n", 10, "contact.pair.liquid_bridge.surface_tension",
+       "missing required key"},
+      {pair + "[contact.pair.liquid_bridge]\n" + ok + "contact_angle = 91\n", 13,
+       "contact.pair.liquid_bridge.contact_angle", "expected a number in [0, 90], got 91"},
+      {pair + "liquid_bridge = { model = \"mikami\" }\n", 10, "contact.pair.liquid_bridge.model",
+       "expected \"willett\", \"rabinovich\" or \"none\", got \"mikami\""},
+      {"[liquid_bridge]\n" + ok + pair + "liquid_bridge = { volume = 1e-12, liquid_fraction = 0.1 }\n", 13,
+       "contact.pair.liquid_bridge.liquid_fraction", "give either volume or liquid_fraction, not both"},
+      {"[liquid_bridge]\n" + ok + pair + "liquid_bridge = { surface_tension = -1 }\n", 13,
+       "contact.pair.liquid_bridge.surface_tension", "expected a number > 0, got -1"},
+      {"[liquid_bridge]\n" + ok + pair + "liquid_bridge = 3\n", 13, "contact.pair.liquid_bridge", "expected a table"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.toml);
+    TempDir d("mpdem_bridge_keys");
+    const fs::path scene = d.write("scene.toml", kHead + c.toml);
+    const std::string msg = error_of([&] { parse_scene_file(scene); });
+    expect_contains(msg, {scene.string() + ":" + std::to_string(c.line) + ": '" + c.key + "': ", c.expect});
+  }
+  // The command exits with status 2 and the same location.
+  TempDir d("mpdem_bridge_keys");
+  d.write("scene.toml", kHead + "[liquid_bridge]\nsurface_tension = 0.07\nvolume = 0\n");
+  const CommandResult r = run_mpdem("check scene.toml", d.path);
+  EXPECT_EQ(r.status, 2) << r.err;
+  expect_contains(r.err, {"scene.toml:10: 'liquid_bridge.volume': "});
 }
 
 }  // namespace

@@ -24,7 +24,7 @@
 
 namespace mpdem {
 
-struct DmtLaw {
+struct DmtLaw : HertzEstimates {  // the Hertz impact estimates
   static constexpr std::string_view kLaw = "hertz", kCohesion = "dmt";
   static constexpr std::array<LawKey, 1> kKeys{{
       {"surface_energy", "J/m^2", kNonNegative, 0.0, false, "0", "surface energy w: pull-off 2 pi w r*"},
@@ -34,8 +34,8 @@ struct DmtLaw {
   static constexpr std::size_t kTwoPiW = kLawSlots + 2;      // N/m, 2 pi w: the pull-off is kTwoPiW r*
   static constexpr std::size_t kEnd = kLawSlots + 3;
   static constexpr bool kElastic = true, kAdhesion = true;
-  static constexpr double kGap = 0.0;
-  static constexpr std::size_t kStateDoubles = 0;
+  static constexpr bool kHysteresis = false;
+  static constexpr bool kExactGeometry = false;
 
   static auto coefficients(const LawInputs& in) {
     return law_slots<DmtLaw>(2.0 * in.E_star, 8.0 * in.G_star, 2.0 * std::numbers::pi * in.key(kKeys[0]).value_or(0.0));
@@ -44,26 +44,14 @@ struct DmtLaw {
 
   // The Hertz spring (same slots) less the pull.
   template <class Pair>
-  static Stiffness stiffness(const Pair& law, double r_star, double overlap) {
+  static Stiffness stiffness(const Pair& law, double r_star, double overlap, double /*inv_reach*/ = 0.0) {
     Stiffness s = HertzLaw::stiffness(law, r_star, overlap);
     s.adhesion = law.c[kTwoPiW] * r_star;
+    s.load_offset = s.adhesion;
     s.f_el -= s.adhesion;
     s.energy -= s.adhesion * overlap;
     return s;
   }
-
-  // The Hertz estimates: the adhesion is small against the kinetic energy of impacts fast enough
-  // to matter for the time step or checks.max_overlap.
-  template <class Pair>
-  static double contact_time(const Pair& law, double E_star, double m, double r, double v) {
-    return HertzLaw::contact_time(law, E_star, m, r, v);
-  }
-  template <class Pair>
-  static double peak_overlap(const Pair& law, double E_star, double m, double r, double v) {
-    return HertzLaw::peak_overlap(law, E_star, m, r, v);
-  }
-  static constexpr std::string_view kStiffnessKey = "young", kSpringName = "Hertz";
-  static constexpr double kOverlapExponent = 2.5;
 };
 
 }  // namespace mpdem

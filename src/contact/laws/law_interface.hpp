@@ -8,16 +8,20 @@
 //   kEnd                   one past its last coefficient slot (slots kLawSlots.. are its own, named)
 //   kElastic               its stiffness comes from the materials' E and nu (Hertz-like): the
 //                          Rayleigh time and the material modulus drive the time-step advice
-//   kAdhesion              the force may be attractive (stiffness() fills Stiffness::adhesion)
-//   kGap, kStateDoubles    slots for what comes next, 0 for every law today (law_list.hpp
-//                          refuses others until the kernels grow them, docs/architecture.md):
-//                          kGap, the reach beyond touching, relative to R_i + R_j, across which
-//                          the law acts (liquid bridges: force at negative overlap, so the
-//                          candidate reach must come from the laws in use); kStateDoubles,
-//                          history per contact beyond the tangential spring (JKR's hysteresis)
+//   kAdhesion              the force may be attractive (stiffness() fills Stiffness::adhesion
+//                          and Stiffness::load_offset)
+//   kHysteresis            a contact, formed when the surfaces touch (overlap > 0), holds until
+//                          the overlap falls to break_overlap(c, r*) <= 0 (JKR's neck): the
+//                          kernels keep a formed flag per contact beside the tangential spring,
+//                          reach that far beyond touching, and book the energy the contact held
+//                          when it breaks (stiffness(..., break_overlap).energy) as dissipated
 //   coefficients(in)       its own slots (law_slots) from the materials' moduli and its keys (LawInputs)
 //   damping_ratio(e)       the normal damping ratio that gives restitution e
-//   stiffness(c, r*, d)    k_n, the elastic force, k_t and the stored energy at overlap d >= 0
+//   kExactGeometry         stiffness() reads k below (the pair kernel computes it only then)
+//   stiffness(c, r*, d, k) k_n, the elastic force, k_t and the stored energy at overlap d >= 0
+//                          (kHysteresis: d >= break_overlap); k = 1 / (R_i + R_j) (m^-1, 0 at a
+//                          barrier) for laws that need the exact geometry of the overlap (SJKR's
+//                          lens); k_n is what the dashpot and the time step use (finite, >= 0)
 //   contact_time(...)      the duration of an undamped impact, for the time-step advice
 //   peak_overlap(...)      the largest overlap of an undamped impact, for checks.max_overlap
 // Everything else of a contact (the damping from the ratio, the projected spring, Coulomb's
@@ -57,7 +61,10 @@ struct Stiffness {
   double k_t = 0.0;       // N/m, tangential stiffness
   double energy = 0.0;    // J, stored energy of the normal force (its potential, 0 at touching)
   bool clamp = true;      // the net normal force is kept >= -adhesion (no more attractive)
-  double adhesion = 0.0;  // N, >= 0, the constant attraction in f_el (kAdhesion laws only)
+  double adhesion = 0.0;  // N, >= 0, the pull-off: the floor of the net normal force (kAdhesion laws only)
+  // N, >= 0, what Coulomb's limit and rolling resistance add to the net normal force: they scale
+  // with max(fn + load_offset, 0) (kAdhesion laws only; DMT: the adhesion, JKR: 2 F_c as Thornton)
+  double load_offset = 0.0;
 };
 
 // One scene key of a law, under [contact.*] and [[contact.pair]] (docs/scene.md "Contact laws").

@@ -14,13 +14,15 @@
 
 #include "contact/laws/dmt.hpp"
 #include "contact/laws/hertz.hpp"
+#include "contact/laws/jkr.hpp"
 #include "contact/laws/law_interface.hpp"
 #include "contact/laws/linear.hpp"
+#include "contact/laws/sjkr.hpp"
 
 namespace mpdem {
 
 // The first law is the default (law = "hertz", no cohesion).
-using ContactLaws = std::tuple<HertzLaw, LinearLaw, DmtLaw>;
+using ContactLaws = std::tuple<HertzLaw, LinearLaw, DmtLaw, JkrLaw, SjkrLaw>;
 
 inline constexpr std::size_t kLawCount = std::tuple_size_v<ContactLaws>;
 
@@ -49,20 +51,10 @@ constexpr std::size_t largest_end(std::type_identity<std::tuple<Laws...>>) {
   ((n = Laws::kEnd > n ? Laws::kEnd : n), ...);
   return n;
 }
-template <class... Laws>
-constexpr bool kernels_serve(std::type_identity<std::tuple<Laws...>>) {
-  return ((Laws::kGap == 0.0 && Laws::kStateDoubles == 0) && ...);
-}
 }  // namespace law_list_detail
 
 // Coefficient slots: the common ones and the largest law's own.
 inline constexpr std::size_t kCoefficients = law_list_detail::largest_end(std::type_identity<ContactLaws>{});
-
-// The kernels select candidates at touching distance (contact/pair_batch.hpp kCandidateReach) and
-// keep the tangential spring as the only history. A law acting across a gap or keeping more
-// state per contact needs them to grow first (docs/architecture.md "Add a contact law").
-static_assert(law_list_detail::kernels_serve(std::type_identity<ContactLaws>{}),
-              "a law with kGap > 0 or kStateDoubles > 0 needs the kernels' reach and history to come from the laws");
 
 // One material pair's law: which law, the tangential spring form, and every coefficient (slots
 // of law_interface.hpp and the law's header). Built by resolve_pair_law (contact_table.hpp) only;
@@ -93,19 +85,56 @@ struct MixedLaw {
     for_each_law([&]<class L>(std::type_identity<L>, LawId) { any = any || L::kAdhesion; });
     return any;
   }();
-  static Stiffness stiffness(const PairLaw& c, double r_star, double overlap) {
-    Stiffness out = std::tuple_element_t<0, ContactLaws>::stiffness(c, r_star, overlap);
+  static constexpr bool kHysteresis = [] {
+    bool any = false;
+    for_each_law([&]<class L>(std::type_identity<L>, LawId) { any = any || L::kHysteresis; });
+    return any;
+  }();
+  static constexpr bool kExactGeometry = [] {
+    bool any = false;
+    for_each_law([&]<class L>(std::type_identity<L>, LawId) { any = any || L::kExactGeometry; });
+    return any;
+  }();
+  static Stiffness stiffness(const PairLaw& c, double r_star, double overlap, double inv_reach = 0.0) {
+    Stiffness out = std::tuple_element_t<0, ContactLaws>::stiffness(c, r_star, overlap, inv_reach);
     for_each_law([&]<class L>(std::type_identity<L>, LawId id) {
       if constexpr (!std::is_same_v<L, std::tuple_element_t<0, ContactLaws>>) {
-        const Stiffness s = L::stiffness(c, r_star, overlap);
+        const Stiffness s = L::stiffness(c, r_star, overlap, inv_reach);
         const bool here = c.law == id;
-        out = {here ? s.k_n : out.k_n,       here ? s.f_el : out.f_el,   here ? s.k_t : out.k_t,
-               here ? s.energy : out.energy, here ? s.clamp : out.clamp, here ? s.adhesion : out.adhesion};
+        out = {here ? s.k_n : out.k_n,
+               here ? s.f_el : out.f_el,
+               here ? s.k_t : out.k_t,
+               here ? s.energy : out.energy,
+               here ? s.clamp : out.clamp,
+               here ? s.adhesion : out.adhesion,
+               here ? s.load_offset : out.load_offset};
       }
     });
     return out;
   }
+  // m, <= 0: the overlap at which a formed contact of the pair's law breaks (0: laws without hysteresis).
+  static double break_overlap(const PairLaw& c, double r_star) {
+    double out = 0.0;
+    for_each_law([&]<class L>(std::type_identity<L>, LawId id) {
+      if constexpr (L::kHysteresis) out = c.law == id ? L::break_overlap(c, r_star) : out;
+    });
+    return out;
+  }
 };
+
+// m, <= 0: where a formed contact of Law breaks (0 for a law without hysteresis: at touching).
+template <class Law>
+double break_overlap(const PairLaw& c, double r_star) {
+  if constexpr (Law::kHysteresis) return Law::break_overlap(c, r_star);
+  else return 0.0;
+}
+
+// True when a law of the set keeps a formed state per contact (kHysteresis).
+inline bool any_hysteresis(LawSet set) {
+  bool any = false;
+  for_each_law([&]<class L>(std::type_identity<L>, LawId id) { any = any || (L::kHysteresis && ((set >> id) & 1u)); });
+  return any;
+}
 
 // f(std::type_identity<Law>{}) with the law of id (0 <= id < kLawCount).
 template <class F>

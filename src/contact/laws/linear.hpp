@@ -21,8 +21,8 @@ struct LinearLaw {
   static constexpr std::size_t kTangentialStiffness = kLawSlots + 1;  // N/m, k_t
   static constexpr std::size_t kEnd = kLawSlots + 2;
   static constexpr bool kElastic = false, kAdhesion = false;
-  static constexpr double kGap = 0.0;
-  static constexpr std::size_t kStateDoubles = 0;
+  static constexpr bool kHysteresis = false;
+  static constexpr bool kExactGeometry = false;
 
   static auto coefficients(const LawInputs& in) {
     const double k_n = in.key(kKeys[0]).value_or(0.0);  // the reader requires it
@@ -34,7 +34,7 @@ struct LinearLaw {
   // k_n, k_t constant, f_el = k_n delta, energy 1/2 k_n delta^2. Not clamped: the restitution and
   // contact time of the damped linear oscillator then hold exactly.
   template <class Pair>
-  static Stiffness stiffness(const Pair& law, double /*r_star*/, double overlap) {
+  static Stiffness stiffness(const Pair& law, double /*r_star*/, double overlap, double /*inv_reach*/ = 0.0) {
     Stiffness s;
     s.k_n = law.c[kNormalStiffness];
     s.f_el = s.k_n * overlap;

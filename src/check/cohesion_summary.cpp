@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "contact/cohesion_reach.hpp"
-#include "interact/interactions.hpp"
 
 namespace mpdem {
 

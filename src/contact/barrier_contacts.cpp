@@ -16,7 +16,6 @@
 namespace mpdem {
 
 namespace {
-constexpr double kInheritCos = 0.9;  // a seam neighbour's normal within ~25 degrees
 // Active particles ahead whose data is prefetched: they are scattered over the particle arrays
 // (only those near a wall), so each visit would otherwise wait for ~15 cache misses in turn.
 constexpr std::size_t kAhead = 8;
@@ -182,22 +181,8 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
   }
   const BarrierSlot* old = store_.committed(k);
   const int old_used = store_.committed_used(k);
-  if (cohesive_) {
-    // Detected gap_ beyond touching; kept when touching, or apart with a formed neck or bridge it
-    // may take the history of (the same element, or a seam neighbour's as below).
-    detect_barrier_contacts(b, topo_, tris_, p.x[i], p.radius[i] + gap_, cand, found);
-    std::erase_if(found, [&](BarrierContact& f) {
-      f.overlap -= gap_;
-      if (f.overlap > 0.0) return false;
-      for (int s = 0; s < old_used; ++s)
-        if (old[s].state != 0 &&
-            (old[s].element == static_cast<std::int32_t>(f.element) || dot(old[s].normal, f.normal) > kInheritCos))
-          return false;
-      return true;
-    });
-  } else {
-    detect_barrier_contacts(b, topo_, tris_, p.x[i], p.radius[i], cand, found);
-  }
+  if (cohesive_) detect_cohesive(i, p, b, cand, old, old_used, found);
+  else detect_barrier_contacts(b, topo_, tris_, p.x[i], p.radius[i], cand, found);
   const BarrierFirst* first = store_.first(k);
   const std::size_t first_used = store_.first_used(k);
   // At most one contact per candidate element, so the capacity never binds before kSlots.
@@ -273,34 +258,11 @@ void BarrierContacts::collect(std::size_t k, const Particles& p, const Barriers&
     batch.r_star[t] = r, batch.m_star[t] = m;
     if (cohesive_) {
       batch.state0[t] = static_cast<std::uint8_t>(hist ? hist->state : 0u);
-      batch.bridge[t] = table_.any_barrier_bridges() ? &table_.barrier_bridge(static_cast<std::size_t>(p.material[i]),
-                                                                              static_cast<std::size_t>(b.material[e]))
-                                                     : nullptr;
+      batch.bridge[t] = bridge_of(p.material[i], b.material[e]);
     }
   }
-  // Cohesion: a formed contact no longer detected (moved beyond the reach within one step) broke.
-  if (cohesive_)
-    for (int s = 0; s < old_used; ++s) {
-      if (old[s].state == 0) continue;
-      bool held = false;
-      for (std::size_t c = 0; c < count; ++c) held |= batch.hist[batch.count - count + c] == &old[s];
-      if (held) continue;
-      const auto e = static_cast<std::size_t>(old[s].element);
-      const PairLaw& law = table_.barrier_pair(static_cast<std::size_t>(p.material[i]),
-                                               static_cast<std::size_t>(b.material[e]));
-      const BridgeLaw* bridge = table_.any_barrier_bridges()
-                                    ? &table_.barrier_bridge(static_cast<std::size_t>(p.material[i]), b.material[e])
-                                    : nullptr;
-      with_law(law.law, [&]<class Law>(std::type_identity<Law>) {
-        const CohesiveNormal gone = cohesive_normal<Law>(law, bridge, static_cast<std::uint8_t>(old[s].state), r, m,
-                                                         -1e300, 0.0, 0.0);
-        if (req.commit) {
-          acc[10] += (gone.broke & kLawFormed) != 0 ? 1.0 : 0.0;
-          acc[11] += (gone.broke & kBridgeFormed) != 0 ? 1.0 : 0.0;
-          acc[12] += gone.loss;
-        }
-      });
-    }
+  if (cohesive_ && req.commit)
+    book_undetected(p.material[i], b, r, old, old_used, batch.hist + batch.count - count, count, acc);
   batch.k[batch.particles] = static_cast<std::uint32_t>(k);
   batch.end[batch.particles] = static_cast<std::uint32_t>(batch.count);
   ++batch.particles;

@@ -85,6 +85,8 @@ class BarrierContacts {
   // energy J at this step's stiffness and of the new springs (ContactResult), bridges held,
   // contacts and bridges broken, the energy they held J, the contacts' |stored energy| J (cohesion)}
   using BarrierSums = std::array<double, 14>;
+  // A contact without history takes that of a seam neighbour's whose normal is within ~25 degrees.
+  static constexpr double kInheritCos = 0.9;
   // Contacts of active particle k, stage 1: detects them, finds their history, sets its record
   // counts and appends the contacts with the particle's values to the batch (acc[4]: dropped).
   // kRotating: some element rotates (surface velocity at the contact point, springs turned).
@@ -97,6 +99,16 @@ class BarrierContacts {
   void flush(Particles& p, Barriers* loads_to, const EvalRequest& req, BarrierBatch& batch, BarrierSums& acc);
   // Sums the loads of the last evaluation onto element e, over its users in particle order.
   void element_loads(Barriers& b, std::size_t e);
+  // Cohesion (barrier_contact_cohesion.cpp): particle i's contacts detected gap_ beyond touching,
+  // those apart kept only when a formed neck or bridge of its committed records `old` may hold on;
+  // the bridge law of a particle and an element by their materials (null: no bridges); and, at a
+  // commit, the formed records no contact of the batch took (`taken`, its last `count` history
+  // pointers) booked as broken into acc (counts and energy, BarrierSums order).
+  void detect_cohesive(std::size_t i, const Particles& p, const Barriers& b, std::span<const std::uint32_t> cand,
+                       const BarrierSlot* old, int old_used, std::vector<BarrierContact>& found) const;
+  const BridgeLaw* bridge_of(int particle_material, int element_material) const;
+  void book_undetected(int particle_material, const Barriers& b, double r, const BarrierSlot* old, int old_used,
+                       const BarrierSlot* const* taken, std::size_t count, BarrierSums& acc) const;
 
   const ContactTable& table_;
   BarrierTopology topo_;

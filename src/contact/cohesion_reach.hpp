@@ -42,10 +42,32 @@ inline double barrier_cohesion_gap(const ContactTable& t, double r_max) {
   return std::max(neck, t.any_barrier_bridges() ? t.barrier_bridge_reach(r_max) : 0.0);
 }
 
+// m, the largest particle radius of a scene: its particles', its inlets' and its clump members'.
+inline double largest_radius(const Model& model, const Particles& p) {
+  double r = 0.0;
+  for (std::size_t i = 0; i < p.size(); ++i) r = std::max(r, p.radius[i]);
+  for (const InletSpec& in : model.params.inlets) r = std::max(r, in.radius.largest());
+  for (const ClumpTemplate& t : model.clumps)
+    for (const ClumpMember& m : t.members()) r = std::max(r, m.r);
+  return r;
+}
+
 // True when the table's contacts keep a cohesion state: a law with hysteresis or a liquid bridge.
 inline bool has_cohesion(const ContactTable& t) {
   return any_hysteresis(t.particle_laws() | t.barrier_laws()) || t.any_particle_bridges() || t.any_barrier_bridges();
 }
+
+// How far a scene's contacts reach beyond touching, for its largest particles.
+struct CohesionGaps {
+  double particles = 0.0;  // m, particle pairs (particle_cohesion_gap)
+  double barriers = 0.0;   // m, particle-barrier contacts (barrier_cohesion_gap)
+  bool cohesive = false;   // has_cohesion: the contacts keep a formed state
+};
+inline CohesionGaps cohesion_gaps(const ContactTable& t, const Model& model, const Particles& p) {
+  const double r_max = largest_radius(model, p);
+  return {particle_cohesion_gap(t, r_max), barrier_cohesion_gap(t, r_max), has_cohesion(t)};
+}
+
 inline bool has_cohesion(const Model& model) {
   ContactTable t;
   t.build(model);

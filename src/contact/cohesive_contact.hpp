@@ -25,6 +25,18 @@ struct CohesiveNormal {
   double loss = 0.0;       // J, the energy held by what broke now
 };
 
+// J, the energy a formed neck (kLawFormed in `which`) and a formed bridge (kBridgeFormed) hold
+// when they break: the law's at its break overlap, the bridge's at its rupture distance.
+template <class Law>
+inline double broken_energy(const PairLaw& c, const BridgeLaw* bridge, std::uint8_t which, double r_star,
+                            double inv_reach) {
+  double loss = 0.0;
+  if ((which & kLawFormed) != 0) loss += Law::stiffness(c, r_star, break_overlap<Law>(c, r_star), inv_reach).energy;
+  if ((which & kBridgeFormed) != 0 && bridge && bridge->model != BridgeModel::none)
+    loss += bridge_force(*bridge, r_star, inv_reach, -bridge_rupture_distance(*bridge, r_star, inv_reach), 0.0).energy;
+  return loss;
+}
+
 // before: the committed state; overlap (m) keeps its sign (negative: a gap); bridge: the pair's
 // bridge law or null; inv_reach: 1 / (R_i + R_j) (0 at a barrier).
 template <class Law>
@@ -34,26 +46,21 @@ inline CohesiveNormal cohesive_normal(const PairLaw& c, const BridgeLaw* bridge,
   const double brk = break_overlap<Law>(c, r_star);  // m, <= 0
   const bool law_on = overlap > 0.0 || ((before & kLawFormed) != 0 && overlap > brk);
   if (law_on) out.n = normal_contact<Law>(c, r_star, m_star, overlap, normal_rate, inv_reach);
-  else if ((before & kLawFormed) != 0) {
-    out.loss += Law::stiffness(c, r_star, brk, inv_reach).energy;
-    out.broke |= kLawFormed;
-  }
   bool bridge_on = false;
   if (bridge && bridge->model != BridgeModel::none) {
-    const double rupture = bridge_rupture_distance(*bridge, r_star, inv_reach);  // m
-    bridge_on = overlap > 0.0 || ((before & kBridgeFormed) != 0 && -overlap < rupture);
+    bridge_on = overlap > 0.0 ||
+                ((before & kBridgeFormed) != 0 && -overlap < bridge_rupture_distance(*bridge, r_star, inv_reach));
     if (bridge_on) {
       const BridgeForce f = bridge_force(*bridge, r_star, inv_reach, overlap, normal_rate);
       out.n.fn += f.fn;
       out.n.energy += f.energy;
       out.n.damping += f.damping;
-    } else if ((before & kBridgeFormed) != 0) {
-      out.loss += bridge_force(*bridge, r_star, inv_reach, -rupture, 0.0).energy;
-      out.broke |= kBridgeFormed;
     }
   }
   out.live = static_cast<std::uint8_t>((law_on ? kLawFormed : 0) | (bridge_on ? kBridgeFormed : 0));
   out.next = static_cast<std::uint8_t>((law_on && brk < 0.0 ? kLawFormed : 0) | (bridge_on ? kBridgeFormed : 0));
+  out.broke = static_cast<std::uint8_t>(before & ~out.live & (kLawFormed | kBridgeFormed));
+  if (out.broke != 0) out.loss = broken_energy<Law>(c, bridge, out.broke, r_star, inv_reach);
   return out;
 }
 

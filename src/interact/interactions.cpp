@@ -71,30 +71,18 @@ double default_skin(const Model& model, const Particles& p) {
   return rmin > 0.0 ? 0.2 * rmin : 1e-3;
 }
 
-double largest_radius(const Model& model, const Particles& p) {
-  double r = 0.0;
-  for (std::size_t i = 0; i < p.size(); ++i) r = std::max(r, p.radius[i]);
-  for (const InletSpec& in : model.params.inlets) r = std::max(r, in.radius.largest());
-  for (const ClumpTemplate& t : model.clumps)
-    for (const ClumpMember& m : t.members()) r = std::max(r, m.r);
-  return r;
-}
-
 Interactions::Interactions(const Model& model, const Particles& p, const Barriers& b, const StepPolicy& policy)
-    : model_(model), policy_(policy), table_(table_for(model)),
+    : model_(model), policy_(policy), table_(table_for(model)), gaps_(cohesion_gaps(table_, model, p)),
       // The list reaches beyond contact by the near-field cutoff (0 when the near field is off)
       // and as far as cohesive contacts hold (0 without).
-      search_(std::make_unique<NeighborSearch>(default_skin(model, p),
-                                               std::max(near_field_extra_range(model.params.near_field, p),
-                                                        particle_cohesion_gap(table_, largest_radius(model, p))),
-                                               model.params.domain, largest_member_offset(model.clumps))),
+      search_(std::make_unique<NeighborSearch>(
+          default_skin(model, p), std::max(near_field_extra_range(model.params.near_field, p), gaps_.particles),
+          model.params.domain, largest_member_offset(model.clumps))),
       particle_contacts_(std::make_unique<ParticleContacts>(table_, policy.step_start)),
       barrier_contacts_(std::make_unique<BarrierContacts>(table_, b)) {
-  const double r_max = largest_radius(model, p);
-  particle_contacts_->set_gap(particle_cohesion_gap(table_, r_max));
-  const double barrier_gap = barrier_cohesion_gap(table_, r_max);
-  barrier_contacts_->set_gap(barrier_gap, has_cohesion(table_));
-  search_->set_barrier_gap(barrier_gap);
+  particle_contacts_->set_gap(gaps_.particles);
+  barrier_contacts_->set_gap(gaps_.barriers, gaps_.cohesive);
+  search_->set_barrier_gap(gaps_.barriers);
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
   if (model.params.analysis.thermal) heat_ = std::make_unique<HeatTransfer>(model, b);
   search_->set_incoming_index(near_ || heat_);

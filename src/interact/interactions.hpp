@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "contact/cohesion_reach.hpp"
 #include "contact/contact_table.hpp"
 #include "contact/eval_request.hpp"
 #include "core/heap_policy.hpp"
@@ -125,6 +126,8 @@ class Interactions {
   void end_step_loads(Barriers& b, std::span<const double> summed);
 
   const InteractionStats& stats() const { return stats_; }
+  // The contacts keep a cohesion state (a law with hysteresis or liquid bridges): bridges, breaks.
+  bool cohesive() const { return gaps_.cohesive; }
   // Forces and torques added to particles by a caller, between steps (interact/external_loads.hpp).
   ExternalLoads& external_loads() { return external_; }
   const PhaseTimes& times() const { return times_; }
@@ -184,6 +187,7 @@ class Interactions {
   const Model& model_;
   StepPolicy policy_;
   ContactTable table_;  // the contact laws by pair of materials, rebuilt from model_ at every evaluation
+  CohesionGaps gaps_;   // how far contacts reach beyond touching (contact/cohesion_reach.hpp), from the start
   InteractionStats stats_;
   ExternalLoads external_;
   PhaseTimes times_;
@@ -224,7 +228,5 @@ class Interactions {
 
 // Verlet skin used for a scene: [neighbor] skin, or 0.1 x the smallest particle diameter.
 double default_skin(const Model& model, const Particles& p);
-// m, the largest particle radius of the scene: the particles', its inlets' and its clump members'.
-double largest_radius(const Model& model, const Particles& p);
 
 }  // namespace mpdem

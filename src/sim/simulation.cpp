@@ -1,7 +1,5 @@
 #include "sim/simulation.hpp"
 
-#include "contact/cohesion_reach.hpp"
-
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -59,7 +57,6 @@ Simulation::Simulation(Scene&& scene, RunOptions options)
   // The inlets first: their first id follows every particle of the scene, whichever rank holds it.
   if (!scene_.model.params.inlets.empty()) inlets_ = std::make_unique<Inlets>(scene_.model, scene_.particles);
   if (!scene_.model.params.sinks.empty()) sinks_ = std::make_unique<Sinks>(scene_.model);
-  cohesive_ = has_cohesion(scene_.model);
   if (const Communicator& comm = options_.comm ? *options_.comm : Communicator::world(); !comm.serial())
     decompose(comm);
 }
@@ -346,7 +343,7 @@ void Simulation::step(double end) {
   }
   const auto& st = stats();
   progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count(), interactions_->imbalance(),
-                    cohesive_ ? std::optional<std::uint64_t>(st.bridges) : std::nullopt);
+                    interactions_->cohesive() ? std::optional<std::uint64_t>(st.bridges) : std::nullopt);
   if ((inlets_ || sinks_) && progress_->summary_due()) progress_->summary(open_system_summary());
   const auto every = static_cast<std::uint64_t>(prm.output.checkpoint_every);
   const std::filesystem::path dir = output_dir_for(scene_, options_);

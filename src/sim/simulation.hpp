@@ -191,7 +191,6 @@ class Simulation {
   std::unique_ptr<OutputManager> output_;
   std::unique_ptr<AnalysisOutputs> analysis_;  // contact snapshots, [[coarse_grain]] (null without)
   bool analysis_recording_ = false;            // analysis_ turned contact recording on for this step
-  bool cohesive_ = false;                      // contacts keep a cohesion state (the progress line shows bridges)
   std::unique_ptr<Progress> progress_;         // set while run() runs
   std::unique_ptr<Inlets> inlets_;             // null without [[inlet]]
   std::unique_ptr<Sinks> sinks_;               // null without [[sink]]

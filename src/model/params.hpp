@@ -15,6 +15,7 @@
 
 #include "analysis/coarse_grain.hpp"
 #include "core/vec3.hpp"
+#include "model/bond_params.hpp"
 #include "model/liquid_bridge.hpp"
 #include "model/open_boundaries.hpp"
 
@@ -226,6 +227,7 @@ struct Params {
   OutputParams output;
   CheckParams checks;
   ParallelParams parallel;
+  BondParams bonds;                           // [bonds], [[bonds.pair]], the bond CSV
   std::vector<InletSpec> inlets;              // [[inlet]] entries, in scene order
   std::vector<SinkSpec> sinks;                // [[sink]] entries, in scene order
   std::vector<CoarseGrainSpec> coarse_grain;  // [[coarse_grain]] entries, in scene order

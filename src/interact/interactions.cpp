@@ -11,6 +11,7 @@
 #include "core/parallel.hpp"
 #include "core/scoped_timer.hpp"
 #include "contact/barrier_contacts.hpp"
+#include "contact/bonds.hpp"
 #include "contact/cohesion_reach.hpp"
 #include "thermal/heat_transfer.hpp"
 #include "field/near_field_forces.hpp"
@@ -86,6 +87,13 @@ Interactions::Interactions(const Model& model, const Particles& p, const Barrier
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
   if (model.params.analysis.thermal) heat_ = std::make_unique<HeatTransfer>(model, b);
   search_->set_incoming_index(near_ || heat_);
+  if (model.params.bonds.enabled()) {
+    bonds_ = std::make_unique<Bonds>(model);
+    bonds_->make(p);
+    // The halo of a decomposed run reaches every bond's partner, with room for it to stretch,
+    // beyond the two largest radii it covers already.
+    bond_margin_ = std::max(0.0, 1.25 * bonds_->longest() - 2.0 * largest_radius(model, p));
+  }
 }
 
 Interactions::~Interactions() = default;
@@ -287,6 +295,7 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     const HeatFlows h = heat_->evaluate(p, b, *search_);
     if (req.commit) commit_heat(h, req);
   }
+  if (bonds_) evaluate_bonds(p, req);
   {
     ScopedTimer timer(times_.exchange);
     search_->fold_ghosts(p);  // what the periodic images received goes to their sources

@@ -56,7 +56,7 @@ struct ListedBond {
 struct BondParams {
   std::optional<BondKeys> defaults;  // [bonds] given: its keys (bonds on)
   std::vector<BondPairParams> pairs;
-  std::filesystem::path file;     // [bonds] file: the bond CSV (absolute), or empty
+  std::filesystem::path file;      // [bonds] file: the bond CSV (absolute), or empty
   std::vector<ListedBond> listed;  // its rows
   std::size_t line = 0;            // line of [bonds] in the scene file, for messages
   bool enabled() const { return defaults.has_value(); }
@@ -64,13 +64,13 @@ struct BondParams {
 
 // The resolved law of the bonds between two materials.
 struct BondLaw {
-  bool bonded = false;       // bonds are made between the two materials
-  double radius_ratio = 1.0;  // -, lambda
-  double young = 0.0;         // Pa, E_b
-  double stiffness_ratio = BondKeys::kStiffnessRatio;  // -, k_n / k_s
+  bool bonded = false;                                                // bonds are made between the two materials
+  double radius_ratio = 1.0;                                          // -, lambda
+  double young = 0.0;                                                 // Pa, E_b
+  double stiffness_ratio = BondKeys::kStiffnessRatio;                 // -, k_n / k_s
   double tensile_strength = std::numeric_limits<double>::infinity();  // Pa, sigma_c
   double shear_strength = std::numeric_limits<double>::infinity();    // Pa, tau_c
-  double damping = 0.0;                                                // -, zeta
+  double damping = 0.0;                                               // -, zeta
   double gap = -1.0;  // m, gap rule's reach; < 0: the gap rule makes no bond between them
 };
 

@@ -40,6 +40,7 @@ GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
       case StatLogged::thermal: logged_[k] = thermal_; break;
       case StatLogged::dissipative_field: logged_[k] = dissipative_fields(model.params.fields); break;
       case StatLogged::cohesion: logged_[k] = cohesion; break;
+      case StatLogged::bonds: logged_[k] = model.params.bonds.enabled(); break;
     }
   }
   columns_ = {"step",         "time",      "dt",     "iterations", "evaluations", "evaluations_total",

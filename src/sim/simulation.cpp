@@ -169,7 +169,7 @@ double Simulation::energy_balance(const HealthScan& s) const {
 
 void Simulation::record_state(const HealthScan& s) {
   const double balance = energy_balance(s);
-  const double active = active_energy(s.energy, stats().elastic_energy, stats().elastic_magnitude);
+  const double active = active_energy(s.energy, stats().elastic_energy + stats().bond_energy, stats().elastic_magnitude);
   if (!record_.started) {
     record_.start_balance = balance;
     record_.start_active = active;

@@ -49,6 +49,7 @@ void Simulation::decompose(const Communicator& comm) {
     for (const ClumpMember& m : scene_.model.clumps[static_cast<std::size_t>(p.bodies.clump[b])].members())
       member_reach = std::max(member_reach, norm(m.x));
   keep_owned(grid, p, comm.rank());
+  interactions_->keep_owned_bonds(p);
   comm_ = &comm;
   interactions_->decompose(comm, grid, 2.0 * member_reach);
   trapezoidal_.set_communicator(&comm);

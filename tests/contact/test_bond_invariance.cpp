@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <random>
 
 #include "contact/bonds.hpp"
 #include "core/parallel.hpp"
@@ -27,38 +26,7 @@ constexpr int kSide = 12;
 constexpr double kDt = 4e-7;
 constexpr std::uint64_t kSteps = 500;
 
-// ids: 1..n in lattice order, or relabelled n..1 and added in reverse.
-Scene block(Integrator integ, bool relabel) {
-  Scene s = bonded_scene(kDt, integ, 0.1, 0.0, 0.3e-3);
-  s.model.params.checks.max_overlap = 0.0;
-  s.model.params.fields.gravity = {0.0, 0.0, -9.81};
-  BondKeys& k = *s.model.params.bonds.defaults;
-  k.young = 1e8;
-  k.tensile_strength = 2e5;
-  k.shear_strength = 2e5;
-  const double W = 2.0 * kBondR * kSide;
-  add_flat_square(s.barriers, "plate", {0.5 * W, 0.5 * W, 0.0}, 2.0 * W, 4, 1e8, 0.3);
-  std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> U(0.9, 1.0);
-  struct P {
-    Vec3 x;
-    double r;
-  };
-  std::vector<P> ps;
-  for (int a = 0; a < kSide; ++a)
-    for (int b = 0; b < kSide; ++b)
-      for (int c = 0; c < kSide; ++c)
-        ps.push_back({{2.0 * kBondR * (a + 0.5), 2.0 * kBondR * (b + 0.5), 2.0 * kBondR * (c + 0.5) + 0.01e-3},
-                      kBondR * U(rng)});
-  const std::int64_t n = static_cast<std::int64_t>(ps.size());
-  for (std::int64_t k2 = 0; k2 < n; ++k2) {
-    const std::int64_t at = relabel ? n - 1 - k2 : k2;
-    const Vec3 w{0.0, 3.0, 0.0};  // rad/s: the block turns a little as it falls
-    add_particle(s, relabel ? k2 + 1 : at + 1, ps[static_cast<std::size_t>(at)].r, ps[static_cast<std::size_t>(at)].x,
-                 {0.3, 0.0, -3.0}, w);
-  }
-  return s;
-}
+Scene block(Integrator integ, bool relabel) { return bonded_block(integ, kDt, kSide, relabel); }
 
 // The particle of id `id` in a scene relabelled or not: relabelled ids run n..1.
 std::int64_t other_id(std::int64_t id) { return kSide * kSide * kSide + 1 - id; }

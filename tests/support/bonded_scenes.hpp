@@ -3,6 +3,8 @@
 // lambda = 1 and E_b = 1 GPa made by the gap rule (docs/scene.md "[bonds]"), no gravity.
 #include <cstdint>
 #include <numbers>
+#include <random>
+#include <vector>
 
 #include "model/scene.hpp"
 #include "support/contact_scenes.hpp"
@@ -38,6 +40,41 @@ inline Scene bonded_scene(double dt, Integrator integ, double zeta, double drag,
 inline void add_chain(Scene& s, int n) {
   for (int k = 0; k < n; ++k) add_particle(s, k + 1, kBondR, {2.0 * kBondR * k, 0.0, 0.0});
   s.particles.fixed[0] = 1;
+}
+
+// A block of side^3 spheres of radii 0.9..1 R (random, seed 11) on a lattice of 2 R, bonded to
+// their lattice neighbours (gap 0.3 mm; E_b = 1e8 Pa, strengths 2e5 Pa, zeta 0.1), falling at
+// 3 m/s and turning onto a plate just below, under gravity: bonds break near the plate within
+// 2e-4 s. ids 1..n in lattice order, or relabelled n..1 (particle added in reverse order).
+inline Scene bonded_block(Integrator integ, double dt, int side, bool relabel = false) {
+  Scene s = bonded_scene(dt, integ, 0.1, 0.0, 0.3e-3);
+  s.model.params.checks.max_overlap = 0.0;
+  s.model.params.fields.gravity = {0.0, 0.0, -9.81};
+  BondKeys& k = *s.model.params.bonds.defaults;
+  k.young = 1e8;
+  k.tensile_strength = 2e5;
+  k.shear_strength = 2e5;
+  const double W = 2.0 * kBondR * side;
+  add_flat_square(s.barriers, "plate", {0.5 * W, 0.5 * W, 0.0}, 2.0 * W, 4, 1e8, 0.3);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(0.9, 1.0);
+  struct P {
+    Vec3 x;
+    double r;
+  };
+  std::vector<P> ps;
+  for (int a = 0; a < side; ++a)
+    for (int b = 0; b < side; ++b)
+      for (int c = 0; c < side; ++c)
+        ps.push_back({{2.0 * kBondR * (a + 0.5), 2.0 * kBondR * (b + 0.5), 2.0 * kBondR * (c + 0.5) + 0.01e-3},
+                      kBondR * U(rng)});
+  const std::size_t n = ps.size();
+  for (std::size_t k2 = 0; k2 < n; ++k2) {
+    const std::size_t at = relabel ? n - 1 - k2 : k2;
+    add_particle(s, static_cast<std::int64_t>(relabel ? k2 + 1 : at + 1), ps[at].r, ps[at].x, {0.3, 0.0, -3.0},
+                 {0.0, 3.0, 0.0});
+  }
+  return s;
 }
 
 }  // namespace mpdem::test

@@ -2,6 +2,7 @@
 #include "contact/bond_making.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace mpdem {
 
@@ -13,8 +14,16 @@ std::vector<MadeBond> make_bonds(const Model& model, const Particles& p) {
       const BondLaw law = bond_law(bp, model.materials[static_cast<std::size_t>(p.material[a])].name,
                                    model.materials[static_cast<std::size_t>(p.material[b])].name);
       if (!law.bonded || law.gap < 0.0) continue;
-      if (norm(p.x[b] - p.x[a]) - p.radius[a] - p.radius[b] >= law.gap) continue;
+      Vec3 d = p.x[b] - p.x[a];
+      const DomainParams& dom = model.params.domain;
+      for (int c = 0; c < 3; ++c)
+        if (dom.periodic[static_cast<std::size_t>(c)]) {
+          const double period = dom.max[c] - dom.min[c];
+          d[c] -= period * std::round(d[c] / period);
+        }
+      if (norm(d) - p.radius[a] - p.radius[b] >= law.gap) continue;
       if (p.fixed[a] && p.fixed[b]) continue;
+      if (p.body[a] != kNoBody && p.body[a] == p.body[b]) continue;
       const bool order = p.id[a] < p.id[b];
       out.push_back({static_cast<std::uint32_t>(order ? a : b), static_cast<std::uint32_t>(order ? b : a)});
     }

@@ -55,10 +55,14 @@ inline double bond_energy(const BondSprings& k, double fn, const Vec3& fs, doubl
   return 0.5 * (fn * fn / k.normal + dot(fs, fs) / k.shear + mn * mn / k.twist + dot(ms, ms) / k.bend);
 }
 
-// s, the critical step of the bond's stiffest translational spring for the reduced mass m*
-// (kg): 2 sqrt(m* / (k_n A)), the stability limit of central differences for one oscillator.
-inline double bond_critical_step(const BondSprings& k, double reduced_mass) {
-  return 2.0 * std::sqrt(reduced_mass / k.normal);
+// s, the bond's critical step: 2 / omega for the faster of its normal mode, sqrt(k_n A / m*),
+// and its rotational one, sqrt((k_s A a^2 + k_n I) / I*) (the shear spring at the lever a, m,
+// from a centre to the bond's centre, and the bending spring turning the reduced moment of
+// inertia I*, kg m^2): the stability limit of central differences for one oscillator.
+inline double bond_critical_step(const BondSprings& k, double reduced_mass, double reduced_inertia, double lever) {
+  const double normal = k.normal / reduced_mass;                                // 1/s^2
+  const double turning = (k.shear * lever * lever + k.bend) / reduced_inertia;  // 1/s^2
+  return 2.0 / std::sqrt(normal > turning ? normal : turning);
 }
 
 // The dashpot coefficient that damps a spring k between reduced inertia m to the ratio zeta of

@@ -169,7 +169,8 @@ double Simulation::energy_balance(const HealthScan& s) const {
 
 void Simulation::record_state(const HealthScan& s) {
   const double balance = energy_balance(s);
-  const double active = active_energy(s.energy, stats().elastic_energy + stats().bond_energy, stats().elastic_magnitude);
+  const double active = active_energy(s.energy, stats().elastic_energy + stats().bond_energy,
+                                      stats().elastic_magnitude);
   if (!record_.started) {
     record_.start_balance = balance;
     record_.start_active = active;
@@ -343,7 +344,9 @@ void Simulation::step(double end) {
   }
   const auto& st = stats();
   progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count(), interactions_->imbalance(),
-                    interactions_->cohesive() ? std::optional<std::uint64_t>(st.bridges) : std::nullopt);
+                    interactions_->cohesive() ? std::optional<std::uint64_t>(st.bridges) : std::nullopt,
+                    interactions_->bonds() ? std::optional(std::array{st.bonds_intact, st.bonds_broken})
+                                           : std::nullopt);
   if ((inlets_ || sinks_) && progress_->summary_due()) progress_->summary(open_system_summary());
   const auto every = static_cast<std::uint64_t>(prm.output.checkpoint_every);
   const std::filesystem::path dir = output_dir_for(scene_, options_);

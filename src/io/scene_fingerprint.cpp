@@ -248,6 +248,7 @@ FingerprintPart bonds_part(const BondParams& b) {
   k.key("bonds.shear_strength", d.shear_strength);
   k.key("bonds.damping", d.damping);
   k.key("bonds.gap", d.gap);
+  const std::size_t keys = k.part().items.size();
   std::vector<std::string> labels;
   for (const BondPairParams& e : b.pairs) {
     const BondKeys& o = e.keys;
@@ -255,7 +256,9 @@ FingerprintPart bonds_part(const BondParams& b) {
                                      o.tensile_strength, o.shear_strength, o.damping, o.gap, o.bonded));
     labels.push_back("[[bonds.pair]] '" + e.material_a + "'-'" + e.material_b + "'");
   }
-  return k.finish("[[bonds.pair]] entries", std::move(labels));
+  FingerprintPart p = k.finish("[[bonds.pair]] entries", std::move(labels));
+  p.fixed = keys;  // the entries follow the keys: a changed count is reported as such
+  return p;
 }
 
 // The bond CSV's bonds, one item each, as id pairs (smaller id first) in ascending order: the

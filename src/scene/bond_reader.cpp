@@ -12,6 +12,7 @@
 
 #include "core/input_error.hpp"
 #include "io/csv_table.hpp"
+#include "model/bond_rules.hpp"
 #include "scene/contact_reader.hpp"
 #include "scene/input_paths.hpp"
 
@@ -109,20 +110,13 @@ void check_listed_bonds(const Scene& scene) {
   std::unordered_map<std::int64_t, std::size_t> index;  // particle id -> index
   index.reserve(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) index.emplace(p.id[i], i);
-  std::unordered_map<std::int64_t, std::size_t> body_index;  // body id -> index in p.bodies
-  for (std::size_t b = 0; b < p.bodies.size(); ++b) body_index.emplace(p.bodies.id[b], b);
-  const auto fixed = [&](std::size_t i) {
-    return p.fixed[i] != 0 || (p.body[i] != kNoBody && p.bodies.fixed[body_index.at(p.body[i])] != 0);
+  const std::vector<std::uint8_t> held = held_fixed(p);
+  const std::vector<BondLaw> laws = bond_laws(scene.model);
+  const std::size_t nm = scene.model.materials.size();
+  const auto base_name = [&](std::size_t m) {
+    const Material& mat = scene.model.materials[m];
+    return mat.variant_of >= 0 ? scene.model.materials[static_cast<std::size_t>(mat.variant_of)].name : mat.name;
   };
-  // Base material names by index (a variant takes its base's name) and which pairs may be bonded.
-  const std::vector<Material>& mats = scene.model.materials;
-  std::vector<std::string> names(mats.size());
-  for (std::size_t m = 0; m < mats.size(); ++m)
-    names[m] = mats[m].variant_of >= 0 ? mats[static_cast<std::size_t>(mats[m].variant_of)].name : mats[m].name;
-  std::vector<std::uint8_t> bondable(mats.size() * mats.size());
-  for (std::size_t a = 0; a < mats.size(); ++a)
-    for (std::size_t c = 0; c < mats.size(); ++c)
-      bondable[a * mats.size() + c] = bond_law(bonds, names[a], names[c]).bonded;
   for (const ListedBond& b : bonds.listed) {
     const auto i = index.find(b.id_i), j = index.find(b.id_j);
     if (i == index.end() || j == index.end()) {
@@ -136,15 +130,15 @@ void check_listed_bonds(const Scene& scene) {
                        fmt::format("ids {} and {} are members of one clump body ({}), which moves rigidly: the bond "
                                    "could never act",
                                    b.id_i, b.id_j, p.body[pi]));
-    if (fixed(pi) && fixed(pj))
+    if (held[pi] && held[pj])
       throw InputError(file, b.line, "id_j",
                        fmt::format("ids {} and {} are both fixed: the bond could never act", b.id_i, b.id_j));
     const std::size_t ma = static_cast<std::size_t>(p.material[pi]), mc = static_cast<std::size_t>(p.material[pj]);
-    if (!bondable[ma * mats.size() + mc])
+    if (!laws[ma * nm + mc].bonded)
       throw InputError(file, b.line, "id_j",
                        fmt::format("ids {} and {} are of materials '{}' and '{}', which [[bonds.pair]] makes "
                                    "unbondable (bonded = false)",
-                                   b.id_i, b.id_j, names[ma], names[mc]));
+                                   b.id_i, b.id_j, base_name(ma), base_name(mc)));
   }
 }
 

@@ -146,13 +146,15 @@ std::vector<MadeBond> listed_bonds(const Model& model, const Particles& p) {
   return out;
 }
 
+std::vector<MadeBond> bond_union(const Particles& p, std::vector<MadeBond> a, const std::vector<MadeBond>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  std::sort(a.begin(), a.end(), [&](const MadeBond& x, const MadeBond& y) { return by_ids(p, x, y); });
+  a.erase(std::unique(a.begin(), a.end()), a.end());
+  return a;
+}
+
 std::vector<MadeBond> make_bonds(const Model& model, const Particles& p) {
-  std::vector<MadeBond> out = gap_bonds(model, p);
-  const std::vector<MadeBond> listed = listed_bonds(model, p);
-  out.insert(out.end(), listed.begin(), listed.end());
-  std::sort(out.begin(), out.end(), [&](const MadeBond& a, const MadeBond& b) { return by_ids(p, a, b); });
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+  return bond_union(p, gap_bonds(model, p), listed_bonds(model, p));
 }
 
 }  // namespace mpdem

@@ -32,5 +32,7 @@ std::vector<MadeBond> listed_bonds(const Model& model, const Particles& p);
 // duplicates, sorted by (id_i, id_j); bonds between two fixed particles and clump members of the
 // same body are left out, as are listed bonds between materials that [[bonds.pair]] keeps apart.
 std::vector<MadeBond> make_bonds(const Model& model, const Particles& p);
+// The union of two lists of bonds of p, sorted by (id_i, id_j), each bond once.
+std::vector<MadeBond> bond_union(const Particles& p, std::vector<MadeBond> a, const std::vector<MadeBond>& b);
 
 }  // namespace mpdem

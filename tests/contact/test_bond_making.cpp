@@ -110,6 +110,29 @@ TEST(BondMaking, PairEntriesKeepMaterialsApartOrSetTheirGap) {
   EXPECT_EQ(id_pairs(s.particles, make_bonds(s.model, s.particles)), (Ids{{1, 2}, {2, 3}, {3, 4}, {4, 5}}));
 }
 
+TEST(BondMaking, MaterialVariantsTakeTheirMaterialsLaw) {
+  // Particle 2 has a variant of the first material (per-row CSV values): the entry naming the
+  // material keeps it apart from "b" too.
+  Scene s = bonded_scene(0.2 * kR);
+  Material b = s.model.materials.front();
+  b.name = "b";
+  s.model.materials.push_back(b);
+  Material variant = s.model.materials.front();
+  variant.name = "default#1";
+  variant.density *= 2.0;
+  variant.variant_of = 0;
+  s.model.materials.push_back(variant);
+  for (std::int64_t id = 1; id <= 3; ++id)
+    test::add_particle(s, id, kR, {static_cast<double>(id - 1) * 2.1 * kR, 0.0, 0.0});
+  s.particles.material[1] = 2;  // the variant
+  s.particles.material[2] = 1;  // "b"
+  BondPairParams e{"b", "default", {}, 0};
+  e.keys.bonded = false;
+  s.model.params.bonds.pairs = {e};
+  using Ids = std::vector<std::pair<std::int64_t, std::int64_t>>;
+  EXPECT_EQ(id_pairs(s.particles, make_bonds(s.model, s.particles)), (Ids{{1, 2}}));
+}
+
 TEST(BondMaking, PeriodicFacesBondTheNearestImage) {
   // A ring of 8 spheres along x in a periodic box of length 8 a: the last is bonded to the first.
   const int n = 8;

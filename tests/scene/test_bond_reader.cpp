@@ -267,6 +267,23 @@ TEST(BondReader, ListedBondsThatCanNeverActAreRefused) {
   expect_contains(load_error(d, clump + kSources + bonds), {at(d, "b.csv", 2, "id_j"), "both fixed"});
 }
 
+// A particle CSV row with its own density gets a variant of its material ("glass#1"): the pair
+// entries naming the material apply to it, and messages name the material as given.
+TEST(BondReader, MaterialVariantsFollowTheirMaterial) {
+  TempDir d("mpdem_bonds");
+  d.write("p.csv", "id,x,y,z,radius,density\n1,0,0,0,0.001,\n2,0.0021,0,0,0.001,3000\n3,0.0042,0,0,0.001,\n");
+  d.write("q.csv", kFixed);
+  d.write("b.csv", "id_i,id_j\n2,4\n");
+  const std::string apart = "[bonds]\nyoung = 1e9\nfile = \"b.csv\"\n"
+                            "[[bonds.pair]]\nmaterials = [\"glass\", \"steel\"]\nbonded = false\n";
+  const std::string msg = load_error(d, kSources + apart);
+  expect_contains(msg, {at(d, "b.csv", 2, "id_j"), "ids 2 and 4 are of materials 'glass' and 'steel'"});
+  d.write("b.csv", "id_i,id_j\n2,1\n");
+  const Scene s = load_scene(d.write("scene.toml", kHead + kSources + apart));
+  ASSERT_GT(s.model.materials.size(), 2u);  // the variant was made
+  EXPECT_EQ(s.model.params.bonds.listed.size(), 1u);
+}
+
 TEST(BondReader, TheCommandExitsWithStatusTwo) {
   TempDir d("mpdem_bonds");
   d.write("p.csv", kParticles);

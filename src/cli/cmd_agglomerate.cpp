@@ -91,9 +91,9 @@ int run_agglomerate(const AgglomerateArgs& a) {
   const std::string where = a.surface.empty() ? fmt::format("a sphere of radius {:.6g} m", g.sphere_radius)
                                               : fmt::format("{} scaled by {:.6g}", a.surface.string(), g.scale);
   const std::string comment = fmt::format(
-      "mpdem agglomerate, seed {}, {} particles, radius {}, in {}, solid fraction {:.4f}; bonds (surface "
-      "gap < {} m) in {}",
-      a.seed, g.x.size(), s.radius.describe(), where, g.fraction, g.gap, bonds.filename().string());
+      "mpdem agglomerate, seed {}, {} particles, radius {}, in {}, solid fraction {:.4f}, bonds at a surface "
+      "gap below {} m",
+      a.seed, g.x.size(), s.radius.describe(), where, g.fraction, g.gap);
   write_agglomerate_particles(particles, g, a.material, a.density_given ? a.density : 0.0, comment);
   write_bond_csv(bonds, g.bonds);
   if (!a.quiet) {

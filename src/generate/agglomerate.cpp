@@ -158,7 +158,7 @@ Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
                            "less in a small container), or raise --tolerance or --max-sweeps");
   out.x = std::move(pack.x);
 
-  out.gap = spec.gap >= 0.0 ? spec.gap : 0.01 * r_sum / static_cast<double>(out.radius.size());
+  out.gap = spec.gap >= 0.0 ? spec.gap : r_sum / (100.0 * static_cast<double>(out.radius.size()));
   out.bonds = gap_pairs(out.x, out.radius, out.gap);
   clusters(out.x.size(), out.bonds, out.unbonded, out.largest_cluster);
   return out;

@@ -19,6 +19,7 @@ constexpr double kStartFraction = 0.3;      // -, solid fraction of the shrunk s
 constexpr double kGrowth = 5e-3;            // -, relative radius growth per sweep while growing
 constexpr double kGrowBelow = 0.1;          // -, the radii grow only while the overlaps are below this
 constexpr double kRelax = 1.9;              // -, over-relaxation: a projection moves a pair 1.9 x its overlap apart
+constexpr int kPushes = 8;                  // pushes back inside per sphere and sweep, at most
 constexpr std::size_t kMaxTries = 1000000;  // random centres tried per sphere at the start
 
 // The state of a packing between sweeps: centres, the radii's current scale, and for each
@@ -70,7 +71,9 @@ class Packer {
   // still inside: the container's surface is asked only about the others (those near it).
   void put_inside(std::size_t i, double r) {
     if (clear_[i] >= 0.0 && norm(x_[i] - ref_[i]) + r <= clear_[i]) return;
-    box_.push_inside(x_[i], r);
+    // Near an edge or a corner of a surface one push clears the nearest face only: a few more
+    // clear the others.
+    for (int k = 0; k < kPushes && box_.push_inside(x_[i], r) > 0.0; ++k) {}
     ref_[i] = x_[i];
     clear_[i] = box_.depth(x_[i]);
   }

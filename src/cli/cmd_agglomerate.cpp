@@ -35,10 +35,11 @@ struct AgglomerateArgs {
   bool gap_given = false;
   RadiusArgs radius;
   std::uint64_t seed = 1;
-  std::size_t max_sweeps = 200000;
+  std::size_t max_sweeps = 20000;
   std::string material;
   double density = 0.0;  // kg/m^3; 0: no column
   bool density_given = false;
+  bool largest_cluster = false;
   bool overwrite = false;
   bool quiet = false;
 };
@@ -77,6 +78,7 @@ int run_agglomerate(const AgglomerateArgs& a) {
   s.gap = a.gap_given ? a.gap : -1.0;
   s.seed = a.seed;
   s.max_sweeps = a.max_sweeps;
+  s.largest_cluster_only = a.largest_cluster;
   if (a.density_given && !(a.density > 0.0 && std::isfinite(a.density)))
     bad("--density", "expected a finite density > 0 (kg/m^3)");
   if (a.material.find_first_of(",#\n\r") != std::string::npos)
@@ -92,15 +94,19 @@ int run_agglomerate(const AgglomerateArgs& a) {
                                               : fmt::format("{} scaled by {:.6g}", a.surface.string(), g.scale);
   const std::string comment = fmt::format(
       "mpdem agglomerate, seed {}, {} particles, radius {}, in {}, solid fraction {:.4f}, bonds at a surface "
-      "gap below {} m",
-      a.seed, g.x.size(), s.radius.describe(), where, g.fraction, g.gap);
+      "gap below {} m{}",
+      a.seed, g.x.size(), s.radius.describe(), where, g.kept_fraction, g.gap,
+      a.largest_cluster ? fmt::format(", the largest bonded cluster of {} packed", g.x.size() + g.dropped) : "");
   write_agglomerate_particles(particles, g, a.material, a.density_given ? a.density : 0.0, comment);
   write_bond_csv(bonds, g.bonds);
   if (!a.quiet) {
     const double n = static_cast<double>(g.x.size());
     fmt::print("packed {} particles in {} ({:.6g} m^3): solid fraction {:.4f}, largest overlap {:.2e} of the smaller "
                "radius, {} sweeps, {:.2f} s\n",
-               g.x.size(), where, g.container_volume, g.fraction, g.largest_overlap, g.sweeps, secs);
+               g.x.size() + g.dropped, where, g.container_volume, g.fraction, g.largest_overlap, g.sweeps, secs);
+    if (a.largest_cluster)
+      fmt::print("kept the largest bonded cluster: {} particles ({} dropped), solid fraction {:.4f}\n", g.x.size(),
+                 g.dropped, g.kept_fraction);
     fmt::print("{} bonds (surface gap < {:.6g} m): {:.2f} per particle, {} particle(s) without a bond, largest bonded "
                "cluster {} of {}\n",
                g.bonds.size(), g.gap, 2.0 * static_cast<double>(g.bonds.size()) / n, g.unbonded, g.largest_cluster,
@@ -130,9 +136,11 @@ void add_agglomerate_command(CLI::App& app, ToolAction& action) {
                             "bond when the surface gap is below this (m; default 1 % of the mean "
                             "radius)");
   c->add_option("--seed", a->seed, "random seed (default 1)");
-  c->add_option("--max-sweeps", a->max_sweeps, "overlap-removal sweeps before giving up (default 200000)");
+  c->add_option("--max-sweeps", a->max_sweeps, "overlap-removal sweeps before giving up (default 20000)");
   c->add_option("--material", a->material, "value of the particle CSV's material column");
   auto* density = c->add_option("--density", a->density, "value of the particle CSV's density column (kg/m^3)");
+  c->add_flag("--largest-cluster", a->largest_cluster,
+              "keep only the largest bonded cluster (drops particles without a bond and smaller clusters)");
   c->add_flag("--overwrite", a->overwrite, "replace existing output files");
   c->add_flag("--quiet,-q", a->quiet, "print nothing on success");
   c->callback([a, gap, density, &action] {

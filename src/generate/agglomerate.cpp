@@ -26,10 +26,16 @@ constexpr std::size_t kMaxCount = 10'000'000;  // beyond this a request is surel
 
 double ball_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
-// The largest set of particles joined by bonds (union-find), and how many have none.
-void clusters(std::size_t n, const std::vector<std::array<std::size_t, 2>>& bonds, std::size_t& unbonded,
-              std::size_t& largest) {
-  std::vector<std::size_t> parent(n), size(n, 1), degree(n, 0);
+// Bonded clusters (union-find): each particle's cluster label (the lowest index in it), how
+// many particles have no bond, and the label of the largest cluster (the lowest label of a tie).
+struct Clusters {
+  std::vector<std::size_t> label;  // shape [n]
+  std::size_t unbonded = 0, largest = 0, largest_size = 0;
+};
+
+Clusters clusters(std::size_t n, const std::vector<std::array<std::size_t, 2>>& bonds) {
+  Clusters c;
+  std::vector<std::size_t> parent(n), size(n, 0), degree(n, 0);
   for (std::size_t i = 0; i < n; ++i) parent[i] = i;
   const auto root = [&](std::size_t i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
@@ -38,16 +44,39 @@ void clusters(std::size_t n, const std::vector<std::array<std::size_t, 2>>& bond
   for (const auto& [i, j] : bonds) {
     ++degree[i];
     ++degree[j];
-    std::size_t a = root(i), b = root(j);
-    if (a == b) continue;
-    if (size[a] < size[b]) std::swap(a, b);
-    parent[b] = a;
-    size[a] += size[b];
+    const std::size_t a = root(i), b = root(j);
+    parent[std::max(a, b)] = std::min(a, b);  // the root stays the lowest index
   }
-  unbonded = static_cast<std::size_t>(std::count(degree.begin(), degree.end(), 0));
-  largest = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    if (parent[i] == i) largest = std::max(largest, size[i]);
+  c.label.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    c.label[i] = root(i);
+    if (++size[c.label[i]] > c.largest_size || (size[c.label[i]] == c.largest_size && c.label[i] < c.largest)) {
+      c.largest_size = size[c.label[i]];
+      c.largest = c.label[i];
+    }
+  }
+  c.unbonded = static_cast<std::size_t>(std::count(degree.begin(), degree.end(), 0));
+  return c;
+}
+
+// Keeps the particles of cluster `keep` only, renumbered in their order; their bonds follow.
+void keep_cluster(Agglomerate& a, const Clusters& c, std::size_t keep) {
+  std::vector<std::size_t> index(a.x.size());  // new index of each kept particle
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.x.size(); ++i)
+    if (c.label[i] == keep) {
+      index[i] = n;
+      a.x[n] = a.x[i];
+      a.radius[n] = a.radius[i];
+      ++n;
+    }
+  a.dropped = a.x.size() - n;
+  a.x.resize(n);
+  a.radius.resize(n);
+  std::size_t m = 0;
+  for (const auto& [i, j] : a.bonds)  // a renumbering in order keeps the list sorted
+    if (c.label[i] == keep) a.bonds[m++] = {index[i], index[j]};
+  a.bonds.resize(m);
 }
 
 }  // namespace
@@ -160,7 +189,17 @@ Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
 
   out.gap = spec.gap >= 0.0 ? spec.gap : r_sum / (100.0 * static_cast<double>(out.radius.size()));
   out.bonds = gap_pairs(out.x, out.radius, out.gap);
-  clusters(out.x.size(), out.bonds, out.unbonded, out.largest_cluster);
+  Clusters c = clusters(out.x.size(), out.bonds);
+  out.kept_fraction = out.fraction;
+  if (spec.largest_cluster_only && c.largest_size < out.x.size()) {
+    keep_cluster(out, c, c.largest);
+    double kept = 0.0;  // m^3
+    for (const double r : out.radius) kept += ball_volume(r);
+    out.kept_fraction = kept / out.container_volume;
+    c = clusters(out.x.size(), out.bonds);
+  }
+  out.unbonded = c.unbonded;
+  out.largest_cluster = c.largest_size;
   return out;
 }
 

@@ -206,3 +206,42 @@ TEST(Agglomerate, BadRequestsNameTheOption) {
   test::expect_contains(what, {"'--fraction'", "did not fall below the tolerance 0.001 within 2000 sweeps",
                                "solid fraction 0.7000", "lower --fraction"});
 }
+
+// largest_cluster_only keeps the largest bonded cluster: every particle bonded, all of them
+// joined (a walk over the bonds reaches every one), the bonds the gap rule's pairs of the
+// particles kept, and the particles kept those of the full packing, in its order.
+TEST(Agglomerate, LargestClusterOnly) {
+  AgglomerateSpec s = equal_spheres(1000, 0.55);
+  const Agglomerate all = make_agglomerate(s);
+  ASSERT_GT(all.unbonded, 0u) << "the test needs a packing with particles left out";
+  s.largest_cluster_only = true;
+  const Agglomerate a = make_agglomerate(s);
+  EXPECT_EQ(a.x.size(), all.largest_cluster);
+  EXPECT_EQ(a.dropped, all.x.size() - a.x.size());
+  EXPECT_EQ(a.unbonded, 0u);
+  EXPECT_EQ(a.largest_cluster, a.x.size());
+  EXPECT_EQ(a.bonds, brute_gap_pairs(a, a.gap));
+  EXPECT_NEAR(a.kept_fraction, solid_volume(a) / a.container_volume, 1e-12);
+  EXPECT_EQ(a.fraction, all.fraction);
+  // Connected: a breadth-first walk from particle 0.
+  std::vector<std::vector<std::size_t>> next(a.x.size());
+  for (const auto& [i, j] : a.bonds) {
+    next[i].push_back(j);
+    next[j].push_back(i);
+  }
+  std::vector<bool> seen(a.x.size(), false);
+  std::vector<std::size_t> queue{0};
+  seen[0] = true;
+  for (std::size_t k = 0; k < queue.size(); ++k)
+    for (const std::size_t j : next[queue[k]])
+      if (!seen[j]) {
+        seen[j] = true;
+        queue.push_back(j);
+      }
+  EXPECT_EQ(queue.size(), a.x.size());
+  // The kept particles are the packing's, in order.
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < all.x.size() && k < a.x.size(); ++i)
+    if (all.x[i].x == a.x[k].x && all.x[i].y == a.x[k].y && all.x[i].z == a.x[k].z) ++k;
+  EXPECT_EQ(k, a.x.size());
+}

@@ -79,9 +79,8 @@ void keep_cluster(Agglomerate& a, const Clusters& c, std::size_t keep) {
   a.bonds.resize(m);
 }
 
-}  // namespace
-
-Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
+// Every option's range, and which of count and container size sets the other.
+void check_spec(const AgglomerateSpec& spec) {
   const auto fail = [&](const std::string& option, const std::string& msg) {
     throw InputError(spec.origin, 0, option, msg);
   };
@@ -95,16 +94,28 @@ Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
   if (spec.count > kMaxCount) fail("--count", "expected at most 1e7 particles, got " + std::to_string(spec.count));
   const bool sphere = spec.surface.empty();
   const std::string size_option = sphere ? "--sphere" : "--scale";
-  const bool sized = sphere ? spec.sphere_radius != 0.0 : spec.scale != 0.0;
-  if (spec.count > 0 && sized)
+  const double size = sphere ? spec.sphere_radius : spec.scale;  // 0: not given
+  if (spec.count > 0 && size != 0.0)
     fail("--count", "give --count or the container's size (" + size_option +
                         "), not both: with the solid fraction, either sets the other");
-  if (spec.count == 0 && sphere && !sized) fail("--sphere", "give the sphere's radius --sphere R (m) or a --count");
-  if (sized &&
-      !(std::isfinite(sphere ? spec.sphere_radius : spec.scale) && (sphere ? spec.sphere_radius : spec.scale) > 0.0))
-    fail(size_option, "expected a finite value > 0, got " + number_text(sphere ? spec.sphere_radius : spec.scale));
+  if (spec.count == 0 && sphere && size == 0.0)
+    fail("--sphere", "give the sphere's radius --sphere R (m) or a --count");
+  if (size != 0.0 && !(std::isfinite(size) && size > 0.0))
+    fail(size_option, "expected a finite value > 0, got " + number_text(size));
   for (int a = 0; a < 3; ++a)
     if (!std::isfinite(spec.centre[a])) fail("--centre", "expected finite coordinates");
+}
+
+}  // namespace
+
+Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
+  check_spec(spec);
+  const bool sphere = spec.surface.empty();
+  // The option that sets the container's size, blamed when the particles do not fit in it.
+  const std::string size_option = spec.count > 0 ? "--count" : sphere ? "--sphere" : "--scale";
+  const auto fail = [&](const std::string& option, const std::string& msg) {
+    throw InputError(spec.origin, 0, option, msg);
+  };
 
   Agglomerate out;
   Rng rng(spec.seed);
@@ -134,6 +145,9 @@ Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
   } else {
     if (!(std::isfinite(volume) && volume > 0.0))
       fail(size_option, "the container's volume " + number_text(volume) + " m^3 is not finite and > 0");
+    // At least F V / (the largest sphere's volume) draws: refused before drawing them.
+    if (spec.fraction * volume / ball_volume(spec.radius.largest()) > static_cast<double>(kMaxCount))
+      fail(size_option, "the container holds more than 1e7 particles at this solid fraction; check units");
     out.radius = draw_radii(draw, volume, rng);
     if (out.radius.empty()) fail(size_option, "the container holds less than one particle at this solid fraction");
   }
@@ -161,8 +175,7 @@ Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
   out.fraction = solid / out.container_volume;
   const Vec3 extent = box->hi() - box->lo();
   if (2.0 * r_max >= std::min({extent.x, extent.y, extent.z}))
-    fail(sphere ? size_option : "--scale",
-         "the largest particle (radius " + number_text(r_max) + " m) does not fit in the container");
+    fail(size_option, "the largest particle (radius " + number_text(r_max) + " m) does not fit in the container");
 
   PackingOptions po;
   po.tolerance = spec.tolerance;
@@ -172,7 +185,7 @@ Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
   try {
     pack = pack_dense(out.radius, *box, po);
   } catch (const std::invalid_argument& e) {
-    fail(sphere ? size_option : "--scale", e.what());
+    fail(size_option, e.what());
   }
   out.largest_overlap = pack.largest_overlap;
   out.largest_protrusion = pack.largest_protrusion;

@@ -159,6 +159,7 @@ TEST(AgglomerateCommand, BadOptionsExit2NamingTheOption) {
       {"-r 0.5e-3", "'--sphere': give the sphere's radius"},
       {"-r 0.5e-3 --sphere -1", "'--sphere': expected a finite value > 0"},
       {"-r 0.5e-3 --sphere 0.4e-3", "'--sphere': the container holds less than one particle"},
+      {"-r 1e-5 --sphere 1", "'--sphere': the container holds more than 1e7 particles"},
       {"-n 100", "'--radius': give --radius R > 0 or a --distribution"},
       {"-n 100 -r -1", "'--radius'"},
       {"-n 100 --distribution cubic", "'--distribution': expected constant, uniform"},

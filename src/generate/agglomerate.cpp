@@ -29,12 +29,14 @@ double ball_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; 
 // Bonded clusters (union-find): each particle's cluster label (the lowest index in it), how
 // many particles have no bond, and the label of the largest cluster (the lowest label of a tie).
 struct Clusters {
-  std::vector<std::size_t> label;  // shape [n]
-  std::size_t unbonded = 0, largest = 0, largest_size = 0;
+  std::vector<std::size_t> label;                           // -, particle index, shape [n]
+  std::size_t unbonded = 0, largest = 0, largest_size = 0;  // particles, label, particles
 };
 
 Clusters clusters(std::size_t n, const std::vector<std::array<std::size_t, 2>>& bonds) {
   Clusters c;
+  // Per particle, shape [n]: union-find parent (index), cluster size (particles, counted at the
+  // roots), bonds.
   std::vector<std::size_t> parent(n), size(n, 0), degree(n, 0);
   for (std::size_t i = 0; i < n; ++i) parent[i] = i;
   const auto root = [&](std::size_t i) {

@@ -13,8 +13,10 @@
 #include "core/input_error.hpp"
 #include "generate/agglomerate.hpp"
 #include "geometry/mesh_solid.hpp"
+#include "geometry/mesh_transform.hpp"
 #include "io/stl_writer.hpp"
 #include "support/solid_meshes.hpp"
+#include "tools/mesh_builder.hpp"
 #include "support/temp_dir.hpp"
 
 using namespace mpdem;
@@ -183,6 +185,43 @@ TEST(Agglomerate, ClosedSurfaceContainer) {
     EXPECT_LE(largest_overlap(a), 1e-3);
     EXPECT_EQ(a.bonds, brute_gap_pairs(a, a.gap));
   }
+}
+
+// A non-convex container: an 8 mm cube with a closed cubic cavity of 3.2 mm in its middle (the
+// solid between them). Every sphere keeps out of the cavity: its centre is at least
+// (1 - tolerance) r from the cavity's box, measured analytically, and inside the outer cube.
+TEST(Agglomerate, ContainerWithACavity) {
+  TempDir dir("mpdem_agg");
+  TriangleMesh outer = make_box(1, 1, 1, true);
+  outer.flip();                                        // normals out of the solid
+  TriangleMesh inner = make_box(0.4, 0.4, 0.4, true);  // normals into the cavity = out of the solid
+  transform_mesh(inner, 1.0, {}, {0, 0, 0.3});
+  outer.append(inner);
+  transform_mesh(outer, 1.0, {}, {0.5, 0.5, 0});  // [0, 1]^3 around [0.3, 0.7]^3
+  const auto file = dir.path / "cavity.stl";
+  write_stl(file, soup(outer), StlFormat::Ascii);
+
+  AgglomerateSpec s = equal_spheres(0, 0.5);
+  s.radius.value = 0.4e-3;
+  s.surface = file;
+  s.scale = 8e-3;
+  const Agglomerate a = make_agglomerate(s);
+  const double side = 8e-3, lo = 0.3 * side, hi = 0.7 * side;  // m
+  EXPECT_NEAR(a.container_volume, side * side * side * (1 - 0.064), 1e-9 * a.container_volume);
+  EXPECT_NEAR(a.fraction, 0.5, 0.5 * ball_volume(0.4e-3) / a.container_volume);
+  for (std::size_t i = 0; i < a.x.size(); ++i) {
+    const double r = a.radius[i] * (1 - 1e-3);
+    double d2 = 0.0;  // m^2, squared distance from the centre to the cavity's box
+    for (int k = 0; k < 3; ++k) {
+      const double c = a.x[i][k];
+      EXPECT_GE(c, r) << "particle " << i;
+      EXPECT_LE(c, side - r) << "particle " << i;
+      const double out = std::max({lo - c, 0.0, c - hi});
+      d2 += out * out;
+    }
+    EXPECT_GE(std::sqrt(d2), r) << "particle " << i;
+  }
+  EXPECT_LE(largest_overlap(a), 1e-3);
 }
 
 // Impossible or contradictory requests name the option at fault.

@@ -13,10 +13,8 @@
 #include "core/input_error.hpp"
 #include "generate/agglomerate.hpp"
 #include "geometry/mesh_solid.hpp"
-#include "geometry/mesh_transform.hpp"
 #include "io/stl_writer.hpp"
 #include "support/solid_meshes.hpp"
-#include "tools/mesh_builder.hpp"
 #include "support/temp_dir.hpp"
 
 using namespace mpdem;
@@ -192,14 +190,13 @@ TEST(Agglomerate, ClosedSurfaceContainer) {
 // (1 - tolerance) r from the cavity's box, measured analytically, and inside the outer cube.
 TEST(Agglomerate, ContainerWithACavity) {
   TempDir dir("mpdem_agg");
-  TriangleMesh outer = make_box(1, 1, 1, true);
-  outer.flip();                                        // normals out of the solid
-  TriangleMesh inner = make_box(0.4, 0.4, 0.4, true);  // normals into the cavity = out of the solid
-  transform_mesh(inner, 1.0, {}, {0, 0, 0.3});
-  outer.append(inner);
-  transform_mesh(outer, 1.0, {}, {0.5, 0.5, 0});  // [0, 1]^3 around [0.3, 0.7]^3
+  TriangleMesh solid = test::solid_box(1, 1, 1);         // [0, 1]^3, normals out of the solid
+  TriangleMesh cavity = test::solid_box(0.4, 0.4, 0.4);  // [0.3, 0.7]^3 once moved
+  for (Vec3& v : cavity.vertices) v += Vec3{0.3, 0.3, 0.3};
+  cavity.flip();  // normals into the cavity, out of the solid
+  solid.append(cavity);
   const auto file = dir.path / "cavity.stl";
-  write_stl(file, soup(outer), StlFormat::Ascii);
+  write_stl(file, soup(solid), StlFormat::Ascii);
 
   AgglomerateSpec s = equal_spheres(0, 0.5);
   s.radius.value = 0.4e-3;

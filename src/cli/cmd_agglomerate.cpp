@@ -39,6 +39,7 @@ struct AgglomerateArgs {
   std::string material;
   double density = 0.0;  // kg/m^3; 0: no column
   bool density_given = false;
+  bool sphere_given = false, scale_given = false;
   bool largest_cluster = false;
   bool overwrite = false;
   bool quiet = false;
@@ -51,6 +52,8 @@ void check_output(const fs::path& file, bool overwrite) {
   std::error_code ec;
   const fs::file_status st = fs::status(file, ec);
   if (fs::is_directory(st)) bad("--output", "'" + file.string() + "' is a folder; expected a file name prefix");
+  if (const fs::path dir = file.parent_path(); !dir.empty() && !fs::is_directory(dir, ec))
+    bad("--output", "the folder '" + dir.string() + "' does not exist");
   if (fs::exists(st) && !overwrite)
     bad("--output", "'" + file.string() + "' exists; pass --overwrite to replace it, or choose another --output");
 }
@@ -64,10 +67,13 @@ int run_agglomerate(const AgglomerateArgs& a) {
   s.count = a.count;
   s.fraction = a.fraction;
   s.surface = a.surface;
-  s.scale = a.surface.empty() || a.count > 0 || a.scale != 0.0 ? a.scale : 1.0;
-  if (!a.surface.empty() && a.sphere != 0.0) bad("--sphere", "give --sphere R or --stl FILE, not both");
-  if (a.surface.empty() && a.scale != 0.0)
-    bad("--scale", "--scale scales the --stl surface; a sphere takes --sphere R");
+  // A size given must be > 0: 0 stands for "not given" in the spec.
+  if (a.sphere_given && !(a.sphere > 0.0 && std::isfinite(a.sphere)))
+    bad("--sphere", "expected a finite radius > 0 (m)");
+  if (a.scale_given && !(a.scale > 0.0 && std::isfinite(a.scale))) bad("--scale", "expected a finite scale > 0");
+  if (!a.surface.empty() && a.sphere_given) bad("--sphere", "give --sphere R or --stl FILE, not both");
+  if (a.surface.empty() && a.scale_given) bad("--scale", "--scale scales the --stl surface; a sphere takes --sphere R");
+  s.scale = a.scale_given ? a.scale : (a.surface.empty() || a.count > 0 ? 0.0 : 1.0);
   if (!a.centre.empty()) {
     if (!a.surface.empty()) bad("--centre", "--centre places the sphere; a surface stays where its file puts it");
     s.centre = {a.centre[0], a.centre[1], a.centre[2]};
@@ -125,10 +131,11 @@ void add_agglomerate_command(CLI::App& app, ToolAction& action) {
   c->add_option("-o,--output", a->output, "file name prefix: writes PREFIX_particles.csv and PREFIX_bonds.csv")
       ->required();
   c->add_option("-n,--count", a->count, "number of particles (the container's size then follows)");
-  c->add_option("--sphere", a->sphere, "container: a sphere of this radius (m)");
+  auto* sphere = c->add_option("--sphere", a->sphere, "container: a sphere of this radius (m)");
   c->add_option("--centre", a->centre, "the sphere's centre x y z (m; default 0 0 0)")->expected(3);
   c->add_option("--stl", a->surface, "container: a closed surface (.stl, or a barrier .csv)")->check(CLI::ExistingFile);
-  c->add_option("--scale", a->scale, "the surface's coordinates times this (default 1, or set by --count)");
+  auto* scale = c->add_option("--scale", a->scale,
+                              "the surface's coordinates times this (default 1, or set by --count)");
   c->add_option("-f,--fraction", a->fraction, "solid fraction (default 0.55)");
   add_radius_options(*c, a->radius);
   c->add_option("--tolerance", a->tolerance, "largest overlap over the smaller radius of the pair (default 1e-3)");
@@ -143,7 +150,9 @@ void add_agglomerate_command(CLI::App& app, ToolAction& action) {
               "keep only the largest bonded cluster (drops particles without a bond and smaller clusters)");
   c->add_flag("--overwrite", a->overwrite, "replace existing output files");
   c->add_flag("--quiet,-q", a->quiet, "print nothing on success");
-  c->callback([a, gap, density, &action] {
+  c->callback([a, gap, density, sphere, scale, &action] {
+    a->sphere_given = sphere->count() > 0;
+    a->scale_given = scale->count() > 0;
     a->gap_given = gap->count() > 0;
     a->density_given = density->count() > 0;
     action = [a] { return run_agglomerate(*a); };

@@ -124,7 +124,7 @@ int run_agglomerate(const AgglomerateArgs& a) {
 
 }  // namespace
 
-void add_agglomerate_command(CLI::App& app, ToolAction& action) {
+CLI::App* add_agglomerate_command(CLI::App& app, ToolAction& action) {
   auto a = std::make_shared<AgglomerateArgs>();
   auto* c = app.add_subcommand("agglomerate", "dense random packing in a sphere or closed surface, bonded by the gap "
                                               "rule -> particle CSV and bond CSV");
@@ -157,6 +157,7 @@ void add_agglomerate_command(CLI::App& app, ToolAction& action) {
     a->density_given = density->count() > 0;
     action = [a] { return run_agglomerate(*a); };
   });
+  return c;
 }
 
 }  // namespace mpdem::cli

@@ -98,7 +98,10 @@ int run_generate(const GenerateArgs& a) {
 void add_generate_command(CLI::App& app, ToolAction& action) {
   auto a = std::make_shared<GenerateArgs>();
   auto* c = app.add_subcommand("generate", "random non-overlapping particles in a region -> particle CSV");
-  c->add_option("-o,--output", a->output, "particle CSV to write")->required();
+  // Required unless the `agglomerate` subcommand is given (checked in the callback).
+  c->add_option("-o,--output", a->output, "particle CSV to write");
+  // `mpdem generate agglomerate` is `mpdem agglomerate` (docs/tools.md).
+  CLI::App* agglomerate = add_agglomerate_command(*c, action);
   c->add_option("--region", a->region, "box (default), cylinder or mesh");
   c->add_option("--min", a->min, "box: lower corner x y z (m)")->expected(3);
   c->add_option("--max", a->max, "box: upper corner x y z (m)")->expected(3);
@@ -123,7 +126,9 @@ void add_generate_command(CLI::App& app, ToolAction& action) {
   c->add_option("--max-attempts", a->max_attempts, "random positions tried per particle (default 100000)")
       ->check(CLI::PositiveNumber);
   c->add_flag("--quiet,-q", a->quiet, "print nothing on success");
-  c->callback([a, &action] {
+  c->callback([a, agglomerate, &action] {
+    if (agglomerate->parsed()) return;  // its own callback sets the action
+    if (a->output.empty()) throw CLI::RequiredError("--output");
     if (a->count == 0 && a->solid_fraction == 0.0) throw CLI::ValidationError("give --count or --solid-fraction");
     action = [a] { return run_generate(*a); };
   });

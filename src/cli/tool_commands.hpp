@@ -12,8 +12,9 @@ using ToolAction = std::function<int()>;
 
 void add_generate_command(CLI::App& app, ToolAction& action);
 void add_mesh_command(CLI::App& app, ToolAction& action);
-void add_clump_command(CLI::App& app, ToolAction& action);        // docs/tools.md "mpdem clump"
-void add_agglomerate_command(CLI::App& app, ToolAction& action);  // docs/tools.md "mpdem agglomerate"
-void add_validate_command(CLI::App& app, ToolAction& action);     // `mpdem validate` (docs/validation.md)
+void add_clump_command(CLI::App& app, ToolAction& action);  // docs/tools.md "mpdem clump"
+// docs/tools.md "mpdem agglomerate"; under `app` (the command line, or `generate`); returns it.
+CLI::App* add_agglomerate_command(CLI::App& app, ToolAction& action);
+void add_validate_command(CLI::App& app, ToolAction& action);  // `mpdem validate` (docs/validation.md)
 
 }  // namespace mpdem::cli

@@ -1,7 +1,7 @@
-// `mpdem agglomerate` end to end: the particle CSV a scene reads and the bond CSV of the gap
-// rule's pairs (checked by brute force on the numbers read back), the same files for a seed,
-// earlier files kept unless --overwrite, a closed STL as the container, and bad options refused
-// with one message naming the option (exit status 2, nothing written).
+// `mpdem agglomerate` (also `mpdem generate agglomerate`) end to end: the particle CSV a scene reads and the bond CSV
+// of the gap rule's pairs (checked by brute force on the numbers read back), the same files for a seed, earlier files
+// kept unless --overwrite, a closed STL as the container, and bad options refused with one message naming the option
+// (exit status 2, nothing written).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -117,6 +117,21 @@ TEST(AgglomerateCommand, SameSeedSameFilesAndEarlierFilesKept) {
   ASSERT_EQ(run_mpdem("agglomerate -o c --overwrite" + common, d).status, 0);
   EXPECT_EQ(slurp(d / "c_particles.csv"), slurp(d / "a_particles.csv"));
   EXPECT_EQ(slurp(d / "c_bonds.csv"), slurp(d / "a_bonds.csv"));
+  fs::remove_all(d);
+}
+
+// `mpdem generate agglomerate` is the same command (the spelling); `mpdem generate`
+// without it still needs its --output.
+TEST(AgglomerateCommand, AlsoUnderGenerate) {
+  const fs::path d = fresh_dir("agg_generate");
+  const std::string common = " -n 200 -r 0.5e-3 --seed 3 -q";
+  ASSERT_EQ(run_mpdem("agglomerate -o a" + common, d).status, 0);
+  ASSERT_EQ(run_mpdem("generate agglomerate -o g" + common, d).status, 0);
+  EXPECT_EQ(slurp(d / "a_particles.csv"), slurp(d / "g_particles.csv"));
+  EXPECT_EQ(slurp(d / "a_bonds.csv"), slurp(d / "g_bonds.csv"));
+  const CommandResult r = run_mpdem("generate --count 10", d);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--output"), std::string::npos) << r.err;
   fs::remove_all(d);
 }
 

@@ -9,18 +9,18 @@
 
 #include "check/scene_checks.hpp"
 #include "contact/bond_making.hpp"
-#include "physics/time_step_estimate.hpp"
+#include "physics/parallel_bond.hpp"
 
 namespace mpdem {
 
 namespace {
 
-// kg, the reduced mass of a bond's two particles; a held (fixed) one counts as infinitely heavy.
-// A clump member's Particles::mass is its body's.
-double reduced_mass(const Particles& p, const std::vector<std::uint8_t>& held, std::size_t i, std::size_t j) {
-  if (held[i]) return p.mass[j];
-  if (held[j]) return p.mass[i];
-  return p.mass[i] * p.mass[j] / (p.mass[i] + p.mass[j]);
+// The reduced value of a bond's two particles' masses (kg) or moments of inertia (kg m^2); a held
+// (fixed) one counts as infinitely heavy. A clump member's Particles::mass is its body's.
+double reduced(const std::vector<double>& m, const std::vector<std::uint8_t>& held, std::size_t i, std::size_t j) {
+  if (held[i]) return m[j];
+  if (held[j]) return m[i];
+  return m[i] * m[j] / (m[i] + m[j]);
 }
 
 // The materials (base ones, by index) bonded to no material at all, by [[bonds.pair]] bonded = false.
@@ -58,8 +58,11 @@ BondSummary bond_summary(const Scene& scene) {
     s.length_min = std::min(s.length_min, L);
     s.length_max = std::max(s.length_max, L);
     const double r_b = law.radius_ratio * std::min(p.radius[b.i], p.radius[b.j]);  // m
-    const double k = law.young / L * std::numbers::pi * r_b * r_b;                 // N/m, k_n A
-    s.time_step = std::min(s.time_step, spring_critical_step(reduced_mass(p, held, b.i, b.j), k));
+    const BondSprings k = bond_springs(bond_section(r_b), L, law.young, law.stiffness_ratio);
+    // The longer lever from a centre to the bond's centre, midway between the surfaces.
+    const double lever = std::max(p.radius[b.i], p.radius[b.j]) + 0.5 * (L - p.radius[b.i] - p.radius[b.j]);  // m
+    s.time_step = std::min(
+        s.time_step, bond_critical_step(k, reduced(p.mass, held, b.i, b.j), reduced(p.inertia, held, b.i, b.j), lever));
   }
   if (bonds.empty()) s.length_min = s.time_step = 0.0;
   const std::vector<std::uint8_t> apart = unbondable_materials(model, laws);
@@ -95,8 +98,9 @@ std::vector<std::string> bond_summary_lines(const Scene& scene) {
   out.push_back(fmt::format("bonds: {} made at t = 0 ({})", s.made, sources));
   if (s.made > 0) {
     out.push_back(fmt::format("  bond lengths {:.4g} .. {:.4g} m", s.length_min, s.length_max));
-    out.push_back(
-        fmt::format("  bond time step 2 sqrt(m*/(k_n A)): {:.4g} s (the smallest over the bonds)", s.time_step));
+    out.push_back(fmt::format("  bond time step 2 / omega (normal and rotational modes, physics.md 22): {:.4g} s (the "
+                              "smallest over the bonds)",
+                              s.time_step));
   }
   if (s.isolated > 0) {
     std::string ids;

@@ -178,7 +178,7 @@ void print_summary(const Scene& scene) {
   fmt::print("time step: {}; {}: particle-particle {:.4g} s", rayleigh_text(a), contact_text(a), a.contact_pp);
   if (a.contact_pb > 0.0) fmt::print(", particle-barrier {:.4g} s", a.contact_pb);
   if (a.viscous > 0.0) fmt::print("; viscous bridges' relaxation time m*/c {:.4g} s", a.viscous);
-  if (a.bond > 0.0) fmt::print("; bonds 2 sqrt(m*/(k_n A)) {:.4g} s", a.bond);
+  if (a.bond > 0.0) fmt::print("; bonds 2/omega {:.4g} s", a.bond);
   fmt::print("\nrecommended dt <= {:.4g} s ({}{}{})\n", a.recommended,
              a.hertz ? "min of 0.2 x Rayleigh time and contact time / 50" : "contact time / 50",
              a.viscous > 0.0 ? ", and 0.5 x the bridges' relaxation time" : "",

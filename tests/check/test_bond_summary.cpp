@@ -1,8 +1,9 @@
 // What `mpdem check` prints about parallel bonds (check/bond_summary.hpp): the bonds made at t = 0
 // by the gap rule, from the bond CSV and their union, the isolated and the unbondable particles,
-// the bond lengths, and the bonds' time step 2 sqrt(m* / (k_n A)) against its closed form (1e-12
-// in the summary, 1e-3 printed to 4 digits), which the time-step advice takes with the contacts'
-// factor 1/50.
+// the bond lengths, and the bonds' time step 2 / omega (the faster of the normal mode
+// sqrt(k_n A / m*) and the rotational one sqrt((k_s A a^2 + k_n I) / I*), physics.md 22) against
+// its closed form (1e-12 in the summary, 1e-3 printed to 4 digits), which the time-step advice
+// takes with the contacts' factor 1/50.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,10 +38,17 @@ std::string line_with(const std::vector<std::string>& lines, const std::string& 
   return "";
 }
 
-// 2 sqrt(m* / (E_b pi R_b^2 / L)), s.
-double bond_step(double m_star, double young, double r_b, double length) {
-  return 2.0 * std::sqrt(m_star / (young * kPi * r_b * r_b / length));
+// s, 2 / omega of a bond (written out, not from the header): the faster of the normal mode
+// sqrt(k_n A / m*) and the rotational one sqrt((k_s A a^2 + k_n I) / I*), with m* and I* the
+// reduced mass (kg) and moment of inertia (kg m^2), a the longer lever from a centre to the bond's
+// centre (m), k_n = E_b / L, k_s = k_n / 2.5, A = pi R_b^2, I = A R_b^2 / 4.
+double bond_step(double m_star, double i_star, double young, double r_b, double length, double lever) {
+  const double kn = young / length, area = kPi * r_b * r_b, inertia = 0.25 * area * r_b * r_b;
+  const double normal = kn * area / m_star, turning = (kn / 2.5 * area * lever * lever + kn * inertia) / i_star;
+  return 2.0 / std::sqrt(std::max(normal, turning));
 }
+// kg m^2, a sphere's moment of inertia.
+double solid_ball_inertia(double m, double r) { return 0.4 * m * r * r; }
 
 Scene bonded_scene() {
   Scene s = test::make_scene(1e-7, 1e-3);
@@ -71,12 +79,12 @@ TEST(BondSummary, ChainWithAnIsolatedSphere) {
   EXPECT_EQ(b.unbondable, 0u);
   EXPECT_NEAR(b.length_min, 2.1 * kR, 1e-15);
   EXPECT_NEAR(b.length_max, 2.1 * kR, 1e-15);
-  const double dt = bond_step(0.5 * m, 1e9, 0.5 * kR, 2.1 * kR);
+  const double dt = bond_step(0.5 * m, 0.5 * solid_ball_inertia(m, kR), 1e9, 0.5 * kR, 2.1 * kR, 1.05 * kR);
   EXPECT_NEAR(b.time_step / dt, 1.0, 1e-12);
   const std::vector<std::string> lines = bond_summary_lines(s);
   for (const std::string& l : lines) std::printf("%s\n", l.c_str());
   EXPECT_EQ(lines.at(0), "bonds: 4 made at t = 0 (4 by the gap rule)");
-  EXPECT_NEAR(number_after(line_with(lines, "time step"), "(k_n A)): ") / dt, 1.0, 1e-3);
+  EXPECT_NEAR(number_after(line_with(lines, "time step"), "physics.md 22): ") / dt, 1.0, 1e-3);
   EXPECT_NEAR(number_after(line_with(lines, "lengths"), "lengths ") / (2.1 * kR), 1.0, 1e-3);
   EXPECT_NE(line_with(lines, "isolated").find("isolated particles (no bond): 1, ids 6"), std::string::npos);
   // A pair of spheres of radius r = R/2 next to the first one: m* = m_r m / (m_r + m), R_b = r/2.
@@ -85,7 +93,9 @@ TEST(BondSummary, ChainWithAnIsolatedSphere) {
   b = bond_summary(s);
   EXPECT_EQ(b.made, 5u);
   EXPECT_NEAR(b.length_min / L, 1.0, 1e-12);
-  EXPECT_NEAR(b.time_step / bond_step(m_r * m / (m_r + m), 1e9, 0.5 * r, L), 1.0, 1e-12);
+  const double i = solid_ball_inertia(m, kR), i_r = solid_ball_inertia(m_r, r);
+  EXPECT_NEAR(b.time_step / bond_step(m_r * m / (m_r + m), i_r * i / (i_r + i), 1e9, 0.5 * r, L, kR + 0.05 * kR), 1.0,
+              1e-12);
 }
 
 TEST(BondSummary, FixedParticleCountsAsInfinitelyHeavy) {
@@ -94,7 +104,8 @@ TEST(BondSummary, FixedParticleCountsAsInfinitelyHeavy) {
   test::add_particle(s, 2, kR, {2.1 * kR, 0.0, 0.0});
   s.particles.fixed[0] = 1;
   const double m = s.particles.mass[1];
-  EXPECT_NEAR(bond_summary(s).time_step / bond_step(m, 1e9, 0.5 * kR, 2.1 * kR), 1.0, 1e-12);
+  EXPECT_NEAR(bond_summary(s).time_step / bond_step(m, solid_ball_inertia(m, kR), 1e9, 0.5 * kR, 2.1 * kR, 1.05 * kR),
+              1.0, 1e-12);
 }
 
 TEST(BondSummary, ListedUnionAndUnbondableMaterials) {
@@ -151,9 +162,9 @@ TEST(BondSummary, CheckCommandAdvisesTheBondsStep) {
   EXPECT_EQ(r.status, 0) << r.err;
   std::printf("%s", r.out.c_str());
   const double m = 4.0 / 3.0 * kPi * kR * kR * kR * 2500.0;
-  const double dt = bond_step(0.5 * m, 1e9, kR, 2.1 * kR);
+  const double dt = bond_step(0.5 * m, 0.5 * solid_ball_inertia(m, kR), 1e9, kR, 2.1 * kR, 1.05 * kR);
   test::expect_contains(r.out, {"bonds: 2 made at t = 0 (2 by the gap rule)", "and the bonds' time step / 50"});
-  EXPECT_NEAR(number_after(r.out, "bonds 2 sqrt(m*/(k_n A)) ") / dt, 1.0, 1e-3);
+  EXPECT_NEAR(number_after(r.out, "bonds 2/omega ") / dt, 1.0, 1e-3);
   EXPECT_NEAR(number_after(r.out, "recommended dt <= ") / (dt / 50.0), 1.0, 1e-3);
   // time.dt above it: `mpdem check` warns, naming the bonds.
   test::expect_contains(r.err, {"warning: time.dt = 1e-07 s exceeds the recommended", "bonds' time step"});

@@ -31,16 +31,7 @@ constexpr double kF = 1e-3;          // N
 double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 const char* name(Integrator i) { return i == Integrator::Verlet ? "verlet" : "trapezoidal"; }
 
-// The chain's static tip deflection under a tip load F across it (derivation in docs/physics.md
-// "Parallel bonds"): bond m (0-based, centre at (m + 1/2) l) carries the shear F, which slides
-// it by F / (k_s A), and the moment F l (N - m - 1/2), which bends it by that / (k_n I); the
-// sphere centres follow the rotations at the lever l / 2 on either side of each bond centre:
-//   y_tip = F l^3 N (4 N^2 - 1) / (12 E I) + N kappa F l / (E A).
-double chain_deflection(double f) {
-  const double n = kN;
-  return f * kL * kL * kL * n * (4.0 * n * n - 1.0) / (12.0 * kBondE * kBondI) +
-         n * kKappa * f * kL / (kBondE * kBondArea);
-}
+double chain_deflection(double f) { return chain_tip_deflection(kN, f, kKappa); }
 
 // Runs the scene `s` with the external load (force f, torque t) on the last particle until rest.
 std::unique_ptr<Simulation> settle(Scene s, const Vec3& f, const Vec3& t, double dt, int steps) {

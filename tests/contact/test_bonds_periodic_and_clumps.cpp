@@ -27,9 +27,7 @@ const char* name(Integrator i) { return i == Integrator::Verlet ? "verlet" : "tr
 TEST(BondsPeriodic, CantileverAcrossThePeriodicFace) {
   constexpr int kN = 10;
   constexpr double kF = 1e-3, kPeriod = 40e-3;  // N, m
-  const double n = kN;
-  const double closed = kF * kL * kL * kL * n * (4.0 * n * n - 1.0) / (12.0 * kBondE * kBondI) +
-                        n * kKappa * kF * kL / (kBondE * kBondArea);
+  const double closed = chain_tip_deflection(kN, kF, kKappa);
   for (const Integrator integ : {Integrator::Verlet, Integrator::Trapezoidal}) {
     const double dt = 2e-7;
     Scene s = bonded_scene(dt, integ, 0.7, 0.04);

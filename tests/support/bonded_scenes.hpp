@@ -36,6 +36,14 @@ inline Scene bonded_scene(double dt, Integrator integ, double zeta, double drag,
   return s;
 }
 
+// m, the static tip deflection of a chain of n bonds of length l = 2 kBondR (E_b = kBondE,
+// lambda = 1, k_n/k_s = kappa), the first sphere fixed, under a tip load f (N) across it
+// (docs/physics.md section 22): f l^3 n (4 n^2 - 1) / (12 E I) + n kappa f l / (E A).
+inline double chain_tip_deflection(int n, double f, double kappa) {
+  const double l = 2.0 * kBondR, m = n;
+  return f * l * l * l * m * (4.0 * m * m - 1.0) / (12.0 * kBondE * kBondI) + m * kappa * f * l / (kBondE * kBondArea);
+}
+
 // Adds n spheres of radius kBondR touching along +x from the origin (ids 1..n); the first fixed.
 inline void add_chain(Scene& s, int n) {
   for (int k = 0; k < n; ++k) add_particle(s, k + 1, kBondR, {2.0 * kBondR * k, 0.0, 0.0});

@@ -178,7 +178,7 @@ void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b)
   if (bonds_) {
     // A bond lives with its lower-id particle.
     std::vector<BondRecord> bonds = bonds_->export_records();
-    std::erase_if(bonds, [&](const BondRecord& b) { return !mine.contains(b.id_i); });
+    std::erase_if(bonds, [&](const BondRecord& r2) { return !mine.contains(r2.id_i); });
     bonds_->import_records(std::move(bonds));
   }
   stats_.rebuilds = search_->rebuilds();

@@ -175,7 +175,9 @@ TEST(BondBreaks, FreeClusterKeepsMomentumAndEnergyBalance) {
       const bool first_order = zeta > 0.0 && integ == Integrator::Verlet;
       EXPECT_LT(std::abs(e1 - e0), first_order ? 5.0 * 0.035 * damped : 1e-3 * k0);
       EXPECT_GT(log_value(sim, "bond_energy"), 0.0);
-      if (zeta > 0.0) EXPECT_GT(damped, 0.5 * k0);
+      if (zeta > 0.0) {
+        EXPECT_GT(damped, 0.5 * k0);
+      }
     }
   }
 }

@@ -1,39 +1,179 @@
-// TEMPORARY stand-in (O(N^2)), replaced by helper bond-a's cell-grid search.
 #include "contact/bond_making.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+#include "core/input_error.hpp"
+#include "neighbor/cell_grid.hpp"
 
 namespace mpdem {
 
-std::vector<MadeBond> make_bonds(const Model& model, const Particles& p) {
-  std::vector<MadeBond> out;
-  const BondParams& bp = model.params.bonds;
-  for (std::size_t a = 0; a < p.size(); ++a)
-    for (std::size_t b = a + 1; b < p.size(); ++b) {
-      const BondLaw law = bond_law(bp, model.materials[static_cast<std::size_t>(p.material[a])].name,
-                                   model.materials[static_cast<std::size_t>(p.material[b])].name);
-      if (!law.bonded || law.gap < 0.0) continue;
-      if (norm(p.x[b] - p.x[a]) - p.radius[a] - p.radius[b] >= law.gap) continue;
-      if (p.fixed[a] && p.fixed[b]) continue;
-      const bool order = p.id[a] < p.id[b];
-      out.push_back({static_cast<std::uint32_t>(order ? a : b), static_cast<std::uint32_t>(order ? b : a)});
-    }
-  for (const ListedBond& l : bp.listed) {
-    std::size_t a = p.size(), b = p.size();
-    for (std::size_t k = 0; k < p.size(); ++k) {
-      if (p.id[k] == l.id_i) a = k;
-      if (p.id[k] == l.id_j) b = k;
-    }
-    if (a == p.size() || b == p.size()) continue;
-    if (p.id[a] > p.id[b]) std::swap(a, b);
-    out.push_back({static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)});
+namespace {
+
+// The periodic axes of the scene's domain and their periods (m; 0 along the other axes).
+struct Periodic {
+  std::array<bool, 3> axis{};
+  Vec3 min{}, period{};
+  explicit Periodic(const DomainParams& d) {
+    if (!d.bounded) return;
+    axis = d.periodic;
+    min = d.min;
+    for (int c = 0; c < 3; ++c)
+      if (axis[static_cast<std::size_t>(c)]) period[c] = d.max[c] - d.min[c];
   }
-  std::sort(out.begin(), out.end(), [&](const MadeBond& x, const MadeBond& y) {
-    return std::pair(p.id[x.i], p.id[x.j]) < std::pair(p.id[y.i], p.id[y.j]);
-  });
-  out.erase(std::unique(out.begin(), out.end(),
-                        [](const MadeBond& x, const MadeBond& y) { return x.i == y.i && x.j == y.j; }),
-            out.end());
+  bool on(int c) const { return axis[static_cast<std::size_t>(c)]; }
+  // x - y as its nearest image.
+  Vec3 difference(const Vec3& x, const Vec3& y) const {
+    Vec3 d = x - y;
+    for (int c = 0; c < 3; ++c)
+      if (on(c)) d[c] -= period[c] * std::round(d[c] / period[c]);
+    return d;
+  }
+  // x moved into [min, max) along the periodic axes.
+  Vec3 wrapped(Vec3 x) const {
+    for (int c = 0; c < 3; ++c)
+      if (on(c)) {
+        double t = std::fmod(x[c] - min[c], period[c]);
+        if (t < 0.0) t += period[c];
+        x[c] = min[c] + (t < period[c] ? t : 0.0);
+      }
+    return x;
+  }
+};
+
+bool by_ids(const Particles& p, const MadeBond& a, const MadeBond& b) {
+  return p.id[a.i] != p.id[b.i] ? p.id[a.i] < p.id[b.i] : p.id[a.j] < p.id[b.j];
+}
+
+MadeBond oriented(const Particles& p, std::size_t i, std::size_t j) {
+  return p.id[i] < p.id[j] ? MadeBond{static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j)}
+                           : MadeBond{static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i)};
+}
+
+// Whether a bond between i and j could ever act (held: held_fixed's mask).
+bool can_act(const Particles& p, const std::vector<std::uint8_t>& held, std::size_t i, std::size_t j) {
+  if (p.body[i] != kNoBody && p.body[i] == p.body[j]) return false;
+  return !(held[i] && held[j]);
+}
+
+}  // namespace
+
+std::vector<BondLaw> bond_laws(const Model& model) {
+  const std::vector<Material>& m = model.materials;
+  const std::size_t n = m.size();
+  std::vector<std::string> names(n);
+  for (std::size_t k = 0; k < n; ++k)
+    names[k] = m[k].variant_of >= 0 ? m[static_cast<std::size_t>(m[k].variant_of)].name : m[k].name;
+  std::vector<BondLaw> laws(n * n);
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a; b < n; ++b)
+      laws[a * n + b] = laws[b * n + a] = bond_law(model.params.bonds, names[a], names[b]);
+  return laws;
+}
+
+std::vector<std::uint8_t> held_fixed(const Particles& p) {
+  std::unordered_map<std::int64_t, std::uint8_t> body_fixed;  // body id -> fixed
+  for (std::size_t b = 0; b < p.bodies.size(); ++b) body_fixed.emplace(p.bodies.id[b], p.bodies.fixed[b]);
+  std::vector<std::uint8_t> held(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i)
+    held[i] = p.fixed[i] != 0 || (p.body[i] != kNoBody && body_fixed.at(p.body[i]) != 0);
+  return held;
+}
+
+double bond_length(const Model& model, const Particles& p, std::uint32_t i, std::uint32_t j) {
+  return norm(Periodic(model.params.domain).difference(p.x[j], p.x[i]));
+}
+
+std::vector<MadeBond> gap_bonds(const Model& model, const Particles& p) {
+  const std::size_t n = p.size(), nm = model.materials.size();
+  if (!model.params.bonds.enabled() || n < 2) return {};
+  const std::vector<BondLaw> laws = bond_laws(model);
+  double reach = -1.0;  // m, the largest gap of a pair the gap rule bonds
+  for (const BondLaw& l : laws)
+    if (l.bonded) reach = std::max(reach, l.gap);
+  if (reach < 0.0) return {};
+  double r_max = 0.0;  // m
+  for (std::size_t i = 0; i < n; ++i) r_max = std::max(r_max, p.radius[i]);
+  // Two centres the rule may bond are closer than this (m): one cell and its neighbours hold them.
+  const double cutoff = 2.0 * r_max + reach;
+  const Periodic per(model.params.domain);
+  std::vector<Vec3> x(n);  // m, centres wrapped into the periodic cell [N]
+  for (std::size_t i = 0; i < n; ++i) x[i] = per.wrapped(p.x[i]);
+  CellGrid grid;
+  grid.build(x, cutoff);
+  const std::vector<std::uint8_t> held = held_fixed(p);
+  std::vector<MadeBond> out;
+  std::vector<std::uint32_t> near;  // candidates j > i of particle i
+  for (std::size_t i = 0; i < n; ++i) {
+    // The images of i that may reach across a periodic face: shifts by one period per axis.
+    std::array<std::array<double, 3>, 3> shifts{};
+    std::array<int, 3> count{1, 1, 1};
+    for (int c = 0; c < 3; ++c) {
+      if (!per.on(c)) continue;
+      if (x[i][c] - per.min[c] < cutoff) shifts[c][count[c]++] = per.period[c];
+      if (per.min[c] + per.period[c] - x[i][c] < cutoff) shifts[c][count[c]++] = -per.period[c];
+    }
+    near.clear();
+    for (int a = 0; a < count[0]; ++a)
+      for (int b = 0; b < count[1]; ++b)
+        for (int c = 0; c < count[2]; ++c) {
+          const CellCoord cc = grid.coord_of(x[i] + Vec3{shifts[0][a], shifts[1][b], shifts[2][c]});
+          for (std::int64_t dz = -1; dz <= 1; ++dz)
+            for (std::int64_t dy = -1; dy <= 1; ++dy)
+              for (std::int64_t dx = -1; dx <= 1; ++dx) {
+                const std::uint32_t cell = grid.find({cc.x + dx, cc.y + dy, cc.z + dz});
+                if (cell == CellGrid::kNone) continue;
+                for (const std::uint32_t j : grid.cell_particles(cell))
+                  if (j > i) near.push_back(j);
+              }
+        }
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    for (const std::uint32_t j : near) {
+      const BondLaw& law = laws[static_cast<std::size_t>(p.material[i]) * nm + static_cast<std::size_t>(p.material[j])];
+      if (!law.bonded || law.gap < 0.0 || !can_act(p, held, i, j)) continue;
+      const double gap = norm(per.difference(x[j], x[i])) - p.radius[i] - p.radius[j];  // m
+      if (gap < law.gap) out.push_back(oriented(p, i, j));
+    }
+  }
+  std::sort(out.begin(), out.end(), [&](const MadeBond& a, const MadeBond& b) { return by_ids(p, a, b); });
+  return out;
+}
+
+std::vector<MadeBond> listed_bonds(const Model& model, const Particles& p) {
+  const BondParams& bonds = model.params.bonds;
+  if (!bonds.enabled() || bonds.listed.empty()) return {};
+  std::unordered_map<std::int64_t, std::uint32_t> index;  // particle id -> index
+  index.reserve(p.size());
+  for (std::size_t i = 0; i < p.size(); ++i) index.emplace(p.id[i], static_cast<std::uint32_t>(i));
+  const std::vector<BondLaw> laws = bond_laws(model);
+  const std::size_t nm = model.materials.size();
+  const std::vector<std::uint8_t> held = held_fixed(p);
+  std::vector<MadeBond> out;
+  for (const ListedBond& b : bonds.listed) {
+    const auto i = index.find(b.id_i), j = index.find(b.id_j);
+    if (i == index.end() || j == index.end())
+      throw InputError(bonds.file.string(), b.line, i == index.end() ? "id_i" : "id_j",
+                       "no particle has id " + std::to_string(i == index.end() ? b.id_i : b.id_j));
+    const std::size_t mi = static_cast<std::size_t>(p.material[i->second]);
+    const std::size_t mj = static_cast<std::size_t>(p.material[j->second]);
+    if (laws[mi * nm + mj].bonded && can_act(p, held, i->second, j->second))
+      out.push_back(oriented(p, i->second, j->second));
+  }
+  std::sort(out.begin(), out.end(), [&](const MadeBond& a, const MadeBond& b) { return by_ids(p, a, b); });
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+std::vector<MadeBond> make_bonds(const Model& model, const Particles& p) {
+  std::vector<MadeBond> out = gap_bonds(model, p);
+  const std::vector<MadeBond> listed = listed_bonds(model, p);
+  out.insert(out.end(), listed.begin(), listed.end());
+  std::sort(out.begin(), out.end(), [&](const MadeBond& a, const MadeBond& b) { return by_ids(p, a, b); });
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

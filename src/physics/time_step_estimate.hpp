@@ -34,4 +34,10 @@ inline double hertz_contact_time(double m_eff, double E_eff, double r_eff, doubl
   return 2.9432751843247047 * hertz_peak_overlap(m_eff, E_eff, r_eff, v) / v;
 }
 
+// Largest stable step of the central-difference (Verlet) scheme on an undamped spring of
+// stiffness k (N/m) between two masses of reduced mass m* (2 / omega, omega = sqrt(k / m*)):
+//   dt_c = 2 sqrt(m* / k)   [s]
+// (a parallel bond's normal spring: k = k_n A = E_b A / L, docs/physics.md "Parallel bonds").
+inline double spring_critical_step(double m_eff, double k) { return 2.0 * std::sqrt(m_eff / k); }
+
 }  // namespace mpdem

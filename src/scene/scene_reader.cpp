@@ -28,7 +28,9 @@
 #include "model/material_variants.hpp"
 #include "model/scene.hpp"
 #include "generate/generated_particles.hpp"
+#include "scene/bond_reader.hpp"
 #include "scene/clump_reader.hpp"
+#include "scene/input_paths.hpp"
 
 namespace mpdem {
 
@@ -164,14 +166,6 @@ void read_near_field(const TomlSection& root, const Model& model, NearFieldParam
   s->get("cutoff", nf.cutoff, kNonNegative);
   if ((nf.empirical || nf.coulomb) && nf.cutoff <= 0.0)
     s->fail("cutoff", "expected a cutoff > 0 when the empirical or Coulomb near field is on");
-}
-
-std::filesystem::path existing_file(const TomlSection& s, std::string_view k, const std::filesystem::path& dir) {
-  const std::string name = s.require(s.string(k), k);
-  if (name.empty()) s.fail(k, "expected a file name, got an empty string");
-  std::filesystem::path p = (dir / std::filesystem::path(name)).lexically_normal();
-  if (const std::string why = input_file_problem(p); !why.empty()) s.fail(k, "file '" + p.string() + "' " + why);
-  return p;
 }
 
 void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene) {
@@ -340,10 +334,11 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& fil
   Scene scene;
   scene.file = std::filesystem::absolute(file).lexically_normal();
   scene.dir = scene.file.parent_path();
-  const TomlSection root(
-      name, doc, "", {"time",    "tolerance", "analysis",  "gravity",  "fields",       "near_field", "contact",
-                      "thermal", "material",  "particles", "barriers", "domain",       "neighbor",   "output",
-                      "checks",  "inlet",     "sink",      "parallel", "coarse_grain", "clump",      "liquid_bridge"});
+  const TomlSection root(name, doc, "",
+                         {"time",         "tolerance", "analysis",      "gravity",   "fields",   "near_field",
+                          "contact",      "thermal",   "material",      "particles", "barriers", "domain",
+                          "neighbor",     "output",    "checks",        "inlet",     "sink",     "parallel",
+                          "coarse_grain", "clump",     "liquid_bridge", "bonds"});
   Params& p = scene.model.params;
   read_time(root, p.time);
   read_tolerance(root, p.tolerance);
@@ -352,6 +347,7 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& fil
   read_clump_templates(root, scene.dir, scene.model);
   read_contact_and_thermal(root, scene.model, p);
   read_near_field(root, scene.model, p.near_field);
+  read_bonds(root, scene.dir, scene.model);
   read_sources(root, doc, scene);
   read_inlets_and_sinks(root, doc, scene.model);
   read_domain_neighbor_output(root, p);
@@ -394,6 +390,7 @@ Scene load_sources(Scene scene) {
     src.count = scene.barriers.size() - src.first;
   }
   resolve_material_variants(scene.model, scene.particles, scene.barriers, scene.file.string());
+  check_listed_bonds(scene);
   // neighbor.skin stays 0 when [neighbor] gives none: the engine derives it from the radii.
   return scene;
 }

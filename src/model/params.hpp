@@ -173,6 +173,7 @@ struct OutputParams {
   double barriers_every = 0.0;      // s between barrier VTU (0 = off)
   double particle_csv_every = 0.0;  // s between particle CSV snapshots (0 = off)
   double body_csv_every = 0.0;      // s between body CSV snapshots of the clumps' bodies (0 = off)
+  double bonds_every = 0.0;         // s between bond VTU snapshots (0 = off; only with [bonds])
   double barrier_log_every = 0.0;   // s between barrier-group log rows (0 = off)
   int log_every = 100;              // steps between global log rows (>= 1)
   int checkpoint_every = 0;         // steps between checkpoints (0 = off)

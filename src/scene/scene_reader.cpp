@@ -279,9 +279,10 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     s->get("energy_jump", p.checks.energy_jump, kNonNegative);
     s->get("energy_drift", p.checks.energy_drift, kNonNegative);  // checked once, at the end of the run
   }
-  if (const auto s = root.table("output", {"dir", "particles_every", "barriers_every", "particle_csv_every",
-                                           "barrier_log_every", "log_every", "checkpoint_every", "progress_every",
-                                           "format", "contacts_every", "barrier_loads", "body_csv_every"})) {
+  if (const auto s = root.table("output",
+                                {"dir", "particles_every", "barriers_every", "particle_csv_every", "barrier_log_every",
+                                 "log_every", "checkpoint_every", "progress_every", "format", "contacts_every",
+                                 "barrier_loads", "body_csv_every", "bonds_every"})) {
     s->get("dir", p.output.dir);
     if (p.output.dir.empty()) s->fail("dir", "expected a non-empty folder name");
     for (const auto& part : std::filesystem::path(p.output.dir))  // each a name in the file system
@@ -295,6 +296,7 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     s->get("barriers_every", p.output.barriers_every, kNonNegative);
     s->get("particle_csv_every", p.output.particle_csv_every, kNonNegative);
     s->get("body_csv_every", p.output.body_csv_every, kNonNegative);
+    s->get("bonds_every", p.output.bonds_every, kNonNegative);
     s->get("barrier_log_every", p.output.barrier_log_every, kNonNegative);
     s->get("log_every", p.output.log_every, 1);
     s->get("checkpoint_every", p.output.checkpoint_every, 0);

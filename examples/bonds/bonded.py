@@ -1,13 +1,15 @@
 """What the bond examples share: the mpdem program (for `mpdem agglomerate` and `mpdem mesh`), a
-bonded agglomerate read back from its two CSV files, and the fragments that the intact bonds hold
-together (a union-find over the bonds)."""
+bonded agglomerate read back from its two CSV files, the fragments that the intact bonds hold
+together (a union-find over the bonds), and pictures of spheres without ParaView."""
 
 import os
 import shutil
 import subprocess
 from pathlib import Path
 
+import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.collections import EllipseCollection
 
 import mpdem
 
@@ -66,3 +68,24 @@ def fragments(ids, id_i, id_j, intact):
     rank = np.empty(len(uniq), dtype=np.int64)
     rank[order] = np.arange(len(uniq))
     return rank[inverse], counts[order]
+
+
+def draw_view(ax, x, r, colour, title, top=False):
+    """Spheres seen along +y (x right, z up; the far ones first) or from above (x right, y up)."""
+    depth, plane = (x[:, 2], [0, 1]) if top else (-x[:, 1], [0, 2])
+    order = np.argsort(depth)
+    ax.add_collection(EllipseCollection(2e3 * r[order], 2e3 * r[order], np.zeros(len(r)), units="xy",
+                                        offsets=1e3 * x[order][:, plane], offset_transform=ax.transData,
+                                        facecolors=np.asarray(colour)[order], edgecolors="k", linewidths=0.2))
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [mm]")
+    ax.set_ylabel("y [mm]" if top else "z [mm]")
+    ax.set_title(title, fontsize=9)
+
+
+def fragment_colours(labels):
+    """The 9 largest fragments in colours, smaller pieces light grey, single spheres dark grey."""
+    cycle = plt.get_cmap("tab10").colors
+    sizes = np.bincount(labels)
+    return [cycle[k] if k < 9 and sizes[k] > 1 else ((0.8, 0.8, 0.8) if sizes[k] > 1 else (0.4, 0.4, 0.4))
+            for k in labels]

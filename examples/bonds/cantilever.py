@@ -72,8 +72,7 @@ def run(force, torque):
     s.gravity([0.0, 0.0, 0.0])
     s.fields(drag=DRAG)
     s.material("glass", density=RHO, young=1e8, poisson=0.3)
-    s.data["bonds"] = {"young": E_B, "radius_ratio": LAMBDA, "stiffness_ratio": KAPPA, "damping": ZETA,
-                       "gap": 1e-6}
+    s.bonds(young=E_B, radius_ratio=LAMBDA, stiffness_ratio=KAPPA, damping=ZETA, gap=1e-6)  # touching: bonded
     x = np.zeros((N + 1, 3))
     x[:, 0] = ELL * np.arange(N + 1)
     s.particles(x, R, id=np.arange(1, N + 2), material="glass", fixed=[1] + [0] * N)

@@ -38,8 +38,10 @@ def run_tool(*args):
 
 def agglomerate(prefix, *options):
     """`mpdem agglomerate -o PREFIX OPTIONS... --overwrite` read back: (ids (n,) int64, centres
-    (n, 3) m, radii (n,) m, bond file path, the command's report)."""
+    (n, 3) m, radii (n,) m, bond file path, the command's report without the files' folder)."""
     report = run_tool("agglomerate", "-o", prefix, *options, "--overwrite")
+    report = "\n".join(line for line in report.splitlines() if not line.startswith("->"))
+    report = report.replace(str(Path(prefix).parent) + os.sep, "")
     data = np.loadtxt(f"{prefix}_particles.csv", delimiter=",", comments="#", skiprows=2, ndmin=2)
     return data[:, 0].astype(np.int64), data[:, 1:4], data[:, 4], Path(f"{prefix}_bonds.csv").resolve(), report
 

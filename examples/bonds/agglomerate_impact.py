@@ -8,8 +8,8 @@ particle): Potyondy-Cundall parallel bonds (docs/physics.md "Parallel bonds") wi
 E_b = 1 GPa, k_n/k_s = 2.5, tensile and shear strengths 2 MPa, damping 0.1 of critical;
 Hertz-Mindlin contacts (E = 10 GPa, nu = 0.25, restitution 0.5, friction 0.3) between the spheres
 and with the wall (E = 100 GPa). Each starts 50 um above the wall, moving at v straight down,
-without gravity, for the time it takes to reach the wall plus 2 ms; 14 speeds from 0.25 to
-28 m/s.
+without gravity, for the time it takes to reach the wall plus 2 ms; 13 speeds from 0.25 to
+20 m/s (at 28 m/s two spheres overlapped by more than 15 % of the radius: beyond Hertz).
 
 What is compared with the literature is the shape of the damage curve, no number: little damage
 below a threshold speed, then a steep rise of the damage ratio with the impact energy, then the
@@ -33,7 +33,6 @@ unless the damage at 8 m/s exceeds the damage at 1 m/s by more than 0.1 and the 
 is smaller. About 3 s.
 """
 
-import math
 import sys
 import time
 from pathlib import Path
@@ -56,7 +55,7 @@ GAP = 50e-6  # m, start above the wall
 DT = 2.5e-7  # s: 1/37 of the stiffest bond's critical step, 1/9 of the spheres' Rayleigh time
 AFTER = 2e-3  # s, simulated after the first touch
 SAMPLE = 200  # steps between samples of the broken count
-SPEEDS = (0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 7.0, 10.0, 14.0, 20.0, 28.0)  # m/s
+SPEEDS = (0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 7.0, 10.0, 14.0, 20.0)  # m/s
 SEEDS = (3, 4, 5)  # agglomerates: the same recipe, three packings
 COUNT = 2000  # spheres per agglomerate
 PICTURED = 5.0  # m/s, the speed written as VTU and drawn
@@ -66,8 +65,9 @@ def scene(ids, x, r, bond_file, v, duration, name):
     s = mpdem.Scene(name=name)
     s.time(duration=duration, dt=DT, integrator="verlet")
     s.gravity([0.0, 0.0, 0.0])
-    # Single spheres meet the wall at up to 28 m/s: Hertz overlaps above the default 5 % of the
-    # smaller radius are resolved (the step is 1/9 of the Rayleigh time) and physical here.
+    # At 20 m/s spheres overlap each other by up to 13 % of the smaller radius (measured with
+    # `mpdem run`: 9.5, 7.9 and 13 % for the three packings), above the default 5 % check but
+    # resolved (the step is 1/9 of the Rayleigh time).
     s.checks(max_overlap=0.15)
     s.material("grain", density=RHO, young=E_PARTICLE, poisson=0.25)
     s.material("wall", density=7800.0, young=E_WALL, poisson=0.25)

@@ -10,7 +10,7 @@ springs (PFC's choice beside parallel bonds) with k_n = E_b pi (1 mm) / 2, the b
 k_n A of a pair of 1 mm spheres, and k_t = k_n / 2.5, restitution 0.5, friction 0.5 between the
 spheres and none with the plates (steel), so that the plates do not confine the ends. The lower
 plate rests; the upper one moves down at 0.02 m/s from the specimen's top (a strain rate of
-0.5 /s: the time to the peak is about 100 times the time a wave takes through the specimen).
+0.5 /s: the time to the peak is 70-100 times the time a wave takes through the specimen).
 The same tests are run with Hertz-Mindlin contacts (E_c = 10 E_b, nu 0.25) for comparison.
 
 Stress: the mean of the two plates' forces over the cylinder's cross-section pi R^2. Strain:
@@ -209,7 +209,7 @@ def main(out, short):
     axs[1].legend(fontsize=7)
     axs[2].set_xlabel("plate strain [1e-3]")
     axs[2].set_ylabel("broken bonds / initial bonds")
-    axs[2].set_title("(c) bonds broken", fontsize=9)
+    axs[2].set_title("(c) bonds broken, linear contacts", fontsize=9)
     axs[2].legend(fontsize=7)
     for a in axs[:3]:
         a.grid(alpha=0.3)

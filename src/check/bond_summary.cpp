@@ -39,9 +39,10 @@ BondSummary bond_summary(const Scene& scene) {
   const Model& model = scene.model;
   const Particles& p = scene.particles;
   if (!model.params.bonds.enabled()) return s;
-  const std::vector<MadeBond> bonds = make_bonds(model, p);
-  s.by_gap = gap_bonds(model, p).size();
-  s.listed = listed_bonds(model, p).size();
+  const std::vector<MadeBond> by_gap = gap_bonds(model, p), listed = listed_bonds(model, p);
+  const std::vector<MadeBond> bonds = bond_union(p, by_gap, listed);  // make_bonds
+  s.by_gap = by_gap.size();
+  s.listed = listed.size();
   s.made = bonds.size();
   const std::vector<BondLaw> laws = bond_laws(model);
   const std::size_t nm = model.materials.size();

@@ -61,28 +61,6 @@ bool can_act(const Particles& p, const std::vector<std::uint8_t>& held, std::siz
 
 }  // namespace
 
-std::vector<BondLaw> bond_laws(const Model& model) {
-  const std::vector<Material>& m = model.materials;
-  const std::size_t n = m.size();
-  std::vector<std::string> names(n);
-  for (std::size_t k = 0; k < n; ++k)
-    names[k] = m[k].variant_of >= 0 ? m[static_cast<std::size_t>(m[k].variant_of)].name : m[k].name;
-  std::vector<BondLaw> laws(n * n);
-  for (std::size_t a = 0; a < n; ++a)
-    for (std::size_t b = a; b < n; ++b)
-      laws[a * n + b] = laws[b * n + a] = bond_law(model.params.bonds, names[a], names[b]);
-  return laws;
-}
-
-std::vector<std::uint8_t> held_fixed(const Particles& p) {
-  std::unordered_map<std::int64_t, std::uint8_t> body_fixed;  // body id -> fixed
-  for (std::size_t b = 0; b < p.bodies.size(); ++b) body_fixed.emplace(p.bodies.id[b], p.bodies.fixed[b]);
-  std::vector<std::uint8_t> held(p.size());
-  for (std::size_t i = 0; i < p.size(); ++i)
-    held[i] = p.fixed[i] != 0 || (p.body[i] != kNoBody && body_fixed.at(p.body[i]) != 0);
-  return held;
-}
-
 double bond_length(const Model& model, const Particles& p, std::uint32_t i, std::uint32_t j) {
   return norm(Periodic(model.params.domain).difference(p.x[j], p.x[i]));
 }
@@ -168,13 +146,15 @@ std::vector<MadeBond> listed_bonds(const Model& model, const Particles& p) {
   return out;
 }
 
+std::vector<MadeBond> bond_union(const Particles& p, std::vector<MadeBond> a, const std::vector<MadeBond>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  std::sort(a.begin(), a.end(), [&](const MadeBond& x, const MadeBond& y) { return by_ids(p, x, y); });
+  a.erase(std::unique(a.begin(), a.end()), a.end());
+  return a;
+}
+
 std::vector<MadeBond> make_bonds(const Model& model, const Particles& p) {
-  std::vector<MadeBond> out = gap_bonds(model, p);
-  const std::vector<MadeBond> listed = listed_bonds(model, p);
-  out.insert(out.end(), listed.begin(), listed.end());
-  std::sort(out.begin(), out.end(), [&](const MadeBond& a, const MadeBond& b) { return by_ids(p, a, b); });
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+  return bond_union(p, gap_bonds(model, p), listed_bonds(model, p));
 }
 
 }  // namespace mpdem

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "model/bond_rules.hpp"
 #include "model/scene.hpp"
 #include "state/particles.hpp"
 
@@ -16,13 +17,6 @@ struct MadeBond {
   std::uint32_t i, j;  // particle indices into p, with p.id[i] < p.id[j]
   friend bool operator==(const MadeBond&, const MadeBond&) = default;
 };
-
-// The law of each pair of materials by index [materials x materials], row-major; a variant
-// material (per-row CSV values) takes its base material's name.
-std::vector<BondLaw> bond_laws(const Model& model);
-
-// [owned particles] 1 when the particle cannot move under forces: fixed, or a member of a fixed body.
-std::vector<std::uint8_t> held_fixed(const Particles& p);
 
 // m, the centre distance of i and j (the minimum image along the domain's periodic axes).
 double bond_length(const Model& model, const Particles& p, std::uint32_t i, std::uint32_t j);
@@ -38,5 +32,7 @@ std::vector<MadeBond> listed_bonds(const Model& model, const Particles& p);
 // duplicates, sorted by (id_i, id_j); bonds between two fixed particles and clump members of the
 // same body are left out, as are listed bonds between materials that [[bonds.pair]] keeps apart.
 std::vector<MadeBond> make_bonds(const Model& model, const Particles& p);
+// The union of two lists of bonds of p, sorted by (id_i, id_j), each bond once.
+std::vector<MadeBond> bond_union(const Particles& p, std::vector<MadeBond> a, const std::vector<MadeBond>& b);
 
 }  // namespace mpdem

@@ -1,6 +1,6 @@
 #pragma once
-// How the scene fingerprint (io/scene_fingerprint.hpp) hashes the values of its items and
-// assembles a part of named keys: shared by the files that take the fingerprint's parts.
+// How the scene fingerprint (io/scene_fingerprint.hpp) hashes the values of its items, and a
+// part of named keys with entries after them.
 #include <bit>
 #include <cstdint>
 #include <memory>

@@ -8,8 +8,11 @@
 #include <unordered_map>
 #include <utility>
 
+#include <fmt/core.h>
+
 #include "core/input_error.hpp"
 #include "io/csv_table.hpp"
+#include "model/bond_rules.hpp"
 #include "scene/contact_reader.hpp"
 #include "scene/input_paths.hpp"
 
@@ -107,35 +110,35 @@ void check_listed_bonds(const Scene& scene) {
   std::unordered_map<std::int64_t, std::size_t> index;  // particle id -> index
   index.reserve(p.size());
   for (std::size_t i = 0; i < p.size(); ++i) index.emplace(p.id[i], i);
-  std::unordered_map<std::int64_t, std::size_t> body_index;  // body id -> index in p.bodies
-  for (std::size_t b = 0; b < p.bodies.size(); ++b) body_index.emplace(p.bodies.id[b], b);
-  const auto fixed = [&](std::size_t i) {
-    return p.fixed[i] != 0 || (p.body[i] != kNoBody && p.bodies.fixed[body_index.at(p.body[i])] != 0);
-  };
-  const auto name_of = [&](std::size_t i) {
-    const Material& m = scene.model.materials[static_cast<std::size_t>(p.material[i])];
-    return m.variant_of >= 0 ? scene.model.materials[static_cast<std::size_t>(m.variant_of)].name : m.name;
+  const std::vector<std::uint8_t> held = held_fixed(p);
+  const std::vector<BondLaw> laws = bond_laws(scene.model);
+  const std::size_t nm = scene.model.materials.size();
+  const auto base_name = [&](std::size_t m) {
+    const Material& mat = scene.model.materials[m];
+    return mat.variant_of >= 0 ? scene.model.materials[static_cast<std::size_t>(mat.variant_of)].name : mat.name;
   };
   for (const ListedBond& b : bonds.listed) {
     const auto i = index.find(b.id_i), j = index.find(b.id_j);
-    if (i == index.end())
-      throw InputError(file, b.line, "id_i",
-                       "no particle has id " + std::to_string(b.id_i) + " (the scene's particles at t = 0)");
-    if (j == index.end())
+    if (i == index.end() || j == index.end()) {
+      const bool first = i == index.end();
+      throw InputError(file, b.line, first ? "id_i" : "id_j",
+                       fmt::format("no particle has id {} (the scene's particles at t = 0)", first ? b.id_i : b.id_j));
+    }
+    const std::size_t pi = i->second, pj = j->second;
+    if (p.body[pi] != kNoBody && p.body[pi] == p.body[pj])
       throw InputError(file, b.line, "id_j",
-                       "no particle has id " + std::to_string(b.id_j) + " (the scene's particles at t = 0)");
-    const std::string ids = "ids " + std::to_string(b.id_i) + " and " + std::to_string(b.id_j);
-    if (p.body[i->second] != kNoBody && p.body[i->second] == p.body[j->second])
+                       fmt::format("ids {} and {} are members of one clump body ({}), which moves rigidly: the bond "
+                                   "could never act",
+                                   b.id_i, b.id_j, p.body[pi]));
+    if (held[pi] && held[pj])
       throw InputError(file, b.line, "id_j",
-                       ids + " are members of one clump body (" + std::to_string(p.body[i->second]) +
-                           "), which moves rigidly: the bond could never act");
-    if (fixed(i->second) && fixed(j->second))
-      throw InputError(file, b.line, "id_j", ids + " are both fixed: the bond could never act");
-    const std::string a = name_of(i->second), c = name_of(j->second);
-    if (!bond_law(bonds, a, c).bonded)
+                       fmt::format("ids {} and {} are both fixed: the bond could never act", b.id_i, b.id_j));
+    const std::size_t ma = static_cast<std::size_t>(p.material[pi]), mc = static_cast<std::size_t>(p.material[pj]);
+    if (!laws[ma * nm + mc].bonded)
       throw InputError(file, b.line, "id_j",
-                       ids + " are of materials '" + a + "' and '" + c +
-                           "', which [[bonds.pair]] makes unbondable (bonded = false)");
+                       fmt::format("ids {} and {} are of materials '{}' and '{}', which [[bonds.pair]] makes "
+                                   "unbondable (bonded = false)",
+                                   b.id_i, b.id_j, base_name(ma), base_name(mc)));
   }
 }
 

@@ -93,7 +93,7 @@ TEST(BondMaking, PairEntriesKeepMaterialsApartOrSetTheirGap) {
     s.model.materials.push_back(m);
   }
   for (std::int64_t id = 1; id <= 6; ++id) {
-    const std::size_t i = test::add_particle(s, id, kR, {(id - 1) * 2.1 * kR, 0.0, 0.0});
+    const std::size_t i = test::add_particle(s, id, kR, {static_cast<double>(id - 1) * 2.1 * kR, 0.0, 0.0});
     s.particles.material[i] = static_cast<int>((id - 1) / 2);
   }
   BondPairParams ab{"default", "b", {}, 0};
@@ -110,6 +110,29 @@ TEST(BondMaking, PairEntriesKeepMaterialsApartOrSetTheirGap) {
   EXPECT_EQ(id_pairs(s.particles, make_bonds(s.model, s.particles)), (Ids{{1, 2}, {2, 3}, {3, 4}, {4, 5}}));
 }
 
+TEST(BondMaking, MaterialVariantsTakeTheirMaterialsLaw) {
+  // Particle 2 has a variant of the first material (per-row CSV values): the entry naming the
+  // material keeps it apart from "b" too.
+  Scene s = bonded_scene(0.2 * kR);
+  Material b = s.model.materials.front();
+  b.name = "b";
+  s.model.materials.push_back(b);
+  Material variant = s.model.materials.front();
+  variant.name = "default#1";
+  variant.density *= 2.0;
+  variant.variant_of = 0;
+  s.model.materials.push_back(variant);
+  for (std::int64_t id = 1; id <= 3; ++id)
+    test::add_particle(s, id, kR, {static_cast<double>(id - 1) * 2.1 * kR, 0.0, 0.0});
+  s.particles.material[1] = 2;  // the variant
+  s.particles.material[2] = 1;  // "b"
+  BondPairParams e{"b", "default", {}, 0};
+  e.keys.bonded = false;
+  s.model.params.bonds.pairs = {e};
+  using Ids = std::vector<std::pair<std::int64_t, std::int64_t>>;
+  EXPECT_EQ(id_pairs(s.particles, make_bonds(s.model, s.particles)), (Ids{{1, 2}}));
+}
+
 TEST(BondMaking, PeriodicFacesBondTheNearestImage) {
   // A ring of 8 spheres along x in a periodic box of length 8 a: the last is bonded to the first.
   const int n = 8;
@@ -122,12 +145,14 @@ TEST(BondMaking, PeriodicFacesBondTheNearestImage) {
     d.max = {(n - 0.5) * a, 0.01, 0.01};
     d.periodic = {periodic, false, false};
     for (int k = 0; k < n; ++k) test::add_particle(s, k + 1, kR, {k * a, 0.0, 0.0});
-    if (periodic) s.particles.x[n - 1].x -= n * a;  // an unwrapped centre: an image of the same place
+    if (periodic)
+      s.particles.x[n - 1].x -= static_cast<double>(n) * a;  // an unwrapped centre: an image of the same place
     const std::vector<MadeBond> b = make_bonds(s.model, s.particles);
     ASSERT_EQ(b.size(), static_cast<std::size_t>(periodic ? n : n - 1));
     for (const MadeBond& m : b) EXPECT_NEAR(bond_length(s.model, s.particles, m.i, m.j), a, 1e-12);
-    if (periodic)
-      EXPECT_EQ(id_pairs(s.particles, {b[1]}).front(), std::make_pair(std::int64_t{1}, std::int64_t{8}));  // after 1-2
+    if (periodic) {  // the wrap bond, after 1-2
+      EXPECT_EQ(id_pairs(s.particles, {b[1]}).front(), std::make_pair(std::int64_t{1}, std::int64_t{8}));
+    }
   }
 }
 
@@ -147,7 +172,8 @@ TEST(BondMaking, ClumpMembersOfOneBodyAreNeverBonded) {
 
 TEST(BondMaking, TwoFixedParticlesAreNotBonded) {
   Scene s = bonded_scene(0.2 * kR);
-  for (std::int64_t id = 1; id <= 3; ++id) test::add_particle(s, id, kR, {(id - 1) * 2.1 * kR, 0.0, 0.0});
+  for (std::int64_t id = 1; id <= 3; ++id)
+    test::add_particle(s, id, kR, {static_cast<double>(id - 1) * 2.1 * kR, 0.0, 0.0});
   s.particles.fixed[0] = s.particles.fixed[1] = 1;
   using Ids = std::vector<std::pair<std::int64_t, std::int64_t>>;
   EXPECT_EQ(id_pairs(s.particles, make_bonds(s.model, s.particles)), (Ids{{2, 3}}));
@@ -158,7 +184,8 @@ TEST(BondMaking, TwoFixedParticlesAreNotBonded) {
 
 TEST(BondMaking, ListedAndGapBondsOnceEach) {
   Scene s = bonded_scene(0.2 * kR);
-  for (std::int64_t id = 1; id <= 4; ++id) test::add_particle(s, 5 - id, kR, {(id - 1) * 2.1 * kR, 0.0, 0.0});
+  for (std::int64_t id = 1; id <= 4; ++id)
+    test::add_particle(s, 5 - id, kR, {static_cast<double>(id - 1) * 2.1 * kR, 0.0, 0.0});
   // Ids 4 3 2 1 along x: the gap rule bonds 4-3, 3-2, 2-1; the file lists 2-3 (either order) and 1-4.
   s.model.params.bonds.listed = {{3, 2, 2}, {4, 1, 3}};
   using Ids = std::vector<std::pair<std::int64_t, std::int64_t>>;

@@ -35,10 +35,12 @@ struct AgglomerateArgs {
   bool gap_given = false;
   RadiusArgs radius;
   std::uint64_t seed = 1;
-  std::size_t max_sweeps = 200000;
+  std::size_t max_sweeps = 20000;
   std::string material;
   double density = 0.0;  // kg/m^3; 0: no column
   bool density_given = false;
+  bool sphere_given = false, scale_given = false;
+  bool largest_cluster = false;
   bool overwrite = false;
   bool quiet = false;
 };
@@ -50,6 +52,8 @@ void check_output(const fs::path& file, bool overwrite) {
   std::error_code ec;
   const fs::file_status st = fs::status(file, ec);
   if (fs::is_directory(st)) bad("--output", "'" + file.string() + "' is a folder; expected a file name prefix");
+  if (const fs::path dir = file.parent_path(); !dir.empty() && !fs::is_directory(dir, ec))
+    bad("--output", "the folder '" + dir.string() + "' does not exist");
   if (fs::exists(st) && !overwrite)
     bad("--output", "'" + file.string() + "' exists; pass --overwrite to replace it, or choose another --output");
 }
@@ -63,10 +67,13 @@ int run_agglomerate(const AgglomerateArgs& a) {
   s.count = a.count;
   s.fraction = a.fraction;
   s.surface = a.surface;
-  s.scale = a.surface.empty() || a.count > 0 || a.scale != 0.0 ? a.scale : 1.0;
-  if (!a.surface.empty() && a.sphere != 0.0) bad("--sphere", "give --sphere R or --stl FILE, not both");
-  if (a.surface.empty() && a.scale != 0.0)
-    bad("--scale", "--scale scales the --stl surface; a sphere takes --sphere R");
+  // A size given must be > 0: 0 stands for "not given" in the spec.
+  if (a.sphere_given && !(a.sphere > 0.0 && std::isfinite(a.sphere)))
+    bad("--sphere", "expected a finite radius > 0 (m)");
+  if (a.scale_given && !(a.scale > 0.0 && std::isfinite(a.scale))) bad("--scale", "expected a finite scale > 0");
+  if (!a.surface.empty() && a.sphere_given) bad("--sphere", "give --sphere R or --stl FILE, not both");
+  if (a.surface.empty() && a.scale_given) bad("--scale", "--scale scales the --stl surface; a sphere takes --sphere R");
+  s.scale = a.scale_given ? a.scale : (a.surface.empty() || a.count > 0 ? 0.0 : 1.0);
   if (!a.centre.empty()) {
     if (!a.surface.empty()) bad("--centre", "--centre places the sphere; a surface stays where its file puts it");
     s.centre = {a.centre[0], a.centre[1], a.centre[2]};
@@ -77,6 +84,7 @@ int run_agglomerate(const AgglomerateArgs& a) {
   s.gap = a.gap_given ? a.gap : -1.0;
   s.seed = a.seed;
   s.max_sweeps = a.max_sweeps;
+  s.largest_cluster_only = a.largest_cluster;
   if (a.density_given && !(a.density > 0.0 && std::isfinite(a.density)))
     bad("--density", "expected a finite density > 0 (kg/m^3)");
   if (a.material.find_first_of(",#\n\r") != std::string::npos)
@@ -92,15 +100,19 @@ int run_agglomerate(const AgglomerateArgs& a) {
                                               : fmt::format("{} scaled by {:.6g}", a.surface.string(), g.scale);
   const std::string comment = fmt::format(
       "mpdem agglomerate, seed {}, {} particles, radius {}, in {}, solid fraction {:.4f}, bonds at a surface "
-      "gap below {} m",
-      a.seed, g.x.size(), s.radius.describe(), where, g.fraction, g.gap);
+      "gap below {} m{}",
+      a.seed, g.x.size(), s.radius.describe(), where, g.kept_fraction, g.gap,
+      a.largest_cluster ? fmt::format(", the largest bonded cluster of {} packed", g.x.size() + g.dropped) : "");
   write_agglomerate_particles(particles, g, a.material, a.density_given ? a.density : 0.0, comment);
   write_bond_csv(bonds, g.bonds);
   if (!a.quiet) {
     const double n = static_cast<double>(g.x.size());
     fmt::print("packed {} particles in {} ({:.6g} m^3): solid fraction {:.4f}, largest overlap {:.2e} of the smaller "
                "radius, {} sweeps, {:.2f} s\n",
-               g.x.size(), where, g.container_volume, g.fraction, g.largest_overlap, g.sweeps, secs);
+               g.x.size() + g.dropped, where, g.container_volume, g.fraction, g.largest_overlap, g.sweeps, secs);
+    if (a.largest_cluster)
+      fmt::print("kept the largest bonded cluster: {} particles ({} dropped), solid fraction {:.4f}\n", g.x.size(),
+                 g.dropped, g.kept_fraction);
     fmt::print("{} bonds (surface gap < {:.6g} m): {:.2f} per particle, {} particle(s) without a bond, largest bonded "
                "cluster {} of {}\n",
                g.bonds.size(), g.gap, 2.0 * static_cast<double>(g.bonds.size()) / n, g.unbonded, g.largest_cluster,
@@ -119,10 +131,11 @@ void add_agglomerate_command(CLI::App& app, ToolAction& action) {
   c->add_option("-o,--output", a->output, "file name prefix: writes PREFIX_particles.csv and PREFIX_bonds.csv")
       ->required();
   c->add_option("-n,--count", a->count, "number of particles (the container's size then follows)");
-  c->add_option("--sphere", a->sphere, "container: a sphere of this radius (m)");
+  auto* sphere = c->add_option("--sphere", a->sphere, "container: a sphere of this radius (m)");
   c->add_option("--centre", a->centre, "the sphere's centre x y z (m; default 0 0 0)")->expected(3);
   c->add_option("--stl", a->surface, "container: a closed surface (.stl, or a barrier .csv)")->check(CLI::ExistingFile);
-  c->add_option("--scale", a->scale, "the surface's coordinates times this (default 1, or set by --count)");
+  auto* scale = c->add_option("--scale", a->scale,
+                              "the surface's coordinates times this (default 1, or set by --count)");
   c->add_option("-f,--fraction", a->fraction, "solid fraction (default 0.55)");
   add_radius_options(*c, a->radius);
   c->add_option("--tolerance", a->tolerance, "largest overlap over the smaller radius of the pair (default 1e-3)");
@@ -130,12 +143,16 @@ void add_agglomerate_command(CLI::App& app, ToolAction& action) {
                             "bond when the surface gap is below this (m; default 1 % of the mean "
                             "radius)");
   c->add_option("--seed", a->seed, "random seed (default 1)");
-  c->add_option("--max-sweeps", a->max_sweeps, "overlap-removal sweeps before giving up (default 200000)");
+  c->add_option("--max-sweeps", a->max_sweeps, "overlap-removal sweeps before giving up (default 20000)");
   c->add_option("--material", a->material, "value of the particle CSV's material column");
   auto* density = c->add_option("--density", a->density, "value of the particle CSV's density column (kg/m^3)");
+  c->add_flag("--largest-cluster", a->largest_cluster,
+              "keep only the largest bonded cluster (drops particles without a bond and smaller clusters)");
   c->add_flag("--overwrite", a->overwrite, "replace existing output files");
   c->add_flag("--quiet,-q", a->quiet, "print nothing on success");
-  c->callback([a, gap, density, &action] {
+  c->callback([a, gap, density, sphere, scale, &action] {
+    a->sphere_given = sphere->count() > 0;
+    a->scale_given = scale->count() > 0;
     a->gap_given = gap->count() > 0;
     a->density_given = density->count() > 0;
     action = [a] { return run_agglomerate(*a); };

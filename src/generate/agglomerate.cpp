@@ -26,10 +26,18 @@ constexpr std::size_t kMaxCount = 10'000'000;  // beyond this a request is surel
 
 double ball_volume(double r) { return 4.0 / 3.0 * std::numbers::pi * r * r * r; }
 
-// The largest set of particles joined by bonds (union-find), and how many have none.
-void clusters(std::size_t n, const std::vector<std::array<std::size_t, 2>>& bonds, std::size_t& unbonded,
-              std::size_t& largest) {
-  std::vector<std::size_t> parent(n), size(n, 1), degree(n, 0);
+// Bonded clusters (union-find): each particle's cluster label (the lowest index in it), how
+// many particles have no bond, and the label of the largest cluster (the lowest label of a tie).
+struct Clusters {
+  std::vector<std::size_t> label;                           // -, particle index, shape [n]
+  std::size_t unbonded = 0, largest = 0, largest_size = 0;  // particles, label, particles
+};
+
+Clusters clusters(std::size_t n, const std::vector<std::array<std::size_t, 2>>& bonds) {
+  Clusters c;
+  // Per particle, shape [n]: union-find parent (index), cluster size (particles, counted at the
+  // roots), bonds.
+  std::vector<std::size_t> parent(n), size(n, 0), degree(n, 0);
   for (std::size_t i = 0; i < n; ++i) parent[i] = i;
   const auto root = [&](std::size_t i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
@@ -38,21 +46,43 @@ void clusters(std::size_t n, const std::vector<std::array<std::size_t, 2>>& bond
   for (const auto& [i, j] : bonds) {
     ++degree[i];
     ++degree[j];
-    std::size_t a = root(i), b = root(j);
-    if (a == b) continue;
-    if (size[a] < size[b]) std::swap(a, b);
-    parent[b] = a;
-    size[a] += size[b];
+    const std::size_t a = root(i), b = root(j);
+    parent[std::max(a, b)] = std::min(a, b);  // the root stays the lowest index
   }
-  unbonded = static_cast<std::size_t>(std::count(degree.begin(), degree.end(), 0));
-  largest = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    if (parent[i] == i) largest = std::max(largest, size[i]);
+  c.label.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    c.label[i] = root(i);
+    if (++size[c.label[i]] > c.largest_size || (size[c.label[i]] == c.largest_size && c.label[i] < c.largest)) {
+      c.largest_size = size[c.label[i]];
+      c.largest = c.label[i];
+    }
+  }
+  c.unbonded = static_cast<std::size_t>(std::count(degree.begin(), degree.end(), 0));
+  return c;
 }
 
-}  // namespace
+// Keeps the particles of cluster `keep` only, renumbered in their order; their bonds follow.
+void keep_cluster(Agglomerate& a, const Clusters& c, std::size_t keep) {
+  std::vector<std::size_t> index(a.x.size());  // new index of each kept particle
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.x.size(); ++i)
+    if (c.label[i] == keep) {
+      index[i] = n;
+      a.x[n] = a.x[i];
+      a.radius[n] = a.radius[i];
+      ++n;
+    }
+  a.dropped = a.x.size() - n;
+  a.x.resize(n);
+  a.radius.resize(n);
+  std::size_t m = 0;
+  for (const auto& [i, j] : a.bonds)  // a renumbering in order keeps the list sorted
+    if (c.label[i] == keep) a.bonds[m++] = {index[i], index[j]};
+  a.bonds.resize(m);
+}
 
-Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
+// Every option's range, and which of count and container size sets the other.
+void check_spec(const AgglomerateSpec& spec) {
   const auto fail = [&](const std::string& option, const std::string& msg) {
     throw InputError(spec.origin, 0, option, msg);
   };
@@ -66,16 +96,28 @@ Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
   if (spec.count > kMaxCount) fail("--count", "expected at most 1e7 particles, got " + std::to_string(spec.count));
   const bool sphere = spec.surface.empty();
   const std::string size_option = sphere ? "--sphere" : "--scale";
-  const bool sized = sphere ? spec.sphere_radius != 0.0 : spec.scale != 0.0;
-  if (spec.count > 0 && sized)
+  const double size = sphere ? spec.sphere_radius : spec.scale;  // 0: not given
+  if (spec.count > 0 && size != 0.0)
     fail("--count", "give --count or the container's size (" + size_option +
                         "), not both: with the solid fraction, either sets the other");
-  if (spec.count == 0 && sphere && !sized) fail("--sphere", "give the sphere's radius --sphere R (m) or a --count");
-  if (sized &&
-      !(std::isfinite(sphere ? spec.sphere_radius : spec.scale) && (sphere ? spec.sphere_radius : spec.scale) > 0.0))
-    fail(size_option, "expected a finite value > 0, got " + number_text(sphere ? spec.sphere_radius : spec.scale));
+  if (spec.count == 0 && sphere && size == 0.0)
+    fail("--sphere", "give the sphere's radius --sphere R (m) or a --count");
+  if (size != 0.0 && !(std::isfinite(size) && size > 0.0))
+    fail(size_option, "expected a finite value > 0, got " + number_text(size));
   for (int a = 0; a < 3; ++a)
     if (!std::isfinite(spec.centre[a])) fail("--centre", "expected finite coordinates");
+}
+
+}  // namespace
+
+Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
+  check_spec(spec);
+  const bool sphere = spec.surface.empty();
+  // The option that sets the container's size, blamed when the particles do not fit in it.
+  const std::string size_option = spec.count > 0 ? "--count" : sphere ? "--sphere" : "--scale";
+  const auto fail = [&](const std::string& option, const std::string& msg) {
+    throw InputError(spec.origin, 0, option, msg);
+  };
 
   Agglomerate out;
   Rng rng(spec.seed);
@@ -105,6 +147,9 @@ Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
   } else {
     if (!(std::isfinite(volume) && volume > 0.0))
       fail(size_option, "the container's volume " + number_text(volume) + " m^3 is not finite and > 0");
+    // At least F V / (the largest sphere's volume) draws: refused before drawing them.
+    if (spec.fraction * volume / ball_volume(spec.radius.largest()) > static_cast<double>(kMaxCount))
+      fail(size_option, "the container holds more than 1e7 particles at this solid fraction; check units");
     out.radius = draw_radii(draw, volume, rng);
     if (out.radius.empty()) fail(size_option, "the container holds less than one particle at this solid fraction");
   }
@@ -132,8 +177,7 @@ Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
   out.fraction = solid / out.container_volume;
   const Vec3 extent = box->hi() - box->lo();
   if (2.0 * r_max >= std::min({extent.x, extent.y, extent.z}))
-    fail(sphere ? size_option : "--scale",
-         "the largest particle (radius " + number_text(r_max) + " m) does not fit in the container");
+    fail(size_option, "the largest particle (radius " + number_text(r_max) + " m) does not fit in the container");
 
   PackingOptions po;
   po.tolerance = spec.tolerance;
@@ -143,7 +187,7 @@ Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
   try {
     pack = pack_dense(out.radius, *box, po);
   } catch (const std::invalid_argument& e) {
-    fail(sphere ? size_option : "--scale", e.what());
+    fail(size_option, e.what());
   }
   out.largest_overlap = pack.largest_overlap;
   out.largest_protrusion = pack.largest_protrusion;
@@ -160,7 +204,17 @@ Agglomerate make_agglomerate(const AgglomerateSpec& spec) {
 
   out.gap = spec.gap >= 0.0 ? spec.gap : r_sum / (100.0 * static_cast<double>(out.radius.size()));
   out.bonds = gap_pairs(out.x, out.radius, out.gap);
-  clusters(out.x.size(), out.bonds, out.unbonded, out.largest_cluster);
+  Clusters c = clusters(out.x.size(), out.bonds);
+  out.kept_fraction = out.fraction;
+  if (spec.largest_cluster_only && c.largest_size < out.x.size()) {
+    keep_cluster(out, c, c.largest);
+    double kept = 0.0;  // m^3
+    for (const double r : out.radius) kept += ball_volume(r);
+    out.kept_fraction = kept / out.container_volume;
+    c = clusters(out.x.size(), out.bonds);
+  }
+  out.unbonded = c.unbonded;
+  out.largest_cluster = c.largest_size;
   return out;
 }
 

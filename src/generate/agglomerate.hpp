@@ -26,7 +26,8 @@ struct AgglomerateSpec {
   double tolerance = 1e-3;        // -, largest overlap accepted, over the smaller radius of the pair
   double gap = -1.0;              // m, bonds between surface gaps below this; < 0: 1 % of the mean radius
   std::uint64_t seed = 1;
-  std::size_t max_sweeps = 200000;
+  std::size_t max_sweeps = 20000;
+  bool largest_cluster_only = false;         // drop the particles outside the largest bonded cluster
   std::string origin = "mpdem agglomerate";  // named by error messages
 };
 
@@ -37,13 +38,15 @@ struct Agglomerate {
   double container_volume = 0.0;                  // m^3
   double sphere_radius = 0.0;                     // m, the sphere used (0 for a surface)
   double scale = 0.0;                             // -, the surface's scale used (0 for a sphere)
-  double fraction = 0.0;                          // -, solid fraction reached
+  double fraction = 0.0;                          // -, solid fraction the packing reached
+  double kept_fraction = 0.0;                     // -, the same of the particles kept (largest_cluster_only)
   double gap = 0.0;                               // m, the bond gap used
   double largest_overlap = 0.0;                   // -, over the smaller radius of the pair
   double largest_protrusion = 0.0;                // -, out of the container, over the radius
   std::size_t sweeps = 0;                         // overlap-removal sweeps
   std::size_t unbonded = 0;                       // particles without a bond
   std::size_t largest_cluster = 0;                // particles in the largest bonded cluster
+  std::size_t dropped = 0;                        // particles dropped by largest_cluster_only
 };
 
 // Deterministic for a given spec (seed included). Throws InputError (spec.origin, 0, the option:

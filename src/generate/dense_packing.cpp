@@ -8,7 +8,6 @@
 #include <string>
 
 #include "core/value_range.hpp"
-
 #include "generate/sphere_cells.hpp"
 
 namespace mpdem {
@@ -22,8 +21,8 @@ constexpr double kRelax = 1.9;              // -, over-relaxation: a projection 
 constexpr int kPushes = 8;                  // pushes back inside per sphere and sweep, at most
 constexpr std::size_t kMaxTries = 1000000;  // random centres tried per sphere at the start
 
-// The state of a packing between sweeps: centres, the radii's current scale, and for each
-// sphere a position around which it stays clear of the container's surface.
+// The state of a packing between sweeps: the centres, and for each sphere a position around
+// which it stays clear of the container's surface.
 class Packer {
  public:
   Packer(const std::vector<double>& r, const PackingContainer& box, double r_max)

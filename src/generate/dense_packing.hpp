@@ -14,9 +14,9 @@
 namespace mpdem {
 
 struct PackingOptions {
-  double tolerance = 1e-3;          // -, largest overlap accepted, over the smaller radius of the pair
-  std::size_t max_sweeps = 200000;  // sweeps before giving up
-  std::uint64_t seed = 1;           // random centres
+  double tolerance = 1e-3;         // -, largest overlap accepted, over the smaller radius of the pair
+  std::size_t max_sweeps = 20000;  // sweeps before giving up
+  std::uint64_t seed = 1;          // random centres
 };
 
 struct DensePacking {

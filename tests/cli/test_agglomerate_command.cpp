@@ -157,8 +157,11 @@ TEST(AgglomerateCommand, BadOptionsExit2NamingTheOption) {
       {"-n 100 -r 0.5e-3 --fraction 0", "'--fraction'"},
       {"-n 100 -r 0.5e-3 --sphere 0.01", "'--count': give --count or the container's size (--sphere)"},
       {"-r 0.5e-3", "'--sphere': give the sphere's radius"},
-      {"-r 0.5e-3 --sphere -1", "'--sphere': expected a finite value > 0"},
+      {"-r 0.5e-3 --sphere -1", "'--sphere': expected a finite radius > 0"},
+      {"-r 0.5e-3 --sphere 0", "'--sphere': expected a finite radius > 0"},
+      {"-r 0.5e-3 --stl open.stl --scale 0", "'--scale': expected a finite scale > 0"},
       {"-r 0.5e-3 --sphere 0.4e-3", "'--sphere': the container holds less than one particle"},
+      {"-r 1e-5 --sphere 1", "'--sphere': the container holds more than 1e7 particles"},
       {"-n 100", "'--radius': give --radius R > 0 or a --distribution"},
       {"-n 100 -r -1", "'--radius'"},
       {"-n 100 --distribution cubic", "'--distribution': expected constant, uniform"},
@@ -170,10 +173,12 @@ TEST(AgglomerateCommand, BadOptionsExit2NamingTheOption) {
       {"-r 0.5e-3 --stl open.stl", "open.stl: the surface is not closed"},
       {"-n 100 -r 0.5e-3 --scale 2", "'--scale'"},
       {"-n 100 -r 0.5e-3 --stl open.stl --centre 0 0 1", "'--centre'"},
+      {"-n 100 -r 0.5e-3 -o nodir/bad", "'--output': the folder 'nodir' does not exist"},
       {"-n 100 -r 0.5e-3 --fraction 0.7 --max-sweeps 500", "'--fraction': the overlaps did not fall below"},
   };
   for (const auto& [args, message] : cases) {
-    const CommandResult r = run_mpdem("agglomerate -o bad " + args, d);
+    const bool output = args.find("-o ") != std::string::npos;  // the case names its own output
+    const CommandResult r = run_mpdem(std::string("agglomerate ") + (output ? "" : "-o bad ") + args, d);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
     EXPECT_NE(r.err.find(message), std::string::npos) << args << ": " << r.err;
     EXPECT_EQ(r.err.find("error:"), r.err.rfind("error:")) << "one message only: " << r.err;

@@ -185,6 +185,42 @@ TEST(Agglomerate, ClosedSurfaceContainer) {
   }
 }
 
+// A non-convex container: an 8 mm cube with a closed cubic cavity of 3.2 mm in its middle (the
+// solid between them). Every sphere keeps out of the cavity: its centre is at least
+// (1 - tolerance) r from the cavity's box, measured analytically, and inside the outer cube.
+TEST(Agglomerate, ContainerWithACavity) {
+  TempDir dir("mpdem_agg");
+  TriangleMesh solid = test::solid_box(1, 1, 1);         // [0, 1]^3, normals out of the solid
+  TriangleMesh cavity = test::solid_box(0.4, 0.4, 0.4);  // [0.3, 0.7]^3 once moved
+  for (Vec3& v : cavity.vertices) v += Vec3{0.3, 0.3, 0.3};
+  cavity.flip();  // normals into the cavity, out of the solid
+  solid.append(cavity);
+  const auto file = dir.path / "cavity.stl";
+  write_stl(file, soup(solid), StlFormat::Ascii);
+
+  AgglomerateSpec s = equal_spheres(0, 0.5);
+  s.radius.value = 0.4e-3;
+  s.surface = file;
+  s.scale = 8e-3;
+  const Agglomerate a = make_agglomerate(s);
+  const double side = 8e-3, lo = 0.3 * side, hi = 0.7 * side;  // m
+  EXPECT_NEAR(a.container_volume, side * side * side * (1 - 0.064), 1e-9 * a.container_volume);
+  EXPECT_NEAR(a.fraction, 0.5, 0.5 * ball_volume(0.4e-3) / a.container_volume);
+  for (std::size_t i = 0; i < a.x.size(); ++i) {
+    const double r = a.radius[i] * (1 - 1e-3);
+    double d2 = 0.0;  // m^2, squared distance from the centre to the cavity's box
+    for (int k = 0; k < 3; ++k) {
+      const double c = a.x[i][k];
+      EXPECT_GE(c, r) << "particle " << i;
+      EXPECT_LE(c, side - r) << "particle " << i;
+      const double out = std::max({lo - c, 0.0, c - hi});
+      d2 += out * out;
+    }
+    EXPECT_GE(std::sqrt(d2), r) << "particle " << i;
+  }
+  EXPECT_LE(largest_overlap(a), 1e-3);
+}
+
 // Impossible or contradictory requests name the option at fault.
 TEST(Agglomerate, BadRequestsNameTheOption) {
   AgglomerateSpec s = equal_spheres(100, 0.8);
@@ -205,4 +241,43 @@ TEST(Agglomerate, BadRequestsNameTheOption) {
   const std::string what = test::error_of([&] { make_agglomerate(s); });
   test::expect_contains(what, {"'--fraction'", "did not fall below the tolerance 0.001 within 2000 sweeps",
                                "solid fraction 0.7000", "lower --fraction"});
+}
+
+// largest_cluster_only keeps the largest bonded cluster: every particle bonded, all of them
+// joined (a walk over the bonds reaches every one), the bonds the gap rule's pairs of the
+// particles kept, and the particles kept those of the full packing, in its order.
+TEST(Agglomerate, LargestClusterOnly) {
+  AgglomerateSpec s = equal_spheres(1000, 0.55);
+  const Agglomerate all = make_agglomerate(s);
+  ASSERT_GT(all.unbonded, 0u) << "the test needs a packing with particles left out";
+  s.largest_cluster_only = true;
+  const Agglomerate a = make_agglomerate(s);
+  EXPECT_EQ(a.x.size(), all.largest_cluster);
+  EXPECT_EQ(a.dropped, all.x.size() - a.x.size());
+  EXPECT_EQ(a.unbonded, 0u);
+  EXPECT_EQ(a.largest_cluster, a.x.size());
+  EXPECT_EQ(a.bonds, brute_gap_pairs(a, a.gap));
+  EXPECT_NEAR(a.kept_fraction, solid_volume(a) / a.container_volume, 1e-12);
+  EXPECT_EQ(a.fraction, all.fraction);
+  // Connected: a breadth-first walk from particle 0.
+  std::vector<std::vector<std::size_t>> next(a.x.size());
+  for (const auto& [i, j] : a.bonds) {
+    next[i].push_back(j);
+    next[j].push_back(i);
+  }
+  std::vector<bool> seen(a.x.size(), false);
+  std::vector<std::size_t> queue{0};
+  seen[0] = true;
+  for (std::size_t k = 0; k < queue.size(); ++k)
+    for (const std::size_t j : next[queue[k]])
+      if (!seen[j]) {
+        seen[j] = true;
+        queue.push_back(j);
+      }
+  EXPECT_EQ(queue.size(), a.x.size());
+  // The kept particles are the packing's, in order.
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < all.x.size() && k < a.x.size(); ++i)
+    if (all.x[i].x == a.x[k].x && all.x[i].y == a.x[k].y && all.x[i].z == a.x[k].z) ++k;
+  EXPECT_EQ(k, a.x.size());
 }

@@ -10,6 +10,6 @@
 from ._core import InputError, RunError, __version__
 from .scene import Scene
 from .bodies import Bodies
-from .simulation import Particles, Simulation
+from .simulation import Bonds, Particles, Simulation
 
-__all__ = ["Bodies", "InputError", "RunError", "Particles", "Scene", "Simulation", "__version__"]
+__all__ = ["Bodies", "Bonds", "InputError", "RunError", "Particles", "Scene", "Simulation", "__version__"]

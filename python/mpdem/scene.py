@@ -20,7 +20,7 @@ __all__ = ["Scene"]
 
 # Tables that appear once, and tables that repeat ([[name]]), as in docs/scene.md.
 TABLES = ("time", "tolerance", "analysis", "gravity", "fields", "near_field", "contact", "liquid_bridge",
-          "thermal", "domain", "neighbor", "parallel", "checks", "output")
+          "bonds", "thermal", "domain", "neighbor", "parallel", "checks", "output")
 REPEATED = ("material", "particles", "barriers", "inlet", "sink")
 
 # Particle CSV columns of the array sources (docs/scene.md, "Particle CSV"): (array, columns).
@@ -203,6 +203,19 @@ class Scene:
         liquid_fraction, viscosity (Pa s), min_gap, barriers (docs/scene.md). A pair's own
         bridge is contact_pair(..., liquid_bridge={...})."""
         return self._set("liquid_bridge", keys)
+
+    def bonds(self, **keys):
+        """[bonds]: Potyondy-Cundall parallel bonds (docs/scene.md "[bonds]"): young (Pa, required),
+        radius_ratio, stiffness_ratio, tensile_strength (Pa), shear_strength (Pa), damping (ratio of
+        critical), gap (m: bonds made at t = 0 between particles closer than it), file (a bond CSV
+        of id pairs, relative to the scene's dir). One pair of materials' own keys: bond_pair()."""
+        return self._set("bonds", {k: str(v) if isinstance(v, os.PathLike) else v for k, v in keys.items()})
+
+    def bond_pair(self, **keys):
+        """One [[bonds.pair]] entry: materials=[a, b] and the [bonds] keys that differ for that pair
+        (bonded=False: none between them)."""
+        self.data.setdefault("bonds", {}).setdefault("pair", []).append(keys)
+        return self
 
     def thermal(self, **keys):
         return self._set("thermal", keys)

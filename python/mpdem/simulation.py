@@ -15,7 +15,7 @@ from . import _core
 from .bodies import Bodies
 from .scene import _scene_of, input_error, integers, numbers
 
-__all__ = ["Simulation", "Particles"]
+__all__ = ["Simulation", "Particles", "Bonds"]
 
 
 class Particles:
@@ -111,6 +111,50 @@ class Barriers:
         self._core.set_group_velocity(group, _vector("velocity", velocity))
 
 
+class Bonds:
+    """The parallel bonds (docs/python.md, "Bonds"): copies of their state now, one entry per bond
+    in ascending (id_i, id_j) order, broken bonds included (intact False); the breaks since the
+    last look with new_breaks(). Forces and moments are those on particle id_j (id_i takes the
+    opposite)."""
+
+    _ARRAYS = {
+        "id_i": "(n,) int64, the lower particle id of each bond",
+        "id_j": "(n,) int64, the higher particle id",
+        "intact": "(n,) bool, False once broken",
+        "normal_force": "(n,) N, along the bond (> 0 compression, < 0 tension)",
+        "shear_force": "(n, 3) N, normal to the bond",
+        "twisting_moment": "(n,) N m, about the bond's axis",
+        "bending_moment": "(n, 3) N m, normal to the bond",
+        "sigma": "(n,) Pa, the largest tensile stress on the bond's rim now, -F_n / A + |M_s| R / I",
+        "tau": "(n,) Pa, the largest shear stress on the bond's rim now, |F_s| / A + |M_n| R / J",
+        "length": "(n,) m, the centre distance when the bond was made",
+    }
+
+    def __init__(self, core):
+        self._core = core
+
+    def __len__(self):
+        return len(self._core.bond_arrays()["id_i"])
+
+    def as_dict(self):
+        """Every array at once (copies)."""
+        return self._core.bond_arrays()
+
+    def new_breaks(self):
+        """The bonds broken since the last call (since the start at the first): a dict of numpy
+        arrays, one entry per break in the order of bonds_broken.csv: time (s), id_i, id_j, mode
+        ("tension" or "shear"), sigma and tau (Pa, the stresses that broke it)."""
+        return self._core.new_bond_breaks()
+
+
+def _bond_property(name, doc):
+    return property(lambda self: self._core.bond_arrays()[name], doc=doc)
+
+
+for _name, _doc in Bonds._ARRAYS.items():
+    setattr(Bonds, _name, _bond_property(_name, _doc))
+
+
 class Simulation:
     """A run of `scene` (an mpdem.Scene or a path to a TOML scene file).
 
@@ -132,6 +176,8 @@ class Simulation:
         self.particles = Particles(self._core)
         self.bodies = Bodies(self._core)
         self.barriers = Barriers(self._core)
+        #: the parallel bonds (None without [bonds] in the scene)
+        self.bonds = Bonds(self._core) if self._core.bond_arrays() is not None else None
 
     @classmethod
     def resume(cls, path, scene, **options):
@@ -272,6 +318,12 @@ class Simulation:
         if mats is not None:
             arrays["material"] = mats
         return self._core.add_particles({k: np.ascontiguousarray(v) for k, v in arrays.items()})
+
+    def add_bond(self, id_i, id_j):
+        """Bonds the particles id_i and id_j between steps, at their present positions (no force
+        yet; radius and law from [bonds] for their materials). An InputError (a ValueError) for a
+        scene without [bonds], an unknown id, id_i == id_j or a pair bonded already."""
+        self._core.add_bond(_whole("id_i", id_i, -2**63), _whole("id_j", id_j, -2**63))
 
     def remove_particles(self, ids):
         """Removes the particles `ids` between steps (written to removed.csv; an unknown id is an

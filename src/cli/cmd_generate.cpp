@@ -6,6 +6,7 @@
 
 #include <fmt/core.h>
 
+#include "cli/radius_options.hpp"
 #include "cli/tool_commands.hpp"
 #include "generate/region.hpp"
 #include "core/input_error.hpp"
@@ -23,11 +24,7 @@ struct GenerateArgs {
   std::filesystem::path mesh;
   std::size_t count = 0;
   double solid_fraction = 0.0;
-  double radius = 0.0;
-  std::string distribution;
-  double rmin = 0.0, rmax = 0.0, mean = 0.0, std = 0.0;
-  std::vector<double> radii, fractions;
-  std::string fractions_of = "number";
+  RadiusArgs radius;
   std::uint64_t seed = 1;
   double gap = 0.0, speed = 0.0;
   std::string material;
@@ -74,27 +71,7 @@ GenerateSpec to_spec(const GenerateArgs& a) {
   }
   s.count = a.count;
   s.solid_fraction = a.solid_fraction;
-  RadiusDistribution& d = s.radius;
-  if (a.distribution.empty() || a.distribution == "constant") {
-    if (!(a.radius > 0)) bad("--radius", "give --radius R > 0 or a --distribution");
-    d.law = RadiusLaw::Constant;
-    d.value = a.radius;
-  } else if (!parse_radius_law(a.distribution, d.law)) {
-    bad("--distribution", "expected constant, uniform, normal, lognormal or discrete, got '" + a.distribution + "'");
-  }
-  d.min = a.rmin;
-  d.max = a.rmax;
-  d.mean = a.mean;
-  d.std = a.std;
-  if (d.law == RadiusLaw::Normal) {  // default window mean -/+ 3 std
-    if (d.min == 0.0) d.min = a.mean - 3.0 * a.std;
-    if (d.max == 0.0) d.max = a.mean + 3.0 * a.std;
-  }
-  d.radii = a.radii;
-  d.fractions = a.fractions.empty() ? std::vector<double>(a.radii.size(), 1.0) : a.fractions;
-  if (a.fractions_of != "number" && a.fractions_of != "mass") bad("--fractions-of", "expected number or mass");
-  d.mass_fractions = a.fractions_of == "mass";
-  if (const std::string p = d.problem(); !p.empty()) bad("--distribution", p);
+  s.radius = to_distribution(a.radius, "mpdem generate");
   s.seed = a.seed;
   s.gap = a.gap;
   s.material = a.material;
@@ -121,7 +98,10 @@ int run_generate(const GenerateArgs& a) {
 void add_generate_command(CLI::App& app, ToolAction& action) {
   auto a = std::make_shared<GenerateArgs>();
   auto* c = app.add_subcommand("generate", "random non-overlapping particles in a region -> particle CSV");
-  c->add_option("-o,--output", a->output, "particle CSV to write")->required();
+  // Required unless the `agglomerate` subcommand is given (checked in the callback).
+  c->add_option("-o,--output", a->output, "particle CSV to write");
+  // `mpdem generate agglomerate` is `mpdem agglomerate` (docs/tools.md).
+  CLI::App* agglomerate = add_agglomerate_command(*c, action);
   c->add_option("--region", a->region, "box (default), cylinder or mesh");
   c->add_option("--min", a->min, "box: lower corner x y z (m)")->expected(3);
   c->add_option("--max", a->max, "box: upper corner x y z (m)")->expected(3);
@@ -134,15 +114,7 @@ void add_generate_command(CLI::App& app, ToolAction& action) {
                    ->check(CLI::Range(0.0, 1.0));
   count->excludes(frac);
   frac->excludes(count);
-  c->add_option("--radius,-r", a->radius, "constant radius (m)");
-  c->add_option("--distribution", a->distribution, "constant, uniform, normal, lognormal or discrete");
-  c->add_option("--rmin", a->rmin, "uniform/normal/lognormal: smallest radius (m)");
-  c->add_option("--rmax", a->rmax, "uniform/normal/lognormal: largest radius (m)");
-  c->add_option("--mean", a->mean, "normal: mean of the parent normal; lognormal: mean radius (m)");
-  c->add_option("--std", a->std, "normal: std of the parent normal; lognormal: std of the radius (m)");
-  c->add_option("--radii", a->radii, "discrete: radii (m)");
-  c->add_option("--fractions", a->fractions, "discrete: fractions (default equal)");
-  c->add_option("--fractions-of", a->fractions_of, "discrete: fractions are of 'number' (default) or 'mass'");
+  add_radius_options(*c, a->radius);
   c->add_option("--seed", a->seed, "random seed (default 1)");
   c->add_option("--gap", a->gap, "minimum surface gap between particles and to the boundary (m)")
       ->check(CLI::NonNegativeNumber);
@@ -154,7 +126,9 @@ void add_generate_command(CLI::App& app, ToolAction& action) {
   c->add_option("--max-attempts", a->max_attempts, "random positions tried per particle (default 100000)")
       ->check(CLI::PositiveNumber);
   c->add_flag("--quiet,-q", a->quiet, "print nothing on success");
-  c->callback([a, &action] {
+  c->callback([a, agglomerate, &action] {
+    if (agglomerate->parsed()) return;  // its own callback sets the action
+    if (a->output.empty()) throw CLI::RequiredError("--output");
     if (a->count == 0 && a->solid_fraction == 0.0) throw CLI::ValidationError("give --count or --solid-fraction");
     action = [a] { return run_generate(*a); };
   });

@@ -69,6 +69,7 @@ int dispatch(int argc, char** argv) {
 
   mpdem::cli::ToolAction tool;  // set by `generate` / `mesh` / `clump` when selected
   mpdem::cli::add_generate_command(app, tool);
+  mpdem::cli::add_agglomerate_command(app, tool);
   mpdem::cli::add_mesh_command(app, tool);
   mpdem::cli::add_clump_command(app, tool);
   mpdem::cli::add_validate_command(app, tool);

@@ -14,10 +14,11 @@ namespace fs = std::filesystem;
 
 namespace {
 // Everything a run writes into its output folder (docs/output.md).
-constexpr std::array<std::string_view, 16> kOutputs{
-    "particles",   "particles.pvd",      "barriers",     "barriers.pvd",   "particles_csv",   "bodies_csv",
-    "log.csv",     "barrier_groups.csv", "removed.csv",  "checkpoint.bin", "thermal_log.csv", "warnings.txt",
-    "balance.csv", "contacts",           "contacts.pvd", "contacts_csv"};
+constexpr std::array<std::string_view, 19> kOutputs{
+    "particles",       "particles.pvd", "barriers",           "barriers.pvd",    "particles_csv",
+    "bodies_csv",      "log.csv",       "barrier_groups.csv", "removed.csv",     "checkpoint.bin",
+    "thermal_log.csv", "warnings.txt",  "balance.csv",        "contacts",        "contacts.pvd",
+    "contacts_csv",    "bonds",         "bonds.pvd",          "bonds_broken.csv"};
 // The coarse-grained fields' files: cg_<name>.csv, cg_<name>.pvd and the folder cg_<name>.
 bool coarse_grain_output(const fs::path& p) { return p.filename().string().rfind("cg_", 0) == 0; }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "check/bond_summary.hpp"
 #include "check/clump_summary.hpp"
 #include "check/cohesion_summary.hpp"
 #include "contact/contact_table.hpp"
@@ -126,6 +127,9 @@ TimeStepAdvice time_step_advice(const Scene& scene) {
   a.contact_pb = std::isfinite(pb) ? pb : 0.0;
   a.recommended = std::min(std::isfinite(rayleigh) ? 0.2 * rayleigh : inf, std::min(pp, pb) / 50.0);
   if (a.viscous > 0.0) a.recommended = std::min(a.recommended, 0.5 * a.viscous);
+  // A bond's normal spring, with the contacts' safety factor.
+  a.bond = bond_summary(scene).time_step;
+  if (a.bond > 0.0) a.recommended = std::min(a.recommended, a.bond / 50.0);
   return a;
 }
 
@@ -152,6 +156,7 @@ void print_summary(const Scene& scene) {
                is_rigid(m) ? std::string("rigid") : fmt::format("{:.6g} Pa", m.young), m.poisson);
   for (const std::string& line : clump_summary_lines(scene)) fmt::print("{}\n", line);
   for (const std::string& line : cohesion_summary_lines(scene)) fmt::print("{}\n", line);
+  for (const std::string& line : bond_summary_lines(scene)) fmt::print("{}\n", line);
   fmt::print("barriers: {} triangles in {} groups\n", b.size(), b.group_names.size());
   for (std::size_t g = 0; g < b.group_names.size(); ++g) {
     std::size_t n = 0, rigid = 0;
@@ -173,19 +178,23 @@ void print_summary(const Scene& scene) {
   fmt::print("time step: {}; {}: particle-particle {:.4g} s", rayleigh_text(a), contact_text(a), a.contact_pp);
   if (a.contact_pb > 0.0) fmt::print(", particle-barrier {:.4g} s", a.contact_pb);
   if (a.viscous > 0.0) fmt::print("; viscous bridges' relaxation time m*/c {:.4g} s", a.viscous);
-  fmt::print("\nrecommended dt <= {:.4g} s ({}{})\n", a.recommended,
+  if (a.bond > 0.0) fmt::print("; bonds 2/omega {:.4g} s", a.bond);
+  fmt::print("\nrecommended dt <= {:.4g} s ({}{}{})\n", a.recommended,
              a.hertz ? "min of 0.2 x Rayleigh time and contact time / 50" : "contact time / 50",
-             a.viscous > 0.0 ? ", and 0.5 x the bridges' relaxation time" : "");
+             a.viscous > 0.0 ? ", and 0.5 x the bridges' relaxation time" : "",
+             a.bond > 0.0 ? ", and the bonds' time step / 50" : "");
 }
 
 bool warn_about_time_step(const Scene& scene) {
   const TimeStepAdvice a = time_step_advice(scene);
   if (!(a.recommended > 0.0 && scene.model.params.time.dt > a.recommended)) return false;
   fmt::print(stderr,
-             "warning: time.dt = {:.4g} s exceeds the recommended {:.4g} s ({}{} {:.4g} s / 50); contacts may be "
+             "warning: time.dt = {:.4g} s exceeds the recommended {:.4g} s ({}{} {:.4g} s / 50{}); contacts{} may be "
              "under-resolved\n",
              scene.model.params.time.dt, a.recommended, a.hertz ? rayleigh_text(a) + " x 0.2, " : "", contact_text(a),
-             std::min(a.contact_pp, a.contact_pb > 0 ? a.contact_pb : a.contact_pp));
+             std::min(a.contact_pp, a.contact_pb > 0 ? a.contact_pb : a.contact_pp),
+             a.bond > 0.0 ? fmt::format(", bonds' time step {:.4g} s / 50", a.bond) : "",
+             a.bond > 0.0 ? " or bonds" : "");
   return true;
 }
 

@@ -16,7 +16,8 @@ struct TimeStepAdvice {
   double reference_speed = 0.0;  // m/s, max(expected impact speed, 1 m/s)
   ImpactSpeed impact;            // the expected impact speed and what sets it
   double viscous = 0.0;          // s, shortest relaxation time m*/c of a viscous liquid bridge (0: none)
-  double recommended = 0.0;      // s, min(0.2 rayleigh, contact / 50, 0.5 viscous)
+  double bond = 0.0;             // s, smallest bond time step 2/omega at t = 0 (physics.md 22; 0: no bond)
+  double recommended = 0.0;      // s, min(0.2 rayleigh, contact / 50, 0.5 viscous, bond / 50)
 };
 
 TimeStepAdvice time_step_advice(const Scene& scene);

@@ -77,6 +77,7 @@ void print_entries(const Scene& scene) {
              every_text(o.barriers_every, "s"), every_text(o.barrier_log_every, "s"), every_text(o.contacts_every, "s"),
              every_text(o.checkpoint_every, "steps"));
   if (!scene.model.clumps.empty()) fmt::print("  body CSV {}\n", every_text(o.body_csv_every, "s"));
+  if (prm.bonds.enabled()) fmt::print("  bonds (VTU) {}; bonds_broken.csv\n", every_text(o.bonds_every, "s"));
 }
 
 }  // namespace mpdem::cli

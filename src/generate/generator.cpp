@@ -72,9 +72,10 @@ class PlacementGrid {
   std::vector<int> head_, next_;  // first sphere per cell, next sphere in the same cell
 };
 
-// The radii to place: `count` draws, or draws until their volume is closest to the target.
-std::vector<double> draw_radii(const GenerateSpec& spec, double region_volume, Rng& rng,
-                               const std::function<void(const std::string&)>& fail) {
+}  // namespace
+
+std::vector<double> draw_radii(const GenerateSpec& spec, double region_volume, Rng& rng) {
+  const auto fail = [&](const std::string& msg) { throw InputError(spec.origin, spec.line, "generate", msg); };
   std::vector<double> radii;
   if (spec.count > 0) {
     if (spec.count > kMaxParticles) fail("count " + std::to_string(spec.count) + " is above the limit of 5e7");
@@ -101,7 +102,6 @@ std::vector<double> draw_radii(const GenerateSpec& spec, double region_volume, R
   return radii;
 }
 
-}  // namespace
 
 GenerateResult generate_particles(const GenerateSpec& spec) {
   const auto fail = [&](const std::string& msg) { throw InputError(spec.origin, spec.line, "generate", msg); };
@@ -116,7 +116,7 @@ GenerateResult generate_particles(const GenerateSpec& spec) {
   res.region_volume = region.volume();
 
   Rng rng(spec.seed);
-  std::vector<double> radii = draw_radii(spec, res.region_volume, rng, fail);
+  std::vector<double> radii = draw_radii(spec, res.region_volume, rng);
   std::sort(radii.begin(), radii.end(), std::greater<>());
   if (radii.empty()) fail("the requested solid fraction is smaller than one particle");
   const double r_max = radii.front();

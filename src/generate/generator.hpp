@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "core/random.hpp"
 #include "core/vec3.hpp"
 #include "model/generate_spec.hpp"
 
@@ -23,6 +24,11 @@ struct GenerateResult {
   double solid_fraction = 0.0;  // -, sum of sphere volumes / region volume
   std::size_t attempts = 0;     // random centres tried in total
 };
+
+// The radii to place (m): spec.count draws from spec.radius, or (count 0) draws until their
+// volume is closest to spec.solid_fraction x region_volume (m^3). Throws InputError (spec.origin,
+// spec.line, "generate") beyond 5e7 particles.
+std::vector<double> draw_radii(const GenerateSpec& spec, double region_volume, Rng& rng);
 
 // Deterministic for a given spec (seed included). Throws InputError (spec.origin, spec.line,
 // "generate") for an impossible request: bad parameters, a sphere larger than the region, or a

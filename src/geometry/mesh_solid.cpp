@@ -158,13 +158,20 @@ std::uint32_t MeshSolid::next_query() const {
 // not tested yet; stops and returns false as soon as f returns false.
 template <class F>
 bool MeshSolid::each_new_distance2(const Vec3& p, int i, int j, int k, F&& f) const {
+  return each_new_closest(p, i, j, k, [&](const Vec3& q) { return f(norm2(q - p)); });
+}
+
+// Passes f the closest point (m) to p of each triangle of cell (i, j, k) that this query has not
+// tested yet; stops and returns false as soon as f returns false.
+template <class F>
+bool MeshSolid::each_new_closest(const Vec3& p, int i, int j, int k, F&& f) const {
   const std::size_t c = (static_cast<std::size_t>(i) * n_[1] + j) * n_[2] + k;
   for (std::uint32_t m = cell_start_[c]; m < cell_start_[c + 1]; ++m) {
     const std::uint32_t t = cell_tri_[m];
     if (stamp_[t] == query_) continue;
     stamp_[t] = query_;
     const auto& tr = tri_[t];
-    if (!f(norm2(closest_point_on_triangle(p, tr[0], tr[1], tr[2]).point - p))) return false;
+    if (!f(closest_point_on_triangle(p, tr[0], tr[1], tr[2]).point)) return false;
   }
   return true;
 }
@@ -186,15 +193,21 @@ bool MeshSolid::clear_of_surface(const Vec3& p, double d) const {
   return true;
 }
 
-double MeshSolid::distance_to_surface(const Vec3& p) const {
+double MeshSolid::distance_to_surface(const Vec3& p) const { return std::sqrt(norm2(closest_surface_point(p) - p)); }
+
+Vec3 MeshSolid::closest_surface_point(const Vec3& p) const {
   next_query();
   const std::array<int, 3> c{cell(p.x, 0), cell(p.y, 1), cell(p.z, 2)};
   int k_max = 0;
   for (int a = 0; a < 3; ++a) k_max = std::max({k_max, c[a], n_[a] - 1 - c[a]});
   double best2 = std::numeric_limits<double>::infinity();  // m^2
+  Vec3 best = tri_.empty() ? p : tri_.front()[0];          // m
   const auto visit = [&](int i, int j, int l) {
-    each_new_distance2(p, i, j, l, [&](double e2) {
-      best2 = std::min(best2, e2);
+    each_new_closest(p, i, j, l, [&](const Vec3& q) {
+      if (const double e2 = norm2(q - p); e2 < best2) {
+        best2 = e2;
+        best = q;
+      }
       return true;
     });
   };
@@ -216,7 +229,7 @@ double MeshSolid::distance_to_surface(const Vec3& p) const {
     const double reach = k * h_;
     if (best2 <= reach * reach) break;
   }
-  return std::sqrt(best2);
+  return best;
 }
 
 }  // namespace mpdem

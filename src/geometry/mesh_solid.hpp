@@ -29,6 +29,8 @@ class MeshSolid {
   // k cell sizes (no unvisited cell can hold a nearer one). Cost grows with the distance over the
   // cell size (about 4 triangles per cell).
   double distance_to_surface(const Vec3& p) const;
+  // m, the nearest point of the surface to p (the point distance_to_surface measures to).
+  Vec3 closest_surface_point(const Vec3& p) const;
 
  private:
   std::vector<std::array<Vec3, 3>> tri_;  // m, triangles
@@ -51,6 +53,8 @@ class MeshSolid {
   std::uint32_t next_query() const;  // a fresh stamp for the triangles a query tests
   template <class F>
   bool each_new_distance2(const Vec3& p, int i, int j, int k, F&& f) const;
+  template <class F>
+  bool each_new_closest(const Vec3& p, int i, int j, int k, F&& f) const;
   bool ray_crosses(const std::array<Vec3, 3>& t, const Vec3& p) const;
 };
 

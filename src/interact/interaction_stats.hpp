@@ -20,8 +20,8 @@ enum class StatRanks {
 // The checkpoint section that holds a member ("interactions": always, in table order; "fields":
 // an optional section written only when a dissipative body force is on, so that the checkpoints
 // of scenes without one keep their bytes; "cohesion": likewise, only with a contact law with
-// hysteresis or liquid bridges).
-enum class StatSaved { interactions, fields, cohesion };
+// hysteresis or liquid bridges; "bonds": only with [bonds]).
+enum class StatSaved { interactions, fields, cohesion, bonds };
 // The member's part in the energy balance (integrate/energy_balance.hpp).
 enum class StatBalance {
   none,        // not an energy of the balance (powers, counts, the springs' share of elastic)
@@ -34,7 +34,7 @@ enum class StatBalance {
   heat  // the thermal balance (heat that left the particles), not the mechanical one
 };
 // When the member has a log.csv column (the optional ones only for the physics the scene uses).
-enum class StatLogged { never, always, near_field, driven_barriers, thermal, dissipative_field, cohesion };
+enum class StatLogged { never, always, near_field, driven_barriers, thermal, dissipative_field, cohesion, bonds };
 // Where its column goes among the log's own (docs/output.md "log.csv"): after `removed`; after
 // `potential`; before `total_energy` (the work taken off it); after `total_energy`.
 enum class StatSlot { counts, energies, supplied, heat };
@@ -97,7 +97,15 @@ struct StatInfo {
   X(double, cohesion_dissipated, "J", sum, true, cohesion, dissipated, "cohesion_dissipated", cohesion, energies)    \
   /* the sum of the contacts' stored energies' magnitudes at the last evaluation (cohesion only: the scale */         \
   /* of the energy checks, integrate/energy_balance.hpp active_energy) */                                             \
-  X(double, elastic_magnitude, "J", sum, false, cohesion, none, nullptr, never, energies)
+  X(double, elastic_magnitude, "J", sum, false, cohesion, none, nullptr, never, energies)                          \
+  /* parallel bonds (contact/bonds.hpp): intact at the last evaluation, broken so far, the energy their springs */   \
+  /* hold, what their dashpots dissipated (trapezoid of bond_damping_power), the energy the broken ones held */       \
+  X(std::uint64_t, bonds_intact, "-", count, false, bonds, none, "bonds", bonds, counts)                               \
+  X(std::uint64_t, bonds_broken, "-", sum, true, bonds, none, "bonds_broken", bonds, counts)                           \
+  X(double, bond_energy, "J", sum, false, bonds, stored, "bond_energy", bonds, energies)                               \
+  X(double, bond_damping_dissipated, "J", sum, true, bonds, dissipated, "bond_damping", bonds, energies)                \
+  X(double, bond_break_dissipated, "J", sum, true, bonds, dissipated, "bond_break_energy", bonds, energies)            \
+  X(double, bond_damping_power, "W", sum, false, bonds, none, nullptr, never, energies)
 // clang-format on
 
 struct InteractionStats {

@@ -11,6 +11,7 @@
 #include "core/parallel.hpp"
 #include "core/scoped_timer.hpp"
 #include "contact/barrier_contacts.hpp"
+#include "contact/bonds.hpp"
 #include "contact/cohesion_reach.hpp"
 #include "thermal/heat_transfer.hpp"
 #include "field/near_field_forces.hpp"
@@ -86,6 +87,13 @@ Interactions::Interactions(const Model& model, const Particles& p, const Barrier
   if (near_field_enabled(model.params.near_field)) near_ = std::make_unique<NearFieldForces>(model);
   if (model.params.analysis.thermal) heat_ = std::make_unique<HeatTransfer>(model, b);
   search_->set_incoming_index(near_ || heat_);
+  if (model.params.bonds.enabled()) {
+    bonds_ = std::make_unique<Bonds>(model);
+    bonds_->make(p);
+    // The halo of a decomposed run reaches every bond's partner, with room for it to stretch,
+    // beyond the two largest radii it covers already.
+    bond_margin_ = std::max(0.0, 1.25 * bonds_->longest() - 2.0 * largest_radius(model, p));
+  }
 }
 
 Interactions::~Interactions() = default;
@@ -287,6 +295,7 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     const HeatFlows h = heat_->evaluate(p, b, *search_);
     if (req.commit) commit_heat(h, req);
   }
+  if (bonds_) evaluate_bonds(p, req);
   {
     ScopedTimer timer(times_.exchange);
     search_->fold_ghosts(p);  // what the periodic images received goes to their sources
@@ -363,43 +372,6 @@ OverlapReport Interactions::max_overlap(const Particles& p, const Barriers& b) c
   const OverlapReport pp = particle_contacts_->max_overlap();
   const OverlapReport pb = barrier_contacts_->max_overlap(p, b);
   return pb.ratio > pp.ratio ? pb : pp;
-}
-
-double Interactions::start_accumulators(Particles& p) const {
-  // One pass: the body forces start the force sums, torque and heat start at zero.
-  // Without a field beyond gravity only the masses are read, and without heat transfer the heat
-  // flows (zero, never written) are not touched: memory traffic is what a pass over 10^5
-  // particles costs.
-  const BodyForces forces(model_.params.fields);
-  const bool thermal = heat_ != nullptr;
-  const std::size_t n = p.size();
-  if (p.has_bodies()) {
-    // Clumps: the body forces act on the bodies (interact/body_sums.hpp), not on their members.
-    return deterministic_block_sums<1>(n, [&](std::size_t lo, std::size_t hi, std::array<double, 1>& lost) {
-      for (std::size_t i = lo; i < hi; ++i) {
-        p.force[i] = p.body[i] == kNoBody ? forces.force(p, i, lost[0]) : Vec3{};
-        p.torque[i] = Vec3{};
-        if (thermal) p.heat[i] = 0.0;
-      }
-    })[0];
-  }
-  if (forces.only_first()) {
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-    for (std::size_t i = 0; i < n; ++i) {
-      p.force[i] = forces.first_force(p, i);
-      p.torque[i] = Vec3{};
-      if (thermal) p.heat[i] = 0.0;
-    }
-    return 0.0;
-  }
-  // W, the dissipative entries' power, summed in fixed blocks (independent of the thread count).
-  return deterministic_block_sums<1>(n, [&](std::size_t lo, std::size_t hi, std::array<double, 1>& lost) {
-    for (std::size_t i = lo; i < hi; ++i) {
-      p.force[i] = forces.force(p, i, lost[0]);
-      p.torque[i] = Vec3{};
-      if (thermal) p.heat[i] = 0.0;
-    }
-  })[0];
 }
 
 }  // namespace mpdem

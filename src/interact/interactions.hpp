@@ -45,6 +45,7 @@ class ParticleContacts;
 class BarrierContacts;
 class NearFieldForces;
 class HeatTransfer;
+class Bonds;
 struct HeatFlows;
 
 class Interactions {
@@ -155,6 +156,12 @@ class Interactions {
   const ParticleContacts& particle_contacts() const { return *particle_contacts_; }
   ParticleContacts& particle_contacts() { return *particle_contacts_; }
   const BarrierContacts& barrier_contacts() const { return *barrier_contacts_; }
+  // The parallel bonds ([bonds]; null without): made at construction from the particles given.
+  const Bonds* bonds() const { return bonds_.get(); }
+  Bonds* bonds() { return bonds_.get(); }
+  // Several ranks, after the particles were split (Simulation::decompose): keeps the bonds of
+  // this rank's particles (interact/interactions_bonds.cpp).
+  void keep_owned_bonds(const Particles& p);
   // The deepest particle-particle or particle-barrier contact of the last evaluation.
   OverlapReport max_overlap(const Particles& p, const Barriers& b) const;
   // Evaluations in which the convection fit's air speed clamp (20 m/s) engaged.
@@ -164,6 +171,8 @@ class Interactions {
   // force = body forces, torque = heat = 0; returns the power the body forces dissipate (W).
   double start_accumulators(Particles& p) const;
   void commit_heat(const HeatFlows& h, const EvalRequest& req);
+  // The bonds' forces and their statistics (interact/interactions_bonds.cpp).
+  void evaluate_bonds(Particles& p, const EvalRequest& req);
   void rebuild(Particles& p, const Barriers& b, bool reorder);
   bool rebuild_due(const Particles& p, const Barriers& b, double dt) const;
   // Lists never built, or particles or barrier elements added or removed since.
@@ -222,6 +231,8 @@ class Interactions {
   std::unique_ptr<BarrierContacts> barrier_contacts_;
   std::unique_ptr<NearFieldForces> near_;  // null when the near field is off
   std::unique_ptr<HeatTransfer> heat_;     // null when [analysis] thermal is off
+  std::unique_ptr<Bonds> bonds_;           // null without [bonds]
+  double bond_margin_ = 0.0;               // m, the halo's growth for the bonds (decompose)
   // Outward heat flows (W) of the last committed evaluation, the start values of the next step.
   double out_barriers_ = 0.0, out_convected_ = 0.0, out_radiated_ = 0.0;
 };

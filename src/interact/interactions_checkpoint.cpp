@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "contact/barrier_contacts.hpp"
+#include "contact/bonds.hpp"
 #include "contact/cohesion_reach.hpp"
 #include "contact/particle_contacts.hpp"
 #include "neighbor/neighbor_search.hpp"
@@ -74,6 +75,11 @@ void Interactions::save(CheckpointWriter& w, const Particles& p) const {
       has_cohesion(table_), [&](BinaryWriter& o) { search_->save(o); },
       [&](BinaryWriter& o) { particle_contacts_->save(o, p, *search_); },
       [&](BinaryWriter& o) { barrier_contacts_->save(o); });
+  if (bonds_)
+    w.section("bonds", [&](BinaryWriter& o) {
+      for_each_saved_stat(stats_, StatSaved::bonds, [&](const auto& v) { o.value(v); });
+      bonds_->save(o);
+    });
 }
 
 void Interactions::save_gathered(CheckpointWriter& w, const Particles& p, const Particles& all) const {
@@ -89,6 +95,8 @@ void Interactions::save_gathered(CheckpointWriter& w, const Particles& p, const 
                                                               kRoot);
   const AttachedRecords barrier = gather_records(*comm_, barrier_contacts_->export_records(p), kRoot);
   const std::uint64_t overflows = comm_->sum(barrier_contacts_->overflows());
+  std::vector<BondRecord> bonds;  // each bond is held by one rank
+  if (bonds_) bonds = gather_values<BondRecord>(*comm_, bonds_->export_records(), kRoot);
   if (comm_->rank() != kRoot) return;
   // `all` is in id order: each record goes to its particle's index there.
   const std::span<const std::int64_t> ids(all.id.data(), all.size());
@@ -104,6 +112,11 @@ void Interactions::save_gathered(CheckpointWriter& w, const Particles& p, const 
       w, s, out, dissipative_fields(model_.params.fields), has_cohesion(table_),
       [&](BinaryWriter& o) { search_->save(o, xb_all); }, [&](BinaryWriter& o) { o.vector(pairs); },
       [&](BinaryWriter& o) { BarrierContacts::save_records(o, barrier, ids, overflows); });
+  if (bonds_)
+    w.section("bonds", [&](BinaryWriter& o) {
+      for_each_saved_stat(s, StatSaved::bonds, [&](const auto& v) { o.value(v); });
+      Bonds::save_records(o, std::move(bonds));
+    });
 }
 
 void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b) {
@@ -122,6 +135,12 @@ void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b)
   if (r.has("cohesion"))
     read_section(r, "cohesion", [&](BinaryReader& in) {
       for_each_saved_stat(stats_, StatSaved::cohesion, [&](auto& v) { v = in.value<std::decay_t<decltype(v)>>(); });
+    });
+  // Written only with [bonds] (the scene fingerprint makes a resume agree on that).
+  if (r.has("bonds") && bonds_)
+    read_section(r, "bonds", [&](BinaryReader& in) {
+      for_each_saved_stat(stats_, StatSaved::bonds, [&](auto& v) { v = in.value<std::decay_t<decltype(v)>>(); });
+      bonds_->restore(in);
     });
   if (!comm_) {
     read_section(r, "neighbor", [&](BinaryReader& in) { search_->restore(in, p, b); });
@@ -156,6 +175,12 @@ void Interactions::restore(CheckpointReader& r, Particles& p, const Barriers& b)
   std::erase_if(pairs, [&](const PairHistory& h) { return !mine.contains(std::min(h.id_first, h.id_second)); });
   particle_contacts_->import_history(p, *search_, std::move(pairs));
   barrier_contacts_->import_records(p, barrier);
+  if (bonds_) {
+    // A bond lives with its lower-id particle.
+    std::vector<BondRecord> bonds = bonds_->export_records();
+    std::erase_if(bonds, [&](const BondRecord& r2) { return !mine.contains(r2.id_i); });
+    bonds_->import_records(std::move(bonds));
+  }
   stats_.rebuilds = search_->rebuilds();
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contact/barrier_contacts.hpp"
+#include "contact/bonds.hpp"
 #include "contact/particle_contacts.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "parallel/brick_grid.hpp"
@@ -18,6 +19,8 @@ namespace mpdem {
 
 void Interactions::decompose(const Communicator& comm, const BrickGrid& grid, double body_margin) {
   comm_ = &comm;
+  // The halo reaches every bond's partner (bond_margin_).
+  body_margin += bond_margin_;
   search_->decompose(comm, grid, heat_ != nullptr, body_margin);  // ghosts' temperatures only for heat transfer
 }
 
@@ -34,7 +37,11 @@ void Interactions::rebuild_decomposed(Particles& p, const Barriers& b, bool reor
     AttachedRecords barrier_records = barrier_contacts_->export_records(p);  // (migrate wraps the periodic axes)
     AttachedRecords other = travelling_.take ? travelling_.take() : AttachedRecords{};
     AttachedRecords body_other = body_travelling_.take ? body_travelling_.take() : AttachedRecords{};
-    std::vector<AttachedRecords*> attached{&pair_records, &barrier_records}, body_attached;
+    // A bond travels with its lower-id particle.
+    AttachedRecords bond_records = AttachedRecords::of<BondRecord>();
+    if (bonds_)
+      for (const BondRecord& r : bonds_->export_records()) bond_records.push(r.id_i, r);
+    std::vector<AttachedRecords*> attached{&pair_records, &barrier_records, &bond_records}, body_attached;
     if (travelling_.take) attached.push_back(&other);
     if (body_travelling_.take) body_attached.push_back(&body_other);
     search_->migrate(p, attached, body_attached);
@@ -45,6 +52,11 @@ void Interactions::rebuild_decomposed(Particles& p, const Barriers& b, bool reor
     pairs.clear();
     for (std::size_t r = 0; r < pair_records.size(); ++r) pairs.push_back(pair_records.get<PairHistory>(r));
     barrier_contacts_->import_records(p, barrier_records);
+    if (bonds_) {
+      std::vector<BondRecord> bonds(bond_records.size());
+      for (std::size_t r = 0; r < bond_records.size(); ++r) bonds[r] = bond_records.get<BondRecord>(r);
+      bonds_->import_records(std::move(bonds));
+    }
   } else {
     // Within a step: the owned particles keep their indices (and barrier records); the ghosts change.
     search_->rebuild(p, b);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "contact/barrier_contacts.hpp"
+#include "contact/bonds.hpp"
 #include "contact/pair_batch.hpp"
 #include "contact/particle_contacts.hpp"
 #include "field/near_field_forces.hpp"
@@ -62,6 +63,14 @@ bool Interactions::removal_acts_on_others(const Particles& p, const std::vector<
 
 void Interactions::remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep) {
   next_drift_.valid = false;
+  if (bonds_) {
+    // Their bonds go with them (on several ranks a bond may live on another rank than its particle).
+    std::vector<std::int64_t> gone;
+    for (std::size_t i = 0; i < keep.size(); ++i)
+      if (!keep[i]) gone.push_back(p.id[i]);
+    if (comm_) gone = all_gather_values<std::int64_t>(*comm_, gone);
+    bonds_->remove_particles(gone);
+  }
   if (comm_) {
     // Collective (the lists are rebuilt on every rank); the ghosts' sources are remote: by ids.
     std::vector<PairHistory> kept = particle_contacts_->export_history(p, *search_);

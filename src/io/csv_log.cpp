@@ -116,6 +116,19 @@ void CsvLog::row(std::span<const double> values) {
   if (buffer_.size() >= kFlushBytes) flush();
 }
 
+void CsvLog::text_row(std::span<const std::string> fields) {
+  if (fields.size() != columns_.size())
+    throw std::logic_error("CSV log '" + file_.string() + "': row has " + std::to_string(fields.size()) +
+                           " fields, header has " + std::to_string(columns_.size()) + " columns");
+  for (std::size_t c = 0; c < fields.size(); ++c) {
+    if (!is_column_name(fields[c])) throw std::logic_error("CSV log '" + file_.string() + "': bad field");
+    if (c) buffer_ += ',';
+    buffer_ += fields[c];
+  }
+  buffer_ += '\n';
+  if (buffer_.size() >= kFlushBytes) flush();
+}
+
 void CsvLog::flush() {
   if (buffer_.empty()) return;
   append_complete_lines(file_, buffer_);

@@ -48,6 +48,9 @@ class CsvLog {
 
   // Buffers one row; throws std::logic_error if values.size() != number of columns.
   void row(std::span<const double> values);
+  // Buffers one row of fields already formatted (a text column among numbers: numbers formatted
+  // with append_csv_number), each free of ',', '"' and line breaks; std::logic_error otherwise.
+  void text_row(std::span<const std::string> fields);
   // Writes the buffered rows to the file. Throws std::runtime_error on a write failure.
   void flush();
 

@@ -1,102 +1,16 @@
 #include "io/scene_fingerprint.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <iterator>
-#include <memory>
-#include <optional>
-#include <type_traits>
 #include <utility>
+
+#include "io/fingerprint_hash.hpp"
 
 namespace mpdem {
 
 namespace {
 
-// FNV-1a (64 bit) over the exact bytes of each value: any edit of a double, even in its last
-// bit, changes the item. Strings add their length first, so that "ab" + "c" differs from "a" + "bc".
-class Hash {
- public:
-  void add(std::uint64_t v) {
-    for (int k = 0; k < 8; ++k) {
-      h_ ^= (v >> (8 * k)) & 0xffu;
-      h_ *= 0x100000001b3ull;
-    }
-  }
-  void add(std::int64_t v) { add(static_cast<std::uint64_t>(v)); }
-  void add(int v) { add(static_cast<std::int64_t>(v)); }
-  void add(bool v) { add(std::uint64_t{v}); }
-  void add(double v) { add(std::bit_cast<std::uint64_t>(v)); }
-  void add(const Vec3& v) {
-    add(v.x);
-    add(v.y);
-    add(v.z);
-  }
-  void add(const Quat& q) {
-    add(q.w);
-    add(q.x);
-    add(q.y);
-    add(q.z);
-  }
-  void add(const std::string& s) {
-    add(std::uint64_t{s.size()});
-    for (const char c : s) {
-      h_ ^= static_cast<unsigned char>(c);
-      h_ *= 0x100000001b3ull;
-    }
-  }
-  template <class T>
-  void add(const std::optional<T>& v) {
-    add(v.has_value());
-    if (v) add(*v);
-  }
-  void add(const LawKeyValues& m) {
-    add(std::uint64_t{m.size()});
-    for (const auto& [k, v] : m) {
-      add(k);
-      add(v);
-    }
-  }
-  template <class E>
-  requires std::is_enum_v<E>
-  void add(E e) { add(static_cast<std::int64_t>(e)); }
-  std::uint64_t value() const { return h_; }
-
- private:
-  std::uint64_t h_ = 0xcbf29ce484222325ull;
-};
-
-template <class... T>
-std::uint64_t hash_of(const T&... v) {
-  Hash h;
-  (h.add(v), ...);
-  return h.value();
-}
-
-// A part made of named keys (fixed items), then entries labelled by `entry_label`.
-class KeyedPart {
- public:
-  explicit KeyedPart(std::string name) { part_.name = std::move(name); }
-  template <class... T>
-  void key(std::string k, const T&... v) {
-    part_.items.push_back(hash_of(v...));
-    keys_->push_back(std::move(k));
-  }
-  FingerprintPart finish(std::string entries = "", std::vector<std::string> entry_labels = {}) {
-    part_.fixed = part_.items.size();
-    part_.entries = std::move(entries);
-    part_.label = [keys = keys_, entry_labels = std::move(entry_labels)](std::size_t k) {
-      if (k < keys->size()) return (*keys)[k];
-      k -= keys->size();
-      return k < entry_labels.size() ? entry_labels[k] : "entry " + std::to_string(k + 1);
-    };
-    return std::move(part_);
-  }
-  FingerprintPart& part() { return part_; }
-
- private:
-  FingerprintPart part_;
-  std::shared_ptr<std::vector<std::string>> keys_ = std::make_shared<std::vector<std::string>>();
-};
+using namespace fingerprint;
 
 FingerprintPart materials_part(const std::vector<Material>& materials) {
   static constexpr const char* kFields[] = {"name",          "density",    "young",  "poisson",    "conductivity",
@@ -322,25 +236,43 @@ FingerprintPart integration_part(const TimeParams& t) {
   return k.finish();
 }
 
-std::size_t entry_count(const FingerprintPart& p, std::size_t items) {
-  return items > p.fixed ? (items - p.fixed) / std::max<std::size_t>(p.per_entry, 1) : 0;
+// [bonds] per key and each [[bonds.pair]] entry (only in a scene with bonds: the others keep
+// their fingerprints).
+FingerprintPart bonds_part(const BondParams& b) {
+  KeyedPart k("bonds");
+  const BondKeys& d = *b.defaults;
+  k.key("bonds.radius_ratio", d.radius_ratio);
+  k.key("bonds.young", d.young);
+  k.key("bonds.stiffness_ratio", d.stiffness_ratio);
+  k.key("bonds.tensile_strength", d.tensile_strength);
+  k.key("bonds.shear_strength", d.shear_strength);
+  k.key("bonds.damping", d.damping);
+  k.key("bonds.gap", d.gap);
+  const std::size_t keys = k.part().items.size();
+  std::vector<std::string> labels;
+  for (const BondPairParams& e : b.pairs) {
+    const BondKeys& o = e.keys;
+    k.part().items.push_back(hash_of(e.material_a, e.material_b, o.radius_ratio, o.young, o.stiffness_ratio,
+                                     o.tensile_strength, o.shear_strength, o.damping, o.gap, o.bonded));
+    labels.push_back("[[bonds.pair]] '" + e.material_a + "'-'" + e.material_b + "'");
+  }
+  FingerprintPart p = k.finish("[[bonds.pair]] entries", std::move(labels));
+  p.fixed = keys;  // the entries follow the keys: a changed count is reported as such
+  return p;
 }
 
-std::string part_difference(const FingerprintPart& ck, const FingerprintPart& sc) {
-  if (ck.items == sc.items && ck.fixed == sc.fixed && ck.per_entry == sc.per_entry) return "";
-  if (ck.fixed != sc.fixed || ck.per_entry != sc.per_entry) return sc.name + " (its layout)";
-  const std::size_t n = std::min(ck.items.size(), sc.items.size());
-  const std::size_t k = static_cast<std::size_t>(
-      std::mismatch(ck.items.begin(), ck.items.begin() + static_cast<long>(n), sc.items.begin()).first -
-      ck.items.begin());
-  std::string what;
-  if (k < n) what = sc.label ? sc.label(k) : "item " + std::to_string(k + 1);
-  if (ck.items.size() != sc.items.size()) {
-    if (!what.empty()) what += "; ";
-    what += std::to_string(entry_count(sc, sc.items.size())) + " " + sc.entries + ", the checkpoint's scene had " +
-            std::to_string(entry_count(ck, ck.items.size()));
-  }
-  return sc.name + " (" + what + ")";
+// The bond CSV's bonds, one item each, as id pairs (smaller id first) in ascending order: the
+// same bonds listed in another order or orientation are the same scene.
+FingerprintPart listed_bonds_part(const BondParams& b) {
+  std::vector<std::pair<std::int64_t, std::int64_t>> ids;
+  for (const ListedBond& l : b.listed) ids.push_back(std::minmax(l.id_i, l.id_j));
+  std::sort(ids.begin(), ids.end());
+  FingerprintPart p{"listed bonds", {}, 0, 1, "bonds in the bond CSV", {}};
+  for (const auto& [i, j] : ids) p.items.push_back(hash_of(i, j));
+  p.label = [ids = std::move(ids)](std::size_t k) {
+    return "the bond between ids " + std::to_string(ids[k].first) + " and " + std::to_string(ids[k].second);
+  };
+  return p;
 }
 
 }  // namespace
@@ -356,47 +288,11 @@ SceneFingerprint fingerprint_scene(const Scene& scene) {
   f.parts.push_back(physics_part(prm));
   f.parts.push_back(integration_part(prm.time));
   f.parts.push_back(open_boundaries_part(prm));
-  return f;
-}
-
-void save_fingerprint(BinaryWriter& w, const SceneFingerprint& f) {
-  w.value<std::uint64_t>(f.parts.size());
-  for (const FingerprintPart& p : f.parts) {
-    w.string(p.name);
-    w.value<std::uint64_t>(p.fixed);
-    w.value<std::uint64_t>(p.per_entry);
-    w.vector(p.items);
-  }
-}
-
-SceneFingerprint load_fingerprint(BinaryReader& r) {
-  SceneFingerprint f;
-  const auto n = r.value<std::uint64_t>();
-  for (std::uint64_t k = 0; k < n; ++k) {
-    FingerprintPart p;
-    p.name = r.string();
-    p.fixed = r.value<std::uint64_t>();
-    p.per_entry = r.value<std::uint64_t>();
-    p.items = r.vector<std::uint64_t>();
-    f.parts.push_back(std::move(p));
+  if (prm.bonds.enabled()) {
+    f.parts.push_back(bonds_part(prm.bonds));
+    f.parts.push_back(listed_bonds_part(prm.bonds));
   }
   return f;
-}
-
-std::string fingerprint_difference(const SceneFingerprint& checkpoint, const SceneFingerprint& scene) {
-  std::vector<std::string> differ;
-  for (const FingerprintPart& sc : scene.parts) {
-    const auto ck = std::find_if(checkpoint.parts.begin(), checkpoint.parts.end(),
-                                 [&](const FingerprintPart& p) { return p.name == sc.name; });
-    if (ck == checkpoint.parts.end()) differ.push_back(sc.name + " (not in the checkpoint)");
-    else if (std::string d = part_difference(*ck, sc); !d.empty()) differ.push_back(std::move(d));
-  }
-  std::string s;
-  for (std::size_t k = 0; k < differ.size(); ++k) {
-    if (k > 0) s += k + 1 == differ.size() ? " and " : ", ";
-    s += differ[k];
-  }
-  return s;
 }
 
 }  // namespace mpdem

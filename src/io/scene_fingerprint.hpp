@@ -11,6 +11,8 @@
 //   physics            [analysis], gravity, [fields], [near_field], [thermal] per key
 //   time integration   time.integrator, time.phi, time.adaptive
 //   inlets and sinks   each [[inlet]] and [[sink]] entry (all its keys)
+//   bonds              [bonds] per key, each [[bonds.pair]] entry (only when [bonds] is given)
+//   listed bonds       each bond of the bond CSV, as its two ids (only when [bonds] is given)
 // What is not here (time.duration, time.dt and the step controls, [tolerance], neighbor.skin,
 // domain.on_exit, [output], [checks], the command's options) may be edited on resume.
 #include <cstddef>

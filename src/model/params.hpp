@@ -15,6 +15,7 @@
 
 #include "analysis/coarse_grain.hpp"
 #include "core/vec3.hpp"
+#include "model/bond_params.hpp"
 #include "model/liquid_bridge.hpp"
 #include "model/open_boundaries.hpp"
 
@@ -172,6 +173,7 @@ struct OutputParams {
   double barriers_every = 0.0;      // s between barrier VTU (0 = off)
   double particle_csv_every = 0.0;  // s between particle CSV snapshots (0 = off)
   double body_csv_every = 0.0;      // s between body CSV snapshots of the clumps' bodies (0 = off)
+  double bonds_every = 0.0;         // s between bond VTU snapshots (0 = off; only with [bonds])
   double barrier_log_every = 0.0;   // s between barrier-group log rows (0 = off)
   int log_every = 100;              // steps between global log rows (>= 1)
   int checkpoint_every = 0;         // steps between checkpoints (0 = off)
@@ -226,6 +228,7 @@ struct Params {
   OutputParams output;
   CheckParams checks;
   ParallelParams parallel;
+  BondParams bonds;                           // [bonds], [[bonds.pair]], the bond CSV
   std::vector<InletSpec> inlets;              // [[inlet]] entries, in scene order
   std::vector<SinkSpec> sinks;                // [[sink]] entries, in scene order
   std::vector<CoarseGrainSpec> coarse_grain;  // [[coarse_grain]] entries, in scene order

@@ -28,6 +28,7 @@ GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
                                  const std::vector<std::string>& open_system_columns) {
   thermal_ = model.params.analysis.thermal;
   bodies_ = !model.clumps.empty();
+  bonds_ = model.params.bonds.enabled();
   const bool driven = std::any_of(barriers.motion.begin(), barriers.motion.end(),
                                   [](const MotionLaw& m) { return !m.is_static(); });
   const bool cohesion = has_cohesion(model);
@@ -40,6 +41,7 @@ GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
       case StatLogged::thermal: logged_[k] = thermal_; break;
       case StatLogged::dissipative_field: logged_[k] = dissipative_fields(model.params.fields); break;
       case StatLogged::cohesion: logged_[k] = cohesion; break;
+      case StatLogged::bonds: logged_[k] = model.params.bonds.enabled(); break;
     }
   }
   columns_ = {"step",         "time",      "dt",     "iterations", "evaluations", "evaluations_total",
@@ -50,6 +52,7 @@ GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
       if (logged_[k] && kStats[k].slot == slot) columns_.push_back(kStats[k].column);
   };
   stat_columns(StatSlot::counts);
+  if (bonds_) columns_.push_back("bonds_broken_interval");  // after bonds_broken, the last count
   for (const char* c : {"kinetic", "rotational", "potential"}) columns_.push_back(c);
   stat_columns(StatSlot::energies);
   stat_columns(StatSlot::supplied);  // taken off total_energy
@@ -79,6 +82,7 @@ std::vector<double> GlobalLogLayout::values(const GlobalLogRow& r, const Particl
     });
   };
   stat_values(StatSlot::counts);
+  if (bonds_) row.push_back(static_cast<double>(s.bonds_broken - r.bonds_broken_before));
   row.push_back(e.kinetic);
   row.push_back(e.rotational);
   row.push_back(e.potential + t.electric);  // J, gravitational + electric

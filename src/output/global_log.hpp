@@ -25,6 +25,8 @@ struct GlobalLogRow {
   std::size_t removed_total = 0;
   // The inlets' and sinks' columns (Inlets::log_columns, Sinks::log_columns), in that order.
   std::vector<double> open_system;
+  // The bonds broken as of the previous log row (with [bonds]: bonds_broken_interval counts from it).
+  std::uint64_t bonds_broken_before = 0;
 };
 
 // The sums over the particles in a global log row; on several ranks each rank's, summed over them.
@@ -56,6 +58,7 @@ class GlobalLogLayout {
   std::array<bool, kStatCount> logged_{};
   bool thermal_ = false;  // log the thermal energy (after the heat exchanged with the outside)
   bool bodies_ = false;   // log the clumps' bodies and members (a scene with clump templates)
+  bool bonds_ = false;    // log the bonds broken in the interval (a scene with [bonds])
 };
 
 }  // namespace mpdem

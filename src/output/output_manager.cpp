@@ -12,6 +12,8 @@
 
 #include "core/atomic_file.hpp"
 #include "io/body_csv_writer.hpp"
+#include "io/bond_vtu_writer.hpp"
+#include "output/bond_cells.hpp"
 #include "io/csv_log.hpp"
 #include "io/particle_csv_writer.hpp"
 #include "io/pvd_index.hpp"
@@ -64,6 +66,8 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
   particles_csv_.every = o.particle_csv_every;
   barrier_log_.every = o.barrier_log_every;
   bodies_csv_.every = model.clumps.empty() ? 0.0 : o.body_csv_every;
+  const bool bonds = model.params.bonds.enabled();
+  bonds_vtu_.every = bonds ? o.bonds_every : 0.0;
   fs::create_directories(dir_);
   if (particles_vtu_.every > 0.0) {
     fs::create_directories(dir_ / "particles");
@@ -75,7 +79,12 @@ OutputManager::OutputManager(const Model& model, fs::path dir, const Barriers& b
   }
   if (particles_csv_.every > 0.0) fs::create_directories(dir_ / "particles_csv");
   if (bodies_csv_.every > 0.0) fs::create_directories(dir_ / "bodies_csv");
+  if (bonds_vtu_.every > 0.0) {
+    fs::create_directories(dir_ / "bonds");
+    bonds_pvd_ = pvd(dir_ / "bonds.pvd");
+  }
   log_ = log(dir_ / "log.csv", log_layout_.columns());
+  if (bonds) bonds_broken_ = log(dir_ / "bonds_broken.csv", {"time", "id_i", "id_j", "mode", "sigma_max", "tau_max"});
   group_count_ = barriers.group_names.size();
   if (barrier_log_.every > 0.0 && group_count_ > 0) {
     std::vector<std::string> cols{"time"};
@@ -100,6 +109,10 @@ void OutputManager::save(BinaryWriter& w) const {
   vtu_means_.save(w);
   log_means_.save(w);
   if (bodies_csv_.every > 0.0) w.value(bodies_csv_);
+  if (model_.params.bonds.enabled()) {
+    w.value(bonds_vtu_);
+    w.value(bonds_broken_logged_);
+  }
 }
 
 void OutputManager::restore(BinaryReader& r) {
@@ -110,10 +123,18 @@ void OutputManager::restore(BinaryReader& r) {
   }
   vtu_means_.restore(r);
   log_means_.restore(r);
-  if (!r.at_end()) {  // the body CSV series of a run that wrote one (save)
+  const bool bonds = model_.params.bonds.enabled();
+  // The body CSV series of a run that wrote one (save): what is left before the bonds' state.
+  if (!r.at_end() && (!bonds || bodies_csv_.every > 0.0)) {
     const double every = bodies_csv_.every;
     bodies_csv_ = r.value<Series>();
     bodies_csv_.every = every;
+  }
+  if (bonds && !r.at_end()) {
+    const double every = bonds_vtu_.every;
+    bonds_vtu_ = r.value<Series>();
+    bonds_vtu_.every = every;
+    bonds_broken_logged_ = r.value<std::uint64_t>();
   }
 }
 
@@ -146,11 +167,14 @@ ParticleSnapshotsDue OutputManager::particles_due(double t, double dt, bool forc
   d.vtu = particles_pvd_ && due(vtu, t, dt, end, force);
   d.csv = csv.every > 0.0 && due(csv, t, dt, end, force);
   d.body_csv = bodies.every > 0.0 && due(bodies, t, dt, end, force);
+  Series bonds = bonds_vtu_;
+  d.bonds = bonds_pvd_ && due(bonds, t, dt, end, force);
   if (d.vtu) d.vtu_index = vtu.count - 1;
   return d;
 }
 
-void OutputManager::snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force) {
+void OutputManager::snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force,
+                              std::span<const BondRecord> bonds) {
   const double end = model_.params.time.duration;
   if (particles_pvd_ && due(particles_vtu_, t, dt, end, force)) {
     const std::uint64_t index = particles_vtu_.count - 1;
@@ -183,6 +207,12 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
   if (bodies_csv_.every > 0.0 && due(bodies_csv_, t, dt, end, force))
     write_bodies_csv(dir_ / fmt::format("bodies_csv/bodies_{:06d}.csv", bodies_csv_.count - 1), p.bodies, model_.clumps,
                      t);
+  if (bonds_pvd_ && due(bonds_vtu_, t, dt, end, force)) {
+    const std::string name = fmt::format("bonds/bonds_{:06d}.vtu", bonds_vtu_.count - 1);
+    write_bonds_vtu(dir_ / name, bond_cells(bonds, p, PeriodicImages(model_.params.domain).period()), t,
+                    model_.params.output.format);
+    bonds_pvd_->add(t, name);
+  }
   if (groups_ && due(barrier_log_, t, dt, end, force)) {
     const BarrierLoads l = means ? log_means_.mean(b) : current_loads(b);
     log_means_.clear();
@@ -209,7 +239,10 @@ void OutputManager::snapshots(double t, double dt, const Particles& p, const Bar
 }
 
 void OutputManager::global_log(const GlobalLogRow& r, const ParticleTotals& t, const InteractionStats& s) {
-  log_->row(log_layout_.values(r, t, s));
+  GlobalLogRow row = r;
+  row.bonds_broken_before = bonds_broken_logged_;
+  log_->row(log_layout_.values(row, t, s));
+  bonds_broken_logged_ = s.bonds_broken;
 }
 
 std::unique_ptr<CsvLog> OutputManager::open_on_first_row(const char* name, std::vector<std::string> columns) const {
@@ -225,6 +258,20 @@ void OutputManager::removed(std::int64_t id, double t, const Vec3& x) {
   removed_->row(row);
 }
 
+void OutputManager::bond_breaks(std::span<const BondBreak> breaks) {
+  if (!bonds_broken_) return;
+  for (const BondBreak& k : breaks) {
+    std::string fields[6];
+    append_csv_number(fields[0], k.time);
+    append_csv_number(fields[1], static_cast<double>(k.id_i));
+    append_csv_number(fields[2], static_cast<double>(k.id_j));
+    fields[3] = k.mode == BondBreakMode::tension ? "tension" : "shear";
+    append_csv_number(fields[4], k.sigma);
+    append_csv_number(fields[5], k.tau);
+    bonds_broken_->text_row(fields);
+  }
+}
+
 void OutputManager::balance(const BalanceRow& r) {
   if (!balance_) balance_ = open_on_first_row("balance.csv", {"time", "step", "ranks", "imbalance", "moved"});
   const double row[] = {r.time, static_cast<double>(r.step), static_cast<double>(r.ranks), r.imbalance,
@@ -237,6 +284,7 @@ void OutputManager::flush() {
   if (groups_) groups_->flush();
   if (removed_) removed_->flush();
   if (balance_) balance_->flush();
+  if (bonds_broken_) bonds_broken_->flush();
 }
 
 }  // namespace mpdem

@@ -1,14 +1,16 @@
 #pragma once
 // OutputManager: decides when each output is due and writes it - particle and barrier VTU
 // series with their .pvd indexes, particle CSV snapshots, body CSV snapshots of the clumps, the
-// global log and the barrier-group log. Intervals are in simulated seconds (the global log: in steps). docs/output.md
-// lists every file and column. On several ranks rank 0 alone has one; the ranks write the pieces of each particle VTU
-// snapshot themselves (io/pvtu_writer.hpp) and this writes their .pvtu index.
+// global log and the barrier-group log, and with [bonds] the bond VTU series and bonds_broken.csv. Intervals are in
+// simulated seconds (the global log: in steps). docs/output.md lists every file and column. On several ranks rank 0
+// alone has one; the ranks write the pieces of each particle VTU snapshot themselves (io/pvtu_writer.hpp) and this
+// writes their .pvtu index.
 #include <type_traits>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@
 #include "model/scene.hpp"
 #include "integrate/energy_balance.hpp"
 #include "interact/interactions.hpp"
+#include "contact/bonds.hpp"
 
 namespace mpdem {
 
@@ -36,6 +39,10 @@ struct ParticleSnapshotsDue {
   std::uint64_t vtu_index = 0;  // -, its counter NNNNNN in the file names, when vtu
   // A body CSV snapshot (the clumps' bodies; on several ranks gathered with the particles).
   bool body_csv = false;
+  // A bond VTU snapshot (on several ranks: the bonds and the particles gathered).
+  bool bonds = false;
+  // Whether the particles are needed whole on rank 0 (gathered on several ranks).
+  bool gather() const { return csv || body_csv || bonds; }
 };
 
 class OutputManager {
@@ -55,8 +62,10 @@ class OutputManager {
   // end of the run, which is written at the final time even when a periodic snapshot falls within
   // half a step of it). With pieces > 1 a due particle VTU snapshot is written as its .pvtu index
   // (the ranks have written its pieces), and p is read for the CSV snapshots only (p.bodies: the
-  // body CSV's).
-  void snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force);
+  // body CSV's). bonds: every bond (on several ranks gathered; p then holds all their particles),
+  // for the bond VTU.
+  void snapshots(double t, double dt, const Particles& p, const Barriers& b, bool force,
+                 std::span<const BondRecord> bonds = {});
   // After every accepted step of length h (s): its end-of-step barrier loads enter the means
   // that the barrier outputs write ([output] barrier_loads = "mean").
   void accumulate_barrier_loads(const Barriers& b, double h);
@@ -65,6 +74,10 @@ class OutputManager {
   // several ranks writes the pieces of a VTU snapshot and gathers its particles for a CSV one.
   ParticleSnapshotsDue particles_due(double t, double dt, bool force) const;
   void removed(std::int64_t id, double t, const Vec3& x);
+  // Rows of bonds_broken.csv (one per break, as given).
+  void bond_breaks(std::span<const BondBreak> breaks);
+  // The cumulative bonds_broken at the last log.csv row (its bonds_broken_interval counts from it).
+  std::uint64_t bonds_broken_logged() const { return bonds_broken_logged_; }
   // A load-balance measurement of a run on several ranks: a row of balance.csv.
   struct BalanceRow {
     double time = 0.0;  // s
@@ -102,8 +115,12 @@ class OutputManager {
   // The body CSV series: on only in a scene with clump templates; checkpointed after the others
   // only then, so that the output state of a scene of spheres keeps its bytes.
   Series bodies_csv_;
-  std::unique_ptr<PvdIndex> particles_pvd_, barriers_pvd_;
-  std::unique_ptr<CsvLog> log_, groups_, removed_, balance_;
+  // The bond VTU series and the bonds broken as of the last log row: with [bonds] only,
+  // checkpointed last, then.
+  Series bonds_vtu_;
+  std::uint64_t bonds_broken_logged_ = 0;
+  std::unique_ptr<PvdIndex> particles_pvd_, barriers_pvd_, bonds_pvd_;
+  std::unique_ptr<CsvLog> log_, groups_, removed_, balance_, bonds_broken_;
   // dir_/name for the rows of this run: replaced, or after a resume kept up to its time and appended to.
   std::unique_ptr<CsvLog> open_on_first_row(const char* name, std::vector<std::string> columns) const;
   std::size_t group_count_ = 0;

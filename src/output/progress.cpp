@@ -21,7 +21,8 @@ void Progress::print_line(const std::string& line) {
 }
 
 void Progress::update(double sim_time, std::uint64_t steps, std::size_t contacts, std::size_t particles,
-                      double imbalance, std::optional<std::uint64_t> bridges) {
+                      double imbalance, std::optional<std::uint64_t> bridges,
+                      std::optional<std::array<std::uint64_t, 2>> bonds) {
   if (!enabled_) return;
   const auto now = Clock::now();
   if ((removal_lines_ > 0 || held_ > 0) &&
@@ -41,6 +42,7 @@ void Progress::update(double sim_time, std::uint64_t steps, std::size_t contacts
   std::string line = fmt::format("t = {:.6g} s  {:5.1f}%  {:.4g} steps/s  ETA {:.0f} s  contacts {}", sim_time,
                                  100.0 * frac, rate, eta, contacts);
   if (bridges) line += fmt::format("  bridges {}", *bridges);
+  if (bonds) line += fmt::format("  bonds {} ({} broken)", (*bonds)[0], (*bonds)[1]);
   line += fmt::format("  particles {}", particles);
   if (imbalance > 0.0) line += fmt::format("  imbalance {:.2f}", imbalance);
   if (tty_) {

@@ -3,6 +3,7 @@
 // one line is redrawn in place a few times a second; otherwise (a log file, CI) a plain line
 // is printed every `plain_every` seconds of wall time. Removed particles are reported here too,
 // a few lines per such interval at most: a pour can remove thousands.
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -20,8 +21,10 @@ class Progress {
            std::uint64_t start_steps = 0);
   // imbalance: several ranks, max / mean cost per rank (Interactions::imbalance; 0: not shown).
   // bridges: the liquid bridges held, shown after the contacts (a scene with cohesion; none: not shown).
+  // bonds: the bonds intact and broken so far (a scene with [bonds]; none: not shown).
   void update(double sim_time, std::uint64_t steps, std::size_t contacts, std::size_t particles, double imbalance = 0.0,
-              std::optional<std::uint64_t> bridges = std::nullopt);
+              std::optional<std::uint64_t> bridges = std::nullopt,
+              std::optional<std::array<std::uint64_t, 2>> bonds = std::nullopt);
   // A particle removed at the domain boundary at sim_time (s); removed_total counts the whole run.
   void removed(std::int64_t id, double sim_time, std::size_t removed_total);
   void finish(double sim_time, std::uint64_t steps);

@@ -13,6 +13,7 @@
 #include "core/input_error.hpp"
 #include "python/barrier_groups.hpp"
 #include "python/body_arrays.hpp"
+#include "python/bond_arrays.hpp"
 #include "python/particle_arrays.hpp"
 #include "python/py_simulation.hpp"
 #include "core/run_error.hpp"
@@ -139,6 +140,11 @@ PYBIND11_MODULE(_core, m) {
             s.state_changed();
           },
           py::arg("name"), py::arg("values"), py::arg("ids") = py::none())
+      .def("bond_arrays", [](PySimulation& s) { return python::bond_arrays(s.engine()); })
+      .def("new_bond_breaks", [](PySimulation& s) { return python::new_bond_breaks(s.engine()); })
+      .def(
+          "add_bond", [](PySimulation& s, std::int64_t a, std::int64_t b) { s.engine().add_bond(a, b); },
+          py::arg("id_i"), py::arg("id_j"))
       .def_property_readonly("body_count", [](PySimulation& s) { return s.engine().particles().bodies.size(); })
       .def("body_get",
            [](PySimulation& s, const std::string& name) {

@@ -35,6 +35,7 @@ RunOptions run_options(const SimulationOptions& o) {
   r.write_output = o.write_output;
   r.comm = &Communicator::single();  // one process: the module does not start MPI
   r.stop_on_signal = false;          // Python keeps its own handlers; check_signals asks them
+  r.keep_bond_breaks = true;         // sim.bonds.new_breaks()
   return r;
 }
 

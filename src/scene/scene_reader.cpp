@@ -28,7 +28,9 @@
 #include "model/material_variants.hpp"
 #include "model/scene.hpp"
 #include "generate/generated_particles.hpp"
+#include "scene/bond_reader.hpp"
 #include "scene/clump_reader.hpp"
+#include "scene/input_paths.hpp"
 
 namespace mpdem {
 
@@ -166,14 +168,6 @@ void read_near_field(const TomlSection& root, const Model& model, NearFieldParam
     s->fail("cutoff", "expected a cutoff > 0 when the empirical or Coulomb near field is on");
 }
 
-std::filesystem::path existing_file(const TomlSection& s, std::string_view k, const std::filesystem::path& dir) {
-  const std::string name = s.require(s.string(k), k);
-  if (name.empty()) s.fail(k, "expected a file name, got an empty string");
-  std::filesystem::path p = (dir / std::filesystem::path(name)).lexically_normal();
-  if (const std::string why = input_file_problem(p); !why.empty()) s.fail(k, "file '" + p.string() + "' " + why);
-  return p;
-}
-
 void read_sources(const TomlSection& root, const toml::table& doc, Scene& scene) {
   std::size_t entry = 0;
   for (const TomlSection& s : root.tables("particles", {"file", "generate", "material", "fixed", "clump"})) {
@@ -285,9 +279,10 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     s->get("energy_jump", p.checks.energy_jump, kNonNegative);
     s->get("energy_drift", p.checks.energy_drift, kNonNegative);  // checked once, at the end of the run
   }
-  if (const auto s = root.table("output", {"dir", "particles_every", "barriers_every", "particle_csv_every",
-                                           "barrier_log_every", "log_every", "checkpoint_every", "progress_every",
-                                           "format", "contacts_every", "barrier_loads", "body_csv_every"})) {
+  if (const auto s = root.table("output",
+                                {"dir", "particles_every", "barriers_every", "particle_csv_every", "barrier_log_every",
+                                 "log_every", "checkpoint_every", "progress_every", "format", "contacts_every",
+                                 "barrier_loads", "body_csv_every", "bonds_every"})) {
     s->get("dir", p.output.dir);
     if (p.output.dir.empty()) s->fail("dir", "expected a non-empty folder name");
     for (const auto& part : std::filesystem::path(p.output.dir))  // each a name in the file system
@@ -301,6 +296,7 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
     s->get("barriers_every", p.output.barriers_every, kNonNegative);
     s->get("particle_csv_every", p.output.particle_csv_every, kNonNegative);
     s->get("body_csv_every", p.output.body_csv_every, kNonNegative);
+    s->get("bonds_every", p.output.bonds_every, kNonNegative);
     s->get("barrier_log_every", p.output.barrier_log_every, kNonNegative);
     s->get("log_every", p.output.log_every, 1);
     s->get("checkpoint_every", p.output.checkpoint_every, 0);
@@ -340,10 +336,11 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& fil
   Scene scene;
   scene.file = std::filesystem::absolute(file).lexically_normal();
   scene.dir = scene.file.parent_path();
-  const TomlSection root(
-      name, doc, "", {"time",    "tolerance", "analysis",  "gravity",  "fields",       "near_field", "contact",
-                      "thermal", "material",  "particles", "barriers", "domain",       "neighbor",   "output",
-                      "checks",  "inlet",     "sink",      "parallel", "coarse_grain", "clump",      "liquid_bridge"});
+  const TomlSection root(name, doc, "",
+                         {"time",         "tolerance", "analysis",      "gravity",   "fields",   "near_field",
+                          "contact",      "thermal",   "material",      "particles", "barriers", "domain",
+                          "neighbor",     "output",    "checks",        "inlet",     "sink",     "parallel",
+                          "coarse_grain", "clump",     "liquid_bridge", "bonds"});
   Params& p = scene.model.params;
   read_time(root, p.time);
   read_tolerance(root, p.tolerance);
@@ -352,6 +349,7 @@ Scene parse_scene_text(const std::string& text, const std::filesystem::path& fil
   read_clump_templates(root, scene.dir, scene.model);
   read_contact_and_thermal(root, scene.model, p);
   read_near_field(root, scene.model, p.near_field);
+  read_bonds(root, scene.dir, scene.model);
   read_sources(root, doc, scene);
   read_inlets_and_sinks(root, doc, scene.model);
   read_domain_neighbor_output(root, p);
@@ -394,6 +392,7 @@ Scene load_sources(Scene scene) {
     src.count = scene.barriers.size() - src.first;
   }
   resolve_material_variants(scene.model, scene.particles, scene.barriers, scene.file.string());
+  check_listed_bonds(scene);
   // neighbor.skin stays 0 when [neighbor] gives none: the engine derives it from the radii.
   return scene;
 }

@@ -169,7 +169,8 @@ double Simulation::energy_balance(const HealthScan& s) const {
 
 void Simulation::record_state(const HealthScan& s) {
   const double balance = energy_balance(s);
-  const double active = active_energy(s.energy, stats().elastic_energy, stats().elastic_magnitude);
+  const double active = active_energy(s.energy, stats().elastic_energy + stats().bond_energy,
+                                      stats().elastic_magnitude);
   if (!record_.started) {
     record_.start_balance = balance;
     record_.start_active = active;
@@ -234,6 +235,7 @@ ParticleTotals Simulation::totals() const {
 
 std::vector<std::pair<std::string, double>> Simulation::log_values() const {
   GlobalLogRow row{steps_, time_, dt_, &last_, evaluations_, redone_, removed_, {}};
+  row.bonds_broken_before = output_ ? output_->bonds_broken_logged() : 0;
   if (inlets_) inlets_->log_values(row.open_system);
   if (sinks_) {  // a copy: the sinks' rates are measured between rows of the log file
     Sinks copy = *sinks_;
@@ -248,16 +250,19 @@ std::vector<std::pair<std::string, double>> Simulation::log_values() const {
 
 void Simulation::snapshots(double h, bool force) {
   if (!comm_) {
-    output_->snapshots(time_, h, scene_.particles, scene_.barriers, force);
+    const Bonds* bonds = interactions_->bonds();
+    output_->snapshots(time_, h, scene_.particles, scene_.barriers, force,
+                       bonds ? bonds->records() : std::span<const BondRecord>{});
     return;
   }
   const ParticleSnapshotsDue due = particles_due(h, force);
   // A VTU snapshot: every rank writes its piece, rank 0 their .pvtu index (output_->snapshots). A
-  // CSV snapshot gathers the particles to rank 0. The barriers are the same on every rank (their
-  // loads summed): rank 0 writes them as they are.
+  // CSV or bond snapshot gathers the particles (and the bonds) to rank 0. The barriers are the same
+  // on every rank (their loads summed): rank 0 writes them as they are.
   if (due.vtu) write_piece(due.vtu_index);
-  const Particles all = due.csv || due.body_csv ? gathered() : Particles{};
-  if (output_) output_->snapshots(time_, h, all, scene_.barriers, force);
+  const Particles all = due.gather() ? gathered() : Particles{};
+  const std::vector<BondRecord> bonds = due.bonds ? gathered_bonds() : std::vector<BondRecord>{};
+  if (output_) output_->snapshots(time_, h, all, scene_.barriers, force, bonds);
 }
 
 RunSummary Simulation::run() {
@@ -289,6 +294,7 @@ void Simulation::start() {
     }
   }
   initialize();
+  collect_bond_breaks(false);
   if (out && !resumed_) {
     snapshots(prm.time.dt, true);
     log_row({0, time_, prm.time.dt, nullptr, evaluations_, 0, removed_, {}});
@@ -322,6 +328,7 @@ void Simulation::step(double end) {
   if (adaptive) last_ = advance_adaptive(cut ? left : std::max(left, whole));
   else last_ = advance(planned);
   const double h = last_h_;
+  collect_bond_breaks(false);
   if (output_) output_->accumulate_barrier_loads(scene_.barriers, h);
   if (out) {
     // The step that reaches the run's end writes the end's snapshots (finish() finds them
@@ -343,7 +350,9 @@ void Simulation::step(double end) {
   }
   const auto& st = stats();
   progress_->update(time_, steps_, st.contacts_pp + st.contacts_pb, particle_count(), interactions_->imbalance(),
-                    interactions_->cohesive() ? std::optional<std::uint64_t>(st.bridges) : std::nullopt);
+                    interactions_->cohesive() ? std::optional<std::uint64_t>(st.bridges) : std::nullopt,
+                    interactions_->bonds() ? std::optional(std::array{st.bonds_intact, st.bonds_broken})
+                                           : std::nullopt);
   if ((inlets_ || sinks_) && progress_->summary_due()) progress_->summary(open_system_summary());
   const auto every = static_cast<std::uint64_t>(prm.output.checkpoint_every);
   const std::filesystem::path dir = output_dir_for(scene_, options_);
@@ -371,6 +380,7 @@ void Simulation::flush_outputs() {
 RunSummary Simulation::finish() {
   start();
   const Params& prm = scene_.model.params;
+  collect_bond_breaks(true);
   if (options_.write_output) {
     snapshots(prm.time.dt, true);
     if (steps_ % static_cast<std::uint64_t>(prm.output.log_every) != 0)

@@ -20,6 +20,7 @@
 #include "sim/step_collective.hpp"
 #include "parallel/communicator.hpp"
 #include "interact/interactions.hpp"
+#include "contact/bonds.hpp"
 
 namespace mpdem {
 
@@ -41,6 +42,8 @@ struct RunOptions {
   // SIGINT / SIGTERM stop the run cleanly after the current step (a checkpoint, then Interrupted).
   // false: the caller handles signals (the Python module asks Python's handlers between steps).
   bool stop_on_signal = true;
+  // Keep the bonds' breaks for take_bond_breaks (the Python module); else only bonds_broken.csv has them.
+  bool keep_bond_breaks = false;
 };
 
 // Output folder of a run: options.output_dir, else the scene's [output] dir relative to the scene.
@@ -89,6 +92,12 @@ class Simulation {
   void add_particles(Particles fresh);
   void remove_particles(const std::vector<std::int64_t>& ids);
   std::int64_t next_free_id() const;  // one more than the largest id used by a particle or inlet
+  // Parallel bonds between steps, on one rank (sim/simulation_bonds.cpp). add_bond bonds the
+  // particles of ids a != b at their present positions (InputError: no [bonds], an unknown id,
+  // a == b, a pair bonded already). take_bond_breaks: the breaks since the last call, in the
+  // order of bonds_broken.csv (with RunOptions::keep_bond_breaks; else none).
+  void add_bond(std::int64_t a, std::int64_t b);
+  std::vector<BondBreak> take_bond_breaks();
   // The global log's quantities now, by column name as in log.csv (collective on several ranks).
   std::vector<std::pair<std::string, double>> log_values() const;
 
@@ -171,6 +180,12 @@ class Simulation {
   void keep_own(Particles& fresh) const;
   std::size_t particle_count() const { return comm_ ? step_collective_.particles : scene_.particles.size(); }
   void snapshots(double h, bool force);  // the snapshot outputs due after a step of h (s)
+  // Every rank's bonds in id order on rank 0 (collective; empty on the other ranks).
+  std::vector<BondRecord> gathered_bonds() const;
+  // The bonds' breaks recorded since the last call, in (time, ids) order, written to
+  // bonds_broken.csv and kept for take_bond_breaks. Several ranks: collective; gathered on rank 0
+  // when the last reduce_step counted any, or always with `always`.
+  void collect_bond_breaks(bool always);
   // The lowest id of a particle with a non-finite state and the rank holding it, on every rank
   // (collective); id -1 if none.
   std::pair<std::int64_t, int> first_nonfinite() const;
@@ -214,8 +229,9 @@ class Simulation {
   double last_active_ = 0.0;     // J, active_energy (kinetic + rotational + |elastic|) after the previous step
   bool energy_checked_ = false;  // last_balance_ / last_active_ are set
   std::size_t removed_ = 0;
-  std::uint64_t balance_rows_ = 0;  // load-balance measurements written to balance.csv
-  RunRecord record_;                // for the end-of-run summary
+  std::uint64_t balance_rows_ = 0;      // load-balance measurements written to balance.csv
+  std::vector<BondBreak> bond_breaks_;  // collected since the last take_bond_breaks (keep_bond_breaks)
+  RunRecord record_;                    // for the end-of-run summary
   bool initialized_ = false;
   bool started_ = false;                     // start() ran: outputs open, first snapshots written
   StepReport last_;                          // the report of the last step()

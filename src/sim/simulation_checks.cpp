@@ -19,7 +19,7 @@ void Simulation::check_energy(const HealthScan& s) {
   if (!(prm.checks.energy_jump > 0.0) || prm.near_field.cutoff > 0.0) return;
   const ParticleEnergy& e = s.energy;
   const double balance = energy_balance(s);
-  const double active = active_energy(e, stats().elastic_energy, stats().elastic_magnitude);
+  const double active = active_energy(e, stats().elastic_energy + stats().bond_energy, stats().elastic_magnitude);
   if (energy_checked_) {
     const double rise = balance - last_balance_;
     // Round-off of the balance is relative to its largest term.

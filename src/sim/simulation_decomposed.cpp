@@ -49,6 +49,7 @@ void Simulation::decompose(const Communicator& comm) {
     for (const ClumpMember& m : scene_.model.clumps[static_cast<std::size_t>(p.bodies.clump[b])].members())
       member_reach = std::max(member_reach, norm(m.x));
   keep_owned(grid, p, comm.rank());
+  interactions_->keep_owned_bonds(p);
   comm_ = &comm;
   interactions_->decompose(comm, grid, 2.0 * member_reach);
   trapezoidal_.set_communicator(&comm);
@@ -95,7 +96,9 @@ const StepCollective& Simulation::reduce_step(const HealthScan& s, double h) {
     t.csv = due.csv;
     t.vtu_index = due.vtu_index;
     t.body_csv = due.body_csv;
+    t.bonds = due.bonds;
   }
+  if (const Bonds* b = interactions_->bonds()) t.bond_breaks = b->breaks().size();
   const bool loads = interactions_->barrier_loads_pending();
   if (loads) t.loads = interactions_->barrier_loads(scene_.barriers);
   t = combine_over_ranks(*comm_, t);
@@ -165,17 +168,19 @@ ParticleSnapshotsDue Simulation::particles_due(double h, bool force) {
   const bool decided = !force && snapshots_h_ >= 0.0 && snapshots_h_ == h && snapshots_time_ == time_;
   snapshots_h_ = -1.0;
   if (decided)
-    return {step_collective_.vtu, step_collective_.csv, step_collective_.vtu_index, step_collective_.body_csv};
+    return {step_collective_.vtu, step_collective_.csv, step_collective_.vtu_index, step_collective_.body_csv,
+            step_collective_.bonds};
   ParticleSnapshotsDue due;
   if (output_) due = output_->particles_due(time_, h, force);
-  const std::uint64_t fields[] = {due.vtu ? 1u : 0u, due.csv ? 1u : 0u, due.vtu_index, due.body_csv ? 1u : 0u};
+  const std::uint64_t fields[] = {due.vtu ? 1u : 0u, due.csv ? 1u : 0u, due.vtu_index, due.body_csv ? 1u : 0u,
+                                  due.bonds ? 1u : 0u};
   std::vector<std::byte> bytes(sizeof fields);
   std::memcpy(bytes.data(), fields, sizeof fields);
   comm_->broadcast(bytes, 0);
-  std::uint64_t got[4] = {};
+  std::uint64_t got[5] = {};
   if (bytes.size() != sizeof got) throw std::runtime_error("truncated snapshot decision");
   std::memcpy(got, bytes.data(), sizeof got);
-  return {got[0] != 0, got[1] != 0, got[2], got[3] != 0};
+  return {got[0] != 0, got[1] != 0, got[2], got[3] != 0, got[4] != 0};
 }
 
 void Simulation::write_piece(std::uint64_t index) {

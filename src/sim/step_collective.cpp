@@ -21,7 +21,8 @@ struct Message {
   std::uint64_t particles;
   OverlapReport deepest;
   std::int64_t stop;
-  std::uint64_t due[4];  // vtu, csv, vtu_index, body_csv
+  std::uint64_t due[5];  // vtu, csv, vtu_index, body_csv, bonds
+  std::uint64_t bond_breaks;
 };
 }  // namespace
 
@@ -44,6 +45,8 @@ StepCollective combine_over_ranks(const Communicator& comm, const StepCollective
   m.due[1] = mine.csv ? 1 : 0;
   m.due[2] = mine.vtu_index;
   m.due[3] = mine.body_csv ? 1 : 0;
+  m.due[4] = mine.bonds ? 1 : 0;
+  m.bond_breaks = mine.bond_breaks;
 
   // The message, then the loads.
   const std::size_t n_loads = mine.loads.size(), each = sizeof m + n_loads * sizeof(double);
@@ -72,6 +75,7 @@ StepCollective combine_over_ranks(const Communicator& comm, const StepCollective
       deepest_rank = r;
     }
     t.stop = std::max(t.stop, x.stop);
+    t.bond_breaks += x.bond_breaks;
   }
 
   StepCollective out = mine;
@@ -86,6 +90,8 @@ StepCollective combine_over_ranks(const Communicator& comm, const StepCollective
   out.csv = t.due[1] != 0;
   out.vtu_index = t.due[2];
   out.body_csv = t.due[3] != 0;
+  out.bonds = t.due[4] != 0;
+  out.bond_breaks = t.bond_breaks;
   out.loads = std::move(loads);
   return out;
 }

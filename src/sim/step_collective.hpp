@@ -24,11 +24,12 @@ struct StepCollective {
   OverlapReport deepest;        // the deepest overlap; rank: the rank that holds it (the lowest on a tie)
   int stop = 0;                 // the stop signal received (0: none), the largest of the ranks'
   // The particle snapshots due after the step (OutputManager::particles_due): rank 0's decision.
-  bool vtu = false, csv = false, body_csv = false;
+  bool vtu = false, csv = false, body_csv = false, bonds = false;
   std::uint64_t vtu_index = 0;
   // Barrier loads still to be summed (Interactions::barrier_loads_pending), 7 per element: summed
   // (the same count on every rank); empty when none.
   std::vector<double> loads;
+  std::uint64_t bond_breaks = 0;  // the bonds' breaks not yet collected (Bonds::breaks), summed
 };
 
 // Every rank's totals combined, the same on every rank. Collective.

@@ -16,6 +16,7 @@
 #include "io/csv_table.hpp"
 #include "sim/simulation.hpp"
 #include "support/dense_granular_scene.hpp"
+#include "support/shell_output.hpp"
 #include "support/temp_dir.hpp"
 
 using namespace mpdem;
@@ -47,15 +48,6 @@ Csv read_csv(const fs::path& f) {
     c.rows.push_back(r);
   }
   return c;
-}
-
-std::string shell(const std::string& cmd) {
-  FILE* pipe = ::popen((cmd + " 2>&1").c_str(), "r");
-  std::string out;
-  char buf[4096];
-  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
-  EXPECT_EQ(::pclose(pipe), 0) << cmd << "\n" << out;
-  return out;
 }
 
 constexpr double kDt = 1e-6;

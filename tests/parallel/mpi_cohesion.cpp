@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <random>
 
 #include "parallel/communicator.hpp"
@@ -19,6 +18,7 @@
 #include "support/cohesive_scenes.hpp"
 #include "support/dense_granular_scene.hpp"
 #include "support/scene_builder.hpp"
+#include "support/rank_deviation.hpp"
 #include "support/shared_temp_dir.hpp"
 
 using namespace mpdem;
@@ -54,25 +54,8 @@ Scene wet_cloud(Integrator integ) {
   return s;
 }
 
-// The largest deviation of `mine` from `ref` by id (x to R, v and w to the largest speed and spin),
-// and how many particles matched, over all ranks (collective).
 std::pair<double, std::uint64_t> deviation(const Communicator& world, const Particles& mine, const Particles& ref) {
-  double vmax = 0.0, wmax = 0.0, worst = 0.0;
-  std::map<std::int64_t, std::size_t> at;
-  for (std::size_t i = 0; i < ref.size(); ++i) {
-    at[ref.id[i]] = i;
-    vmax = std::max(vmax, norm(ref.v[i]));
-    wmax = std::max(wmax, norm(ref.w[i]));
-  }
-  std::uint64_t matched = 0;
-  for (std::size_t i = 0; i < mine.size(); ++i)
-    if (const auto it = at.find(mine.id[i]); it != at.end()) {
-      const std::size_t j = it->second;
-      ++matched;
-      worst = std::max({worst, norm(mine.x[i] - ref.x[j]) / kR, norm(mine.v[i] - ref.v[j]) / vmax,
-                        norm(mine.w[i] - ref.w[j]) / wmax});
-    }
-  return {world.max(worst), world.sum(matched)};
+  return rank_deviation(world, mine, ref, kR);
 }
 
 std::string integrator_name(const ::testing::TestParamInfo<Integrator>& p) {

@@ -74,6 +74,7 @@ std::size_t Bonds::add(const Particles& p, std::size_t a, std::size_t b) {
   bonds_.insert(at, r);
   ii_.clear();  // looked up again at the next evaluation
   jj_.clear();
+  latched_.clear();  // between steps: nothing latched
   return k;
 }
 
@@ -82,6 +83,7 @@ void Bonds::make(const Particles& p) {
   std::sort(bonds_.begin(), bonds_.end(), by_ids);
   ii_.clear();
   jj_.clear();
+  latched_.clear();
 }
 
 std::size_t Bonds::intact() const {
@@ -128,7 +130,10 @@ BondStats Bonds::evaluate(Particles& p, const EvalRequest& req, const Vec3& peri
   const std::size_t n = bonds_.size();
   results_.resize(n);
   acting_.resize(n);
-  stress_.resize(req.commit ? n : 0);
+  stress_.resize(n);
+  // The trapezoidal rule's first iteration of a step (or of its redo) forgets the last attempt's.
+  latched_.resize(n, 0);
+  if (req.iteration == 1) std::fill(latched_.begin(), latched_.end(), std::uint8_t{0});
   const double dt = req.dt, phi = req.phi;
   // J (held), W (dashpots), J (held by the bonds that break now)
   const std::array<double, 3> sums = deterministic_block_sums<3>(
@@ -165,13 +170,21 @@ BondStats Bonds::evaluate(Particles& p, const EvalRequest& req, const Vec3& peri
           const Vec3 ms = carried(r.ms, nrm, spin) - (dth - nrm * dthn) * k.bend;
           const double sigma = bond_tensile_stress(sec, fn, ms), tau = bond_shear_stress(sec, fs, mn);
           const double held = bond_energy(k, fn, fs, mn, ms);
-          if (sigma >= law.tensile_strength || tau >= law.shear_strength) {
+          const bool past = sigma >= law.tensile_strength || tau >= law.shear_strength;
+          // Within a step's iterations a bond once past its strength stays broken for the step:
+          // the iteration then converges to the state without it instead of alternating across
+          // the jump of its force (a fixed point may not exist between the two).
+          if (past && req.iteration > 0 && !latched_[b]) {
+            latched_[b] = 1;
+            stress_[b] = {sigma, tau};
+          }
+          if (past || latched_[b]) {
             // Broken: no force from here on (a trial state past the strength acts neither).
             acting_[b] = kIdle;
             if (req.commit) {
               acting_[b] = kBreaksNow;
               r.intact = 0;
-              stress_[b] = {sigma, tau};
+              if (!latched_[b]) stress_[b] = {sigma, tau};  // else the stresses when it passed
               s[2] += held;
             }
             continue;
@@ -218,6 +231,7 @@ BondStats Bonds::evaluate(Particles& p, const EvalRequest& req, const Vec3& peri
       ++st.broken;
     }
   }
+  if (req.commit) std::fill(latched_.begin(), latched_.end(), std::uint8_t{0});
   st.energy = sums[0];
   st.damping_power = sums[1];
   st.broken_energy = sums[2];
@@ -235,6 +249,7 @@ void Bonds::remove_particles(std::span<const std::int64_t> ids) {
   std::erase_if(bonds_, [&](const BondRecord& r) { return gone.contains(r.id_i) || gone.contains(r.id_j); });
   ii_.clear();
   jj_.clear();
+  latched_.clear();
 }
 
 void Bonds::keep_owned(const Particles& p) {
@@ -242,6 +257,7 @@ void Bonds::keep_owned(const Particles& p) {
   std::erase_if(bonds_, [&](const BondRecord& r) { return !mine.contains(r.id_i); });
   ii_.clear();
   jj_.clear();
+  latched_.clear();
 }
 
 double Bonds::longest() const {
@@ -255,6 +271,7 @@ void Bonds::import_records(std::vector<BondRecord> r) {
   bonds_ = std::move(r);
   ii_.clear();
   jj_.clear();
+  latched_.clear();
 }
 
 void Bonds::save_records(BinaryWriter& o, std::vector<BondRecord> r) {

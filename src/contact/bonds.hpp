@@ -73,6 +73,8 @@ class Bonds {
 
   // Adds the bonds' forces and torques to p (before the ghosts are folded onto their sources);
   // a commit evaluation stores the new state, breaks what reaches its strength and records it.
+  // Within the trapezoidal rule's iterations (req.iteration > 0) a bond whose trial state passed
+  // its strength stays broken for the rest of the step and breaks at its commit.
   // `period`: the domain's period along each axis (0: not periodic), for the minimum image.
   BondStats evaluate(Particles& p, const EvalRequest& req, const Vec3& period);
 
@@ -122,7 +124,10 @@ class Bonds {
   struct Stress {
     double sigma, tau;  // Pa, at a break
   };
-  std::vector<Stress> stress_;        // [bonds] at a commit
+  std::vector<Stress> stress_;        // [bonds] at a break (or when it passed its strength within the step)
+  // [bonds] 1: a trial state of this step's iterations passed the bond's strength; it acts no more
+  // in the step and breaks at the commit (reset by the step's first iteration and by the commit).
+  std::vector<std::uint8_t> latched_;
   std::vector<std::uint8_t> acting_;  // [bonds] 1: the bond's force acts at this evaluation
   std::vector<BondBreak> breaks_;     // since the last take_breaks
 };

@@ -124,7 +124,7 @@ class Bonds {
   struct Stress {
     double sigma, tau;  // Pa, at a break
   };
-  std::vector<Stress> stress_;        // [bonds] at a break (or when it passed its strength within the step)
+  std::vector<Stress> stress_;  // [bonds] at a break (or when it passed its strength within the step)
   // [bonds] 1: a trial state of this step's iterations passed the bond's strength; it acts no more
   // in the step and breaks at the commit (reset by the step's first iteration and by the commit).
   std::vector<std::uint8_t> latched_;

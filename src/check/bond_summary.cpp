@@ -15,12 +15,10 @@ namespace mpdem {
 
 namespace {
 
-// The reduced value of a bond's two particles' masses (kg) or moments of inertia (kg m^2); a held
-// (fixed) one counts as infinitely heavy. A clump member's Particles::mass is its body's.
+// The reduced value of a bond's two particles' masses (kg) or moments of inertia (kg m^2)
+// (physics bond_reduced). A clump member's Particles::mass is its body's.
 double reduced(const std::vector<double>& m, const std::vector<std::uint8_t>& held, std::size_t i, std::size_t j) {
-  if (held[i]) return m[j];
-  if (held[j]) return m[i];
-  return m[i] * m[j] / (m[i] + m[j]);
+  return bond_reduced(m[i], m[j], held[i] != 0, held[j] != 0);
 }
 
 // The materials (base ones, by index) bonded to no material at all, by [[bonds.pair]] bonded = false.

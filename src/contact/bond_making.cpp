@@ -8,6 +8,7 @@
 
 #include "core/input_error.hpp"
 #include "neighbor/cell_grid.hpp"
+#include "parallel/periodic_images.hpp"
 
 namespace mpdem {
 
@@ -21,17 +22,11 @@ struct Periodic {
     if (!d.bounded) return;
     axis = d.periodic;
     min = d.min;
-    for (int c = 0; c < 3; ++c)
-      if (axis[static_cast<std::size_t>(c)]) period[c] = d.max[c] - d.min[c];
+    period = PeriodicImages(d).period();
   }
   bool on(int c) const { return axis[static_cast<std::size_t>(c)]; }
   // x - y as its nearest image.
-  Vec3 difference(const Vec3& x, const Vec3& y) const {
-    Vec3 d = x - y;
-    for (int c = 0; c < 3; ++c)
-      if (on(c)) d[c] -= period[c] * std::round(d[c] / period[c]);
-    return d;
-  }
+  Vec3 difference(const Vec3& x, const Vec3& y) const { return nearest_image(x - y, period); }
   // x moved into [min, max) along the periodic axes.
   Vec3 wrapped(Vec3 x) const {
     for (int c = 0; c < 3; ++c)

@@ -12,6 +12,7 @@
 #include "contact/bond_making.hpp"
 #include "core/deterministic_sum.hpp"
 #include "core/run_error.hpp"
+#include "parallel/periodic_images.hpp"
 
 namespace mpdem {
 
@@ -33,18 +34,10 @@ Vec3 carried(const Vec3& v, const Vec3& n_new, double spin) {
   return u2 > 0.0 ? u * std::sqrt(len2 / u2) : Vec3{};
 }
 
-// The order of the bonds: by their particles' ids.
-bool by_ids(const BondRecord& a, const BondRecord& b) { return std::pair(a.id_i, a.id_j) < std::pair(b.id_i, b.id_j); }
-
-// The reduced mass (or moment of inertia) of two particles; a fixed one counts as infinite.
-double reduced(double a, double b, bool fixed_a, bool fixed_b) {
-  if (fixed_a) return b;
-  if (fixed_b) return a;
-  return a * b / (a + b);
-}
 }  // namespace
 
-Bonds::Bonds(const Model& model) : model_(model), materials_(model.materials.size()) {
+Bonds::Bonds(const Model& model)
+    : model_(model), period_(PeriodicImages(model.params.domain).period()), materials_(model.materials.size()) {
   laws_.resize(materials_ * materials_);
   for (std::size_t a = 0; a < materials_; ++a)
     for (std::size_t b = 0; b < materials_; ++b)
@@ -57,19 +50,13 @@ BondRecord Bonds::made(const Particles& p, std::size_t a, std::size_t b) const {
   r.id_i = p.id[a];
   r.id_j = p.id[b];
   r.radius = laws_[law_index(p, a, b)].radius_ratio * std::min(p.radius[a], p.radius[b]);
-  const DomainParams& dom = model_.params.domain;
-  Vec3 d = p.x[b] - p.x[a];
-  for (int c = 0; c < 3; ++c) {
-    const double period = dom.periodic[static_cast<std::size_t>(c)] ? dom.max[c] - dom.min[c] : 0.0;  // m
-    if (period > 0.0) d[c] -= period * std::round(d[c] / period);
-  }
-  r.length = norm(d);
+  r.length = norm(nearest_image(p.x[b] - p.x[a], period_));
   return r;
 }
 
 std::size_t Bonds::add(const Particles& p, std::size_t a, std::size_t b) {
   const BondRecord r = made(p, a, b);
-  const auto at = std::lower_bound(bonds_.begin(), bonds_.end(), r, by_ids);
+  const auto at = std::lower_bound(bonds_.begin(), bonds_.end(), r, bond_before);
   const std::size_t k = static_cast<std::size_t>(at - bonds_.begin());
   bonds_.insert(at, r);
   ii_.clear();  // looked up again at the next evaluation
@@ -80,7 +67,7 @@ std::size_t Bonds::add(const Particles& p, std::size_t a, std::size_t b) {
 
 void Bonds::make(const Particles& p) {
   for (const MadeBond& m : make_bonds(model_, p)) bonds_.push_back(made(p, m.i, m.j));
-  std::sort(bonds_.begin(), bonds_.end(), by_ids);
+  std::sort(bonds_.begin(), bonds_.end(), bond_before);
   ii_.clear();
   jj_.clear();
   latched_.clear();
@@ -123,7 +110,7 @@ void Bonds::resolve(const Particles& p) {
   }
 }
 
-BondStats Bonds::evaluate(Particles& p, const EvalRequest& req, const Vec3& period) {
+BondStats Bonds::evaluate(Particles& p, const EvalRequest& req) {
   BondStats st;
   if (bonds_.empty()) return st;
   if (!resolved(p)) resolve(p);
@@ -145,9 +132,7 @@ BondStats Bonds::evaluate(Particles& p, const EvalRequest& req, const Vec3& peri
             continue;
           }
           const std::size_t i = ii_[b], j = jj_[b];
-          Vec3 d = p.x[j] - p.x[i];  // m
-          for (int c = 0; c < 3; ++c)
-            if (period[c] > 0.0) d[c] -= period[c] * std::round(d[c] / period[c]);
+          const Vec3 d = nearest_image(p.x[j] - p.x[i], period_);  // m
           const double dist = norm(d);
           const Vec3 nrm = d / dist;
           const BondLaw& law = laws_[law_index(p, i, j)];
@@ -191,7 +176,8 @@ BondStats Bonds::evaluate(Particles& p, const EvalRequest& req, const Vec3& peri
           }
           // Dashpots on the relative motion, each at the ratio zeta of its spring's critical damping.
           const bool fi = p.fixed[i] != 0, fj = p.fixed[j] != 0;
-          const double m = reduced(p.mass[i], p.mass[j], fi, fj), jm = reduced(p.inertia[i], p.inertia[j], fi, fj);
+          const double m = bond_reduced(p.mass[i], p.mass[j], fi, fj);
+          const double jm = bond_reduced(p.inertia[i], p.inertia[j], fi, fj);
           const double vn = dot(vrel, nrm), wn = dot(wrel, nrm);
           const Vec3 vs = vrel - nrm * vn, ws = wrel - nrm * wn;
           const double cn = bond_dashpot(law.damping, m, k.normal), cs = bond_dashpot(law.damping, m, k.shear);
@@ -267,7 +253,7 @@ double Bonds::longest() const {
 }
 
 void Bonds::import_records(std::vector<BondRecord> r) {
-  std::sort(r.begin(), r.end(), by_ids);
+  std::sort(r.begin(), r.end(), bond_before);
   bonds_ = std::move(r);
   ii_.clear();
   jj_.clear();
@@ -275,7 +261,7 @@ void Bonds::import_records(std::vector<BondRecord> r) {
 }
 
 void Bonds::save_records(BinaryWriter& o, std::vector<BondRecord> r) {
-  std::sort(r.begin(), r.end(), by_ids);
+  std::sort(r.begin(), r.end(), bond_before);
   o.vector(r);
 }
 

@@ -39,6 +39,11 @@ struct BondRecord {
 };
 static_assert(sizeof(BondRecord) == 176);
 
+// The bonds' order: by their particles' ids (id_i, then id_j).
+inline bool bond_before(const BondRecord& a, const BondRecord& b) {
+  return a.id_i != b.id_i ? a.id_i < b.id_i : a.id_j < b.id_j;
+}
+
 // How a bond broke: its tensile or its shear stress reached the strength.
 enum class BondBreakMode : std::uint8_t { tension, shear };
 
@@ -75,8 +80,7 @@ class Bonds {
   // a commit evaluation stores the new state, breaks what reaches its strength and records it.
   // Within the trapezoidal rule's iterations (req.iteration > 0) a bond whose trial state passed
   // its strength stays broken for the rest of the step and breaks at its commit.
-  // `period`: the domain's period along each axis (0: not periodic), for the minimum image.
-  BondStats evaluate(Particles& p, const EvalRequest& req, const Vec3& period);
+  BondStats evaluate(Particles& p, const EvalRequest& req);
 
   std::size_t size() const { return bonds_.size(); }
   std::size_t intact() const;
@@ -112,6 +116,7 @@ class Bonds {
   }
 
   const Model& model_;
+  Vec3 period_{};  // m, the domain's period per axis (0: not periodic), for the nearest image
   std::size_t materials_ = 0;
   std::vector<BondLaw> laws_;           // [materials x materials], by the particles' material indices
   std::vector<BondRecord> bonds_;       // [bonds], sorted by (id_i, id_j)

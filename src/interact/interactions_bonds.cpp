@@ -8,11 +8,7 @@ namespace mpdem {
 
 void Interactions::evaluate_bonds(Particles& p, const EvalRequest& req) {
   ScopedTimer timer(times_.other);
-  const DomainParams& d = model_.params.domain;
-  Vec3 period{};  // m, 0 along the axes that are not periodic
-  for (int c = 0; c < 3; ++c)
-    if (d.periodic[static_cast<std::size_t>(c)]) period[c] = d.max[c] - d.min[c];
-  const BondStats s = bonds_->evaluate(p, req, period);
+  const BondStats s = bonds_->evaluate(p, req);
   stats_.bonds_intact = s.intact;
   stats_.bond_energy = s.energy;
   if (!req.commit) return;

@@ -2,10 +2,10 @@
 
 #include <fmt/core.h>
 
-#include <cmath>
 #include <stdexcept>
 #include <unordered_map>
 
+#include "parallel/periodic_images.hpp"
 #include "physics/parallel_bond.hpp"
 
 namespace mpdem {
@@ -25,9 +25,7 @@ BondCells bond_cells(std::span<const BondRecord> bonds, const Particles& p, cons
   for (auto* v : {&c.normal_force, &c.twisting_moment, &c.sigma_max, &c.tau_max, &c.length}) v->reserve(n);
   for (const BondRecord& r : bonds) {
     const Vec3 xi = centre(r.id_i);
-    Vec3 d = centre(r.id_j) - xi;  // m
-    for (int a = 0; a < 3; ++a)
-      if (period[a] > 0.0) d[a] -= period[a] * std::round(d[a] / period[a]);
+    const Vec3 d = nearest_image(centre(r.id_j) - xi, period);  // m
     const BondSection sec = bond_section(r.radius);
     c.from.push_back(xi);
     c.to.push_back(xi + d);

@@ -14,6 +14,7 @@
 // with it (state/bodies.hpp): a member keeps its body's image counter and may lie outside the
 // period by its offset from the centre; its images are chosen as any particle's.
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -32,6 +33,14 @@ namespace mpdem {
 // centre: member_offset (m), the largest such offset, widens the band by as much.
 inline double periodic_image_width(double max_radius, double extra_range, double skin, double member_offset = 0.0) {
   return 2.0 * max_radius + extra_range + 2.0 * skin + member_offset;
+}
+
+// m, the separation d of two centres as its nearest image: whole periods (period, m, per axis;
+// 0 where not periodic, PeriodicImages::period) taken off along the periodic axes.
+inline Vec3 nearest_image(Vec3 d, const Vec3& period) {
+  for (int c = 0; c < 3; ++c)
+    if (period[c] > 0.0) d[c] -= period[c] * std::round(d[c] / period[c]);
+  return d;
 }
 
 class PeriodicImages {

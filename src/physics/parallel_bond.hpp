@@ -65,6 +65,14 @@ inline double bond_critical_step(const BondSprings& k, double reduced_mass, doub
   return 2.0 / std::sqrt(normal > turning ? normal : turning);
 }
 
+// The reduced mass (kg) or moment of inertia (kg m^2) of a bond's two particles, a and b; one
+// that cannot move (held) counts as infinitely heavy.
+inline double bond_reduced(double a, double b, bool a_held, bool b_held) {
+  if (a_held) return b;
+  if (b_held) return a;
+  return a * b / (a + b);
+}
+
 // The dashpot coefficient that damps a spring k between reduced inertia m to the ratio zeta of
 // its critical damping: 2 zeta sqrt(m k).
 inline double bond_dashpot(double zeta, double reduced, double spring) {

@@ -14,9 +14,7 @@ namespace mpdem {
 
 std::vector<BondRecord> Simulation::gathered_bonds() const {
   std::vector<BondRecord> all = gather_values<BondRecord>(*comm_, interactions_->bonds()->records(), 0);
-  std::sort(all.begin(), all.end(), [](const BondRecord& a, const BondRecord& b) {
-    return std::pair(a.id_i, a.id_j) < std::pair(b.id_i, b.id_j);
-  });
+  std::sort(all.begin(), all.end(), bond_before);
   return all;
 }
 

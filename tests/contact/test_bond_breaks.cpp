@@ -203,7 +203,7 @@ struct LatchPair {
     p.v[1] = {v, 0.0, 0.0};
     std::fill(p.force.begin(), p.force.end(), Vec3{});
     std::fill(p.torque.begin(), p.torque.end(), Vec3{});
-    bonds->evaluate(p, EvalRequest{1e-6, 1e-6, 0.5, commit, iteration}, Vec3{});
+    bonds->evaluate(p, EvalRequest{1e-6, 1e-6, 0.5, commit, iteration});
     return p.force[1].x;
   }
 };

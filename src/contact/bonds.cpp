@@ -12,6 +12,7 @@
 #include "contact/bond_making.hpp"
 #include "core/deterministic_sum.hpp"
 #include "core/run_error.hpp"
+#include "model/bond_rules.hpp"
 #include "parallel/periodic_images.hpp"
 
 namespace mpdem {
@@ -37,12 +38,8 @@ Vec3 carried(const Vec3& v, const Vec3& n_new, double spin) {
 }  // namespace
 
 Bonds::Bonds(const Model& model)
-    : model_(model), period_(PeriodicImages(model.params.domain).period()), materials_(model.materials.size()) {
-  laws_.resize(materials_ * materials_);
-  for (std::size_t a = 0; a < materials_; ++a)
-    for (std::size_t b = 0; b < materials_; ++b)
-      laws_[a * materials_ + b] = bond_law(model.params.bonds, model.materials[a].name, model.materials[b].name);
-}
+    : model_(model), period_(PeriodicImages(model.params.domain).period()), materials_(model.materials.size()),
+      laws_(bond_laws(model)) {}
 
 BondRecord Bonds::made(const Particles& p, std::size_t a, std::size_t b) const {
   if (p.id[a] > p.id[b]) std::swap(a, b);

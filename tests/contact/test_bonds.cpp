@@ -130,3 +130,32 @@ TEST(Bonds, HangingPairStretchesMgLOverEA) {
     EXPECT_EQ(sim.interactions().stats().bonds_intact, 1u);
   }
 }
+
+// A pair of a material variant (per-row CSV values make one, model/material_variants.hpp) takes
+// its base material's [[bonds.pair]] entry, in the bonds' force as in their making: a pair
+// entry a-a with E_b = 2 GPa stretches the hanging pair by m g L / (2 GPa A).
+TEST(Bonds, MaterialVariantTakesItsBasesPairEntry) {
+  const double dt = 2e-7, g = 9.81, young = 2e9;
+  Scene s = bonded_scene(dt, Integrator::Verlet, 0.7, 0.04);
+  s.model.params.fields.gravity = {0.0, 0.0, -g};
+  Material variant = s.model.materials.front();
+  variant.name = s.model.materials.front().name + "#1";
+  variant.variant_of = 0;
+  s.model.materials.push_back(variant);
+  BondPairParams pair;
+  pair.material_a = pair.material_b = s.model.materials.front().name;
+  pair.keys.young = young;
+  s.model.params.bonds.pairs.push_back(pair);
+  add_particle(s, 1, kBondR, {0.0, 0.0, 0.0});
+  add_particle(s, 2, kBondR, {0.0, 0.0, -kL});
+  s.particles.fixed[0] = 1;
+  s.particles.material[0] = s.particles.material[1] = 1;  // the variant
+  const double m = s.particles.mass[1];
+  Simulation sim(std::move(s), RunOptions{{}, false, false});
+  ASSERT_EQ(sim.interactions().bonds()->size(), 1u);
+  for (int k = 0; k < 30000; ++k) sim.advance(dt);
+  const Particles& p = sim.particles();
+  const double stretch = -p.x[index_of(p, 2)].z - kL, closed = m * g * kL / (young * kBondArea);
+  std::printf("variant: stretch %.6e m, m g L / (E A) %.6e m, rel %.2e\n", stretch, closed, rel(stretch, closed));
+  EXPECT_LT(rel(stretch, closed), 1e-3);
+}

@@ -97,6 +97,9 @@ class Interactions {
   // open their own parallel regions or need a collective (near field, heat, bonds, clumps,
   // external loads, body forces beyond gravity's kind).
   bool team_ready(const Particles& p) const;
+  // Off: team_ready() is false, so the step keeps a parallel region per pass (for tests that
+  // compare the two, and for measurements). On by default.
+  void set_one_region(bool on) { one_region_ = on; }
   bool team_error() const { return team_error_ != nullptr; }
   std::exception_ptr take_team_error() { return std::exchange(team_error_, nullptr); }
   // Removes the particles whose keep[i] is 0, keeping everyone else's contact history.
@@ -226,6 +229,7 @@ class Interactions {
   PhaseTimes times_;
   std::exception_ptr team_error_;  // what a serial part of evaluate_in_team threw
   bool team_barriers_ = false;     // evaluate_in_team: the barrier contacts have a pass this evaluation
+  bool one_region_ = true;         // see set_one_region
   std::uint64_t mid_step_rebuilds_ = 0;
   RebuildHeapPolicy heap_policy_;  // a rare rebuild's large arrays in mappings of their own
   // m, bound on the particles' displacement since the build at the next evaluation, set by

@@ -14,7 +14,7 @@
 namespace mpdem {
 
 bool Interactions::team_ready(const Particles& p) const {
-  return !comm_ && !near_ && !heat_ && !bonds_ && !p.has_bodies() && external_.empty() &&
+  return one_region_ && !comm_ && !near_ && !heat_ && !bonds_ && !p.has_bodies() && external_.empty() &&
          BodyForces(model_.params.fields).only_first();
 }
 

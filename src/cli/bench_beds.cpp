@@ -18,11 +18,11 @@ namespace mpdem::cli {
 namespace {
 
 // The --cohesion and --bonds values, chosen for the beds' 2 mm spheres (2500 kg/m^3, E = 1e7 Pa,
-// weight m g = 1.03e-4 N): each cohesive contact holds about a sphere's weight, so the bed is
-// cohesive but stays as it settled; the bonds are ~1000x stronger than a settled bed loads them.
+// weight m g = 1.03e-4 N): each cohesive contact holds one to four times a sphere's weight, so the
+// bed is cohesive but stays as it settled; the bonds are ~1000x stronger than a settled bed loads them.
 constexpr double kSurfaceEnergy = 0.05;    // J/m^2, JKR w: pull-off 1.5 pi w r* = 1.15 m g (r* = 0.5 mm)
 constexpr double kCohesionDensity = 5e4;   // J/m^3, SJKR k: overlap at zero load 0.9 um, pull there 1.4 m g
-constexpr double kSurfaceTension = 0.072;  // N/m, water: Willett's force at touching ~2 m g
+constexpr double kSurfaceTension = 0.072;  // N/m, water: Willett's force at touching 2 pi R gamma cos = 4.1 m g
 constexpr double kContactAngle = 20.0;     // deg
 constexpr double kLiquidFraction = 1e-3;   // -, V = phi (V_i + V_j) / 2: rupture gap 0.19 mm
 constexpr double kViscosity = 1e-3;        // Pa s, water

@@ -95,7 +95,7 @@ class Interactions {
   void evaluate_in_team(Particles& p, Barriers& b, const EvalRequest& req, DriftCheck* next);
   // Whether evaluate_in_team can run this scene: one rank, and none of the parts whose passes
   // open their own parallel regions or need a collective (near field, heat, bonds, clumps,
-  // external loads, body forces beyond gravity's kind).
+  // external loads, a body force besides gravity).
   bool team_ready(const Particles& p) const;
   // Off: team_ready() is false, so the step keeps a parallel region per pass (for tests that
   // compare the two, and for measurements). On by default.

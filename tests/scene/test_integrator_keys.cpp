@@ -44,7 +44,7 @@ struct RunResult {
 };
 
 RunResult run_steps(const fs::path& scene, int steps) {
-  Simulation sim(load_scene(scene), RunOptions{.progress = false, .write_output = false});
+  Simulation sim(load_scene(scene), RunOptions{{}, false, false});
   sim.initialize();
   RunResult r;
   for (int k = 0; k < steps; ++k) r.iterations += sim.advance(sim.model().params.time.dt).iterations;

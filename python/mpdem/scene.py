@@ -163,7 +163,7 @@ class Scene:
         return len(self.data[table]) - 1
 
     def time(self, **keys):
-        """[time]: duration (s), dt (s), integrator ("trapezoidal" | "verlet"), adaptive, ..."""
+        """[time]: duration (s), dt (s), integrator ("verlet", the default, | "trapezoidal"), adaptive, ..."""
         return self._set("time", keys)
 
     def tolerance(self, **keys):

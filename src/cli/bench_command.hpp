@@ -4,8 +4,12 @@
 // with e = 0.5, mu = 0.5, no rolling friction), runs untimed relaxation steps, then times steps.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace mpdem::cli {
+
+// The values of --cohesion, "none" first.
+inline const std::vector<std::string> kBenchCohesions = {"none", "jkr", "sjkr", "bridges"};
 
 struct BenchArgs {
   std::filesystem::path data;         // LAMMPS data file (plain text)
@@ -24,6 +28,11 @@ struct BenchArgs {
   // Each sphere of the bed becomes a rigid tetrahedral clump of four overlapping spheres inscribed
   // in the bed's smallest sphere, turned at random (from its id): the clumps' cost per member-step.
   bool clumps = false;
+  // The physics beds (docs/benchmark.md "Physics beds"): "none", "jkr" or "sjkr" (adhesion of the
+  // spheres and walls) or "bridges" (capillary liquid bridges); --bonds: parallel bonds between
+  // the spheres closer than a small gap at the start.
+  std::string cohesion = "none";
+  bool bonds = false;
 };
 
 // Runs the benchmark and prints the results on stdout (a human-readable block and one

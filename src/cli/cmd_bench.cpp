@@ -12,15 +12,12 @@
 #include <filesystem>
 #include <limits>
 
+#include "cli/bench_beds.hpp"
 #include "cli/bench_command.hpp"
 #include "cli/output_folder.hpp"
 #include "io/output_folder.hpp"
 #include "core/input_error.hpp"
 #include "io/lammps_data.hpp"
-#include "model/body_members.hpp"
-#include "physics/clump_mass.hpp"
-#include "scene/clump_reader.hpp"
-#include "core/random.hpp"
 #include "io/vtk_xml.hpp"
 #include "neighbor/neighbor_search.hpp"
 #include "parallel/gather.hpp"
@@ -56,31 +53,6 @@ void add_wall(Barriers& b, std::int64_t& next_id, int group, const Vec3& a, cons
 
 void add_walls(const LammpsData& d, Barriers& b);
 
-// The clump bed (--clumps): at every sphere of the data file a tetrahedral clump of four spheres of
-// radius 0.55 r (r the file's smallest radius) with centres 0.26 r from its centre along the
-// diagonals of a cube (inscribed in the sphere r: no overlaps at the start), turned by a rotation
-// drawn from its id, at rest.
-void add_clump_bed(const LammpsData& d, Scene& s) {
-  double r = std::numeric_limits<double>::infinity();
-  for (const LammpsAtom& at : d.atoms) r = std::min(r, 0.5 * at.diameter);
-  const double a = 0.26 * r, rm = 0.55 * r;  // m
-  ClumpTemplate t;
-  t.name = "tetra";
-  t.shape = clump_mass_properties({{{a, a, a}, rm}, {{a, -a, -a}, rm}, {{-a, a, -a}, rm}, {{-a, -a, a}, rm}});
-  s.model.clumps.push_back(t);
-  s.particles.reserve(4 * d.atoms.size());
-  for (const LammpsAtom& at : d.atoms) {
-    Rng rng(static_cast<std::uint64_t>(at.id));
-    BodyInit init;
-    init.id = at.id;
-    init.x = at.x;
-    init.q = quat_normalized({rng.normal(), rng.normal(), rng.normal(), rng.normal()});  // uniform on SO(3)
-    init.T = s.model.materials.front().temperature;
-    add_body(s.model, 0, 0, init, s.particles);
-  }
-  assign_member_ids(s.particles, "bench");
-}
-
 // The reference scene: particles of the data file, five walls x = lo, hi; y = lo, hi; z = lo
 // (no lid) up to the box top, gravity, Hertz-Mindlin, e = 0.5, mu = 0.5, no rolling friction.
 void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
@@ -95,6 +67,7 @@ void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
   prm.analysis.rotation = true;
   prm.analysis.thermal = false;
   prm.neighbor.skin = a.skin;
+  add_bed_physics(a, prm);  // --cohesion, --bonds
   if (!a.output.empty()) {
     prm.output.particles_every = a.dt * static_cast<double>(a.snapshot_every);
     prm.output.format = vtk_format_from_name(a.format).value();  // the command line checked the name
@@ -159,6 +132,8 @@ long peak_rss_kib() {
 int bench_command(const BenchArgs& args) {
   if (args.integrator != "verlet" && args.integrator != "trapezoidal")
     throw InputError("", 0, "--integrator", "expected \"verlet\" or \"trapezoidal\"");
+  if (std::find(kBenchCohesions.begin(), kBenchCohesions.end(), args.cohesion) == kBenchCohesions.end())
+    throw InputError("", 0, "--cohesion", "expected \"none\", \"jkr\", \"sjkr\" or \"bridges\"");
   if (args.threads < 1) throw InputError("", 0, "--threads", "expected >= 1");
   if (!(args.dt > 0.0) || !(args.skin >= 0.0) || args.relax < 0 || args.steps < 0)
     throw InputError("", 0, "--dt/--skin/--relax/--steps", "expected dt > 0, skin >= 0, relax >= 0, steps >= 0");
@@ -213,6 +188,7 @@ int bench_command(const BenchArgs& args) {
   const double ke = comm.sum(kinetic_energy(sim.particles()));
   const double zmax = comm.max(top(sim.particles()));
   const long rss = static_cast<long>(comm.sum(static_cast<std::uint64_t>(peak_rss_kib())));  // the job's
+  const double bodies = comm.sum(static_cast<double>(sim.particles().bodies.size()));
   const double pairs = comm.sum(static_cast<double>(sim.interactions().search().pairs().num_pairs()));
   const double cross = comm.sum(static_cast<double>(sim.interactions().search().blocks().num_cross()));
   // Where the time goes (s in the timed steps): the slowest rank's parts.
@@ -233,6 +209,8 @@ int bench_command(const BenchArgs& args) {
 
   fmt::print("mpdem bench: {} particles, {} walls (triangles {}), {} ranks x {} threads, {}\n", n, 5,
              sim.barriers().size(), comm.size(), a.threads, integ);
+  if (a.clumps) fmt::print("  clumps: {:.0f} tetrahedral bodies of 4 members (a particle is a member)\n", bodies);
+  if (const std::string physics = bed_physics_summary(a); !physics.empty()) fmt::print("  {}\n", physics);
   fmt::print("  steps: {} untimed + {} timed, dt = {:g} s, skin = {:g} m\n", a.relax, a.steps, a.dt, a.skin);
   fmt::print("  wall time of timed steps   {:.3f} s\n", seconds);
   fmt::print("  throughput                 {:.4g} particle-steps/s\n", seconds > 0 ? psteps / seconds : 0.0);
@@ -244,6 +222,12 @@ int bench_command(const BenchArgs& args) {
              100.0 * cross / std::max(1.0, pairs));
   fmt::print("  contacts per particle      {:.3f} (coordination 2 pp/N; pp/N = {:.3f}, walls/N = {:.3f})\n",
              coordination, pp_per_particle, pb_per_particle);
+  if (a.bonds)
+    fmt::print("  bonds                      {} intact, {} broken; {:.3f} per particle\n", st.bonds_intact,
+               st.bonds_broken, n ? 2.0 * static_cast<double>(st.bonds_intact) / static_cast<double>(n) : 0.0);
+  if (a.cohesion != "none")
+    fmt::print("  cohesion                   {} liquid bridges; broken so far: {} necks, {} bridges\n", st.bridges,
+               st.cohesion_breaks, st.ruptures);
   fmt::print("  final kinetic energy       {:.4g} J, top of bed z = {:.6g} m\n", ke, zmax);
   fmt::print("  peak RSS                   {:.1f} MiB{}\n", static_cast<double>(rss) / 1024.0,
              comm.serial() ? "" : " (sum over the ranks)");
@@ -265,10 +249,12 @@ int bench_command(const BenchArgs& args) {
       "BENCH_RESULT code=mpdem integrator={} ranks={} threads={} particles={} steps={} seconds={:.6f} "
       "psteps_per_s={:.6g} "
       "ns_per_pstep={:.4f} evals_per_step={:.4f} rebuilds={} coordination={:.5f} wall_contacts_per_particle={:.5f} "
-      "ke={:.6g} zmax={:.9g} peak_rss_kib={}\n",
+      "ke={:.6g} zmax={:.9g} peak_rss_kib={} bed={} bodies={:.0f} bonds={} bonds_broken={} bridges={} "
+      "cohesion_breaks={} ruptures={}\n",
       a.integrator == "verlet" ? "verlet" : "trapezoidal", comm.size(), a.threads, n, a.steps, seconds,
       seconds > 0 ? psteps / seconds : 0.0, psteps > 0 ? 1e9 * seconds / psteps : 0.0, evals_per_step, rebuilds,
-      coordination, pb_per_particle, ke, zmax, rss);
+      coordination, pb_per_particle, ke, zmax, rss, bench_bed_name(a), bodies, st.bonds_intact, st.bonds_broken,
+      st.bridges, st.cohesion_breaks, st.ruptures);
   return 0;
 }
 

@@ -62,6 +62,12 @@ int dispatch(int argc, char** argv) {
   bench_cmd->add_flag("--clumps", bench.clumps,
                       "each sphere becomes a clump of 4 overlapping spheres (tetrahedron) inscribed in the bed's "
                       "smallest sphere; particles = members");
+  bench_cmd
+      ->add_option("--cohesion", bench.cohesion,
+                   "none, jkr or sjkr (adhesion of spheres and walls) or bridges (capillary liquid bridges)")
+      ->check(CLI::IsMember(mpdem::cli::kBenchCohesions));
+  bench_cmd->add_flag("--bonds", bench.bonds,
+                      "parallel bonds between the spheres (or members) closer than 10 um at the start");
   bench_cmd->add_option("--snapshot-every", bench.snapshot_every, "steps between particle VTU snapshots (0: none)")
       ->check(CLI::NonNegativeNumber);
   bench_cmd->add_option("--format", bench.format, "VTK format of the snapshots")

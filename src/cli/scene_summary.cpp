@@ -171,9 +171,12 @@ void print_summary(const Scene& scene) {
                rigid == 0 ? "" : (rigid == n ? " (rigid)" : " (" + std::to_string(rigid) + " rigid)"), area);
   }
   print_entries(scene);
-  fmt::print("integrator: {}  phi {}  dt {:.4g} s  duration {:.6g} s  ({} steps)\n",
-             prm.time.integrator == Integrator::Verlet ? "verlet" : "trapezoidal", prm.time.phi, prm.time.dt,
-             prm.time.duration, fixed_step_count(prm.time.duration, prm.time.dt));
+  // phi is the trapezoidal rule's alone (Verlet, the default, refuses the key).
+  const std::string integrator = prm.time.integrator == Integrator::Verlet
+                                     ? std::string("verlet")
+                                     : fmt::format("trapezoidal  phi {}", prm.time.phi);
+  fmt::print("integrator: {}  dt {:.4g} s  duration {:.6g} s  ({} steps)\n", integrator, prm.time.dt, prm.time.duration,
+             fixed_step_count(prm.time.duration, prm.time.dt));
   const TimeStepAdvice a = time_step_advice(scene);
   fmt::print("time step: {}; {}: particle-particle {:.4g} s", rayleigh_text(a), contact_text(a), a.contact_pp);
   if (a.contact_pb > 0.0) fmt::print(", particle-barrier {:.4g} s", a.contact_pb);

@@ -70,8 +70,15 @@ BarrierContacts::BarrierContacts(const ContactTable& table, const Barriers& b)
 }
 
 PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req) {
+  if (!begin(p, b, search, req)) return {};
+#pragma omp parallel if (store_.size() > kParallelThreshold)
+  run_groups(p, b, search, req);
+  return finish(b, req);
+}
+
+bool BarrierContacts::begin(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req) {
   const std::size_t n = p.size();
-  if (b.size() == 0 || n == 0) return {};
+  if (b.size() == 0 || n == 0) return false;
   const BarrierBroadphase& broad = search.barrier_candidates();
   if (broad.size() != n || broad.num_elements() != b.size())
     throw std::logic_error("barrier contacts: the candidate lists do not match the scene");
@@ -104,16 +111,22 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
   // particles, whatever the number of threads, without visiting the particles far from walls.
   // Within a group the particles go through batches (BarrierBatch), whose results are applied in
   // particle and contact order: the same sums as one particle after the other.
+  partial_.resize(store_.groups());
+  direct_ = false;
+  return true;
+}
+
+void BarrierContacts::run_groups(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req) {
+  const BarrierBroadphase& broad = search.barrier_candidates();
+  const std::size_t m = b.size();
+  const bool rotating = b.rotating();
   const std::size_t groups = store_.groups();
   const std::size_t active = store_.size();
-  partial_.resize(groups);
-  bool direct = false;  // the loads went onto the elements during the particle loop
-#pragma omp parallel if (active > kParallelThreshold)
   {
     // One thread visits all particles in order: it can add each contact's load to its element
     // right away, in the order element_loads would (ascending particle), saving that pass.
     const bool serial = omp_get_num_threads() == 1;
-    if (serial) direct = true;
+    if (serial) direct_ = true;
     std::vector<BarrierContact> found;  // per thread, reused by its particles
     found.reserve(kSlots);
     const auto batch = std::make_unique<BarrierBatch>();  // per thread (~40 KB: not on the stack)
@@ -146,16 +159,20 @@ PairStats BarrierContacts::evaluate(Particles& p, Barriers& b, const NeighborSea
       // does not depend on the threads or the schedule (dynamic: a floor element may carry most).
       // In this region, after its particles: one fork and join less per evaluation.
 #pragma omp barrier
-#pragma omp for schedule(dynamic, 1 + m / 256) nowait
+#pragma omp for schedule(dynamic, 1 + m / 256)
       for (std::size_t e = 0; e < m; ++e) element_loads(b, e);
     }
   }
+}
+
+PairStats BarrierContacts::finish(Barriers& b, const EvalRequest& req) {
+  const std::size_t m = b.size();
   BarrierSums sums{};
   for (const auto& s : partial_)
     for (std::size_t c = 0; c < sums.size(); ++c) sums[c] += s[c];
   overflows_ += static_cast<std::uint64_t>(sums[4]);
 
-  if (direct)
+  if (direct_)
     for (std::size_t e = 0; e < m; ++e) b.pressure[e] = element_pressure(b, e);
   if (req.commit) store_.commit();
   PairStats out{static_cast<std::size_t>(sums[0]), sums[1], sums[2], sums[3], sums[5], sums[6], sums[7], sums[8]};

@@ -50,6 +50,12 @@ class BarrierContacts {
 
   // Adds contact forces/torques to the particles and loads to the barriers.
   PairStats evaluate(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req);
+  // evaluate() in three parts, like ParticleContacts': begin() on one thread (false: no barrier
+  // or particle, nothing to do), run_groups() on every thread of the team (or the one thread
+  // outside a region), with a barrier at its end, finish() on one thread.
+  bool begin(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req);
+  void run_groups(Particles& p, Barriers& b, const NeighborSearch& search, const EvalRequest& req);
+  PairStats finish(Barriers& b, const EvalRequest& req);
   // Keeps the history with its particles when they are reordered or removed.
   void permute(const std::vector<std::uint32_t>& order) { store_.permute(order); }
   void compact(const std::vector<char>& keep) { store_.compact(keep); }
@@ -120,6 +126,7 @@ class BarrierContacts {
   std::uint64_t overflows_ = 0;
   double gap_ = 0.0;       // m, see set_gap
   bool cohesive_ = false;  // see set_gap
+  bool direct_ = false;    // this evaluation's loads went onto the elements during the particle loop
 };
 
 }  // namespace mpdem

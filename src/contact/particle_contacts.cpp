@@ -62,6 +62,13 @@ void ParticleContacts::record_contacts(bool on) {
 }
 
 PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req) {
+  begin(p, search, req);
+#pragma omp parallel if (pass_.n > kParallelThreshold)
+  run_blocks(p, search);
+  return finish();
+}
+
+void ParticleContacts::begin(Particles& p, const NeighborSearch& search, const EvalRequest& req) {
   if (!step_start_ && req.phi != 1.0)
     throw std::logic_error("particle contacts: phi < 1 needs the step-start history (trapezoidal integrator)");
   const VerletList& list = search.pairs();
@@ -78,41 +85,41 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   const bool uniform = single_material_ >= 0;
   const auto m0 = static_cast<std::size_t>(uniform ? single_material_ : 0);
 
-  const PairPass pass{p.x.data(),
-                      p.v.data(),
-                      p.w.data(),
-                      p.id.data(),
-                      terms_.data(),
-                      p.inertia.data(),
-                      p.material.data(),
-                      table_.particle_pairs(),
-                      list.offsets().data(),
-                      list.indices().data(),
-                      blocks.first_members().data(),
-                      p.force.data(),
-                      p.torque.data(),
-                      spring_.data(),
-                      vt0_.empty() ? nullptr : vt0_.data(),
-                      wr0_.empty() ? nullptr : wr0_.data(),
-                      slipped_.empty() ? nullptr : slipped_.data(),
-                      cross_force_.data(),
-                      cross_torque_.data(),
-                      table_.materials(),
-                      uniform,
-                      n > 0 ? table_.particle_pair(m0, m0) : PairLaw{},
-                      table_.particle_laws(),
-                      table_.any_rolling(),
-                      req.dt,
-                      req.phi,
-                      req.iteration,
-                      req.commit,
-                      n,
-                      list.num_pairs(),
-                      vector_select_,
-                      recording_ ? records_.data() : nullptr,
-                      state_.empty() ? nullptr : state_.data(),
-                      table_.any_particle_bridges() ? table_.particle_bridges() : nullptr,
-                      state_.empty() ? 0.0 : gap_};
+  pass_ = PairPass{p.x.data(),
+                   p.v.data(),
+                   p.w.data(),
+                   p.id.data(),
+                   terms_.data(),
+                   p.inertia.data(),
+                   p.material.data(),
+                   table_.particle_pairs(),
+                   list.offsets().data(),
+                   list.indices().data(),
+                   blocks.first_members().data(),
+                   p.force.data(),
+                   p.torque.data(),
+                   spring_.data(),
+                   vt0_.empty() ? nullptr : vt0_.data(),
+                   wr0_.empty() ? nullptr : wr0_.data(),
+                   slipped_.empty() ? nullptr : slipped_.data(),
+                   cross_force_.data(),
+                   cross_torque_.data(),
+                   table_.materials(),
+                   uniform,
+                   n > 0 ? table_.particle_pair(m0, m0) : PairLaw{},
+                   table_.particle_laws(),
+                   table_.any_rolling(),
+                   req.dt,
+                   req.phi,
+                   req.iteration,
+                   req.commit,
+                   n,
+                   list.num_pairs(),
+                   vector_select_,
+                   recording_ ? records_.data() : nullptr,
+                   state_.empty() ? nullptr : state_.data(),
+                   table_.any_particle_bridges() ? table_.particle_bridges() : nullptr,
+                   state_.empty() ? 0.0 : gap_};
 
   // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
   const std::size_t nb = blocks.num_blocks();
@@ -132,35 +139,39 @@ PairStats ParticleContacts::evaluate(Particles& p, const NeighborSearch& search,
   block_cost_[0] = 0.0;
   for (std::size_t b = 0; b < nb; ++b) block_cost_[b + 1] = block_cost_[b] + block_seconds_[b];
   block_sums_.resize(nb);
-  const auto cost_before = [&](std::size_t b) { return block_cost_[b]; };
-#pragma omp parallel if (n > kParallelThreshold)
-  {
-    const int threads = omp_get_num_threads(), r = omp_get_thread_num();
-    const std::size_t b1 = balanced_split(r + 1, threads, nb, cost_before);
-    double t0 = omp_get_wtime();
-    for (std::size_t b = balanced_split(r, threads, nb, cost_before); b < b1; ++b) {
-      block_sums_[b] = contact_block(pass, blocks.block_begin(b), blocks.block_end(blocks.block_begin(b)),
-                                     blocks.cross_base(b), blocks.cross_base(b + 1));
-      const double t1 = omp_get_wtime();
-      block_seconds_[b] = t1 - t0;
-      t0 = t1;
-    }
-    // 2. Once every block is done: the second members' shares of the cross pairs, each in
-    // ascending cross index (in this region: one fork and join less per evaluation).
-    const auto& members = blocks.cross_particles();
-#pragma omp barrier
-#pragma omp for schedule(static) nowait
-    for (std::size_t mb = 0; mb < members.size(); ++mb) {
-      Vec3 f{}, t{};
-      for (std::uint32_t c : blocks.entries(mb)) {
-        f += cross_force_[c];
-        t += cross_torque_[c];
-      }
-      p.force[members[mb]] += f;
-      p.torque[members[mb]] += t;
-    }
-  }
+}
 
+void ParticleContacts::run_blocks(Particles& p, const NeighborSearch& search) {
+  const PairBlocks& blocks = search.blocks();
+  const std::size_t nb = blocks.num_blocks();
+  const auto cost_before = [&](std::size_t b) { return block_cost_[b]; };
+  const int threads = omp_get_num_threads(), r = omp_get_thread_num();
+  const std::size_t b1 = balanced_split(r + 1, threads, nb, cost_before);
+  double t0 = omp_get_wtime();
+  for (std::size_t b = balanced_split(r, threads, nb, cost_before); b < b1; ++b) {
+    block_sums_[b] = contact_block(pass_, blocks.block_begin(b), blocks.block_end(blocks.block_begin(b)),
+                                   blocks.cross_base(b), blocks.cross_base(b + 1));
+    const double t1 = omp_get_wtime();
+    block_seconds_[b] = t1 - t0;
+    t0 = t1;
+  }
+  // 2. Once every block is done: the second members' shares of the cross pairs, each in
+  // ascending cross index (in the same region as the blocks: one fork and join less).
+  const auto& members = blocks.cross_particles();
+#pragma omp barrier
+#pragma omp for schedule(static)
+  for (std::size_t mb = 0; mb < members.size(); ++mb) {
+    Vec3 f{}, t{};
+    for (std::uint32_t c : blocks.entries(mb)) {
+      f += cross_force_[c];
+      t += cross_torque_[c];
+    }
+    p.force[members[mb]] += f;
+    p.torque[members[mb]] += t;
+  }
+}
+
+PairStats ParticleContacts::finish() {
   // 3. Totals in block order (independent of the thread count).
   PairStats st;
   deepest_ = OverlapReport{};

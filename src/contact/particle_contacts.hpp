@@ -67,6 +67,13 @@ class ParticleContacts {
 
   // Adds contact forces and torques to p.force / p.torque; list must be current for p.x.
   PairStats evaluate(Particles& p, const NeighborSearch& search, const EvalRequest& req);
+  // evaluate() in three parts, for a step that runs its passes in one parallel region
+  // (Interactions::evaluate_in_team): begin() on one thread; run_blocks() on every thread of the
+  // team (outside a region: on the one thread, which then does all blocks), with a barrier at
+  // its end; finish() on one thread, the totals.
+  void begin(Particles& p, const NeighborSearch& search, const EvalRequest& req);
+  void run_blocks(Particles& p, const NeighborSearch& search);
+  PairStats finish();
 
   // The contact history across a neighbour rebuild, keyed by the particles' indices before it:
   // taken out before the particles are permuted or removed and the list is rebuilt ...
@@ -141,6 +148,7 @@ class ParticleContacts {
   std::vector<double> block_seconds_;      // [blocks] s, each block's time at the last evaluation
   std::vector<double> block_cost_;         // [blocks + 1] s, their sum before each block (thread shares)
   OverlapReport deepest_;
+  PairPass pass_{};  // the evaluation begin() set up, which run_blocks() runs
   bool vector_select_ = true;
   bool recording_ = false;
   std::vector<PairRecord> records_;  // [pairs] while recording: the last evaluation's contacts

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <exception>
 
 #include "core/deterministic_sum.hpp"
 #include "core/parallel.hpp"
@@ -53,22 +54,36 @@ void kick_range(Vec3* __restrict v, Vec3* __restrict w, const Vec3* __restrict f
     for (std::size_t i = lo; i < hi; ++i) w[i] += ((kFixed && fixed[i] ? 0.0 : half) / I[i]) * t[i];
 }
 
+// The first half kick and drift as orphaned work-sharing loops: every thread of a team calls it
+// (or one thread outside a region). fast: shared, zero on entry (the fast rotations' count).
 template <bool kRotation, bool kFixed>
-void kick_drift(Particles& p, const std::uint8_t* fixed, double dt) {
+void kick_drift_in_team(Particles& p, const std::uint8_t* fixed, double dt, std::size_t& fast) {
   constexpr std::size_t kChunk = 1024;  // particles per call
   const std::size_t n = p.size(), chunks = (n + kChunk - 1) / kChunk;
-  std::size_t fast = 0;
-#pragma omp parallel for schedule(static) reduction(+ : fast) if (n > kParallelThreshold)
+  std::size_t mine = 0;
+#pragma omp for schedule(static) nowait
   for (std::size_t c = 0; c < chunks; ++c)
-    fast += kick_drift_range<kRotation, kFixed>(p.x.data(), p.v.data(), p.w.data(), p.q.data(), p.force.data(),
+    mine += kick_drift_range<kRotation, kFixed>(p.x.data(), p.v.data(), p.w.data(), p.q.data(), p.force.data(),
                                                 p.torque.data(), p.mass.data(), p.inertia.data(), fixed, c * kChunk,
                                                 std::min(n, (c + 1) * kChunk), dt);
+#pragma omp atomic
+  fast += mine;
+#pragma omp barrier
   if (fast == 0) return;
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+#pragma omp for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 th = dt * p.w[i];
     if (!(norm2(th) < kSeriesAngle2)) p.q[i] = rotate_by_increment(p.q[i], th);
   }
+}
+
+void kick_drift_in_team(Particles& p, bool rotation, bool any_fixed, const std::uint8_t* held, double dt,
+                        std::size_t& fast) {
+  if (rotation)
+    any_fixed ? kick_drift_in_team<true, true>(p, held, dt, fast) : kick_drift_in_team<true, false>(p, held, dt, fast);
+  else
+    any_fixed ? kick_drift_in_team<false, true>(p, held, dt, fast)
+              : kick_drift_in_team<false, false>(p, held, dt, fast);
 }
 
 }  // namespace
@@ -84,42 +99,60 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
   if (bodies) p.bodies.index_members(p);
   const bool any_fixed = bodies || p.any_fixed();
   const std::uint8_t* held = bodies ? p.bodies.held.data() : p.fixed.data();
-  if (rotation) any_fixed ? kick_drift<true, true>(p, held, dt) : kick_drift<true, false>(p, held, dt);
-  else any_fixed ? kick_drift<false, true>(p, held, dt) : kick_drift<false, false>(p, held, dt);
-  if (bodies) bodies_kick_drift(p, model_.clumps, dt, rotation);
-  if (thermal) {
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-    for (std::size_t i = 0; i < n; ++i)
-      p.T[i] += dt * p.heat[i] / (p.mass[i] * model_.materials[static_cast<std::size_t>(p.material[i])].heat_capacity);
-    if (bodies) bodies_heat(p, model_.materials, dt);
-  }
-  f.evaluate(p, b, EvalRequest{t + dt, dt, policy().phi, true});
-  if (bodies) {
-    p.bodies.index_members(p);  // a rebuild within the evaluation keeps the order, but checks it
-    bodies_kick(p, model_.clumps, dt, rotation);
-  }
+  const EvalRequest req{t + dt, dt, policy().phi, true};
   // Second kick, with the health scan of the end state (integrate/health_scan.hpp) and the next step's
   // neighbour-list check (the drift of a step of the same length) in the same pass.
   const FieldParams& fields = params_.fields;
   const DomainParams& domain = params_.domain;
-  const Interactions::DriftCheck next = f.next_drift_check(p, b, dt);
-  const auto sums = deterministic_block_sums<kScanSums + 1>(
-      n, [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums + 1>& acc) {
-        // A block at a time: the kick vectorises, and the scan then reads what is still in cache.
-        const std::uint8_t* fixed = any_fixed ? held : nullptr;
-        if (any_fixed)
-          kick_range<true>(p.v.data(), p.w.data(), p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(),
-                           fixed, lo, hi, half, rotation);
-        else
-          kick_range<false>(p.v.data(), p.w.data(), p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(),
-                            fixed, lo, hi, half, rotation);
-        if (next.x_build)
-          acc[kScanSums] += static_cast<double>(drift_beyond(p.x.data(), next.x_build, p.v.data(), p.force.data(),
-                                                             p.mass.data(), fixed, lo, hi, dt, next.lim2));
-        std::array<double, kScanSums> s{};
-        scan_range(p, lo, hi, fields, domain, s);
-        for (int k = 0; k < kScanSums; ++k) acc[k] += s[k];
-      });
+  Interactions::DriftCheck next;
+  const auto kick_scan = [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums + 1>& acc) {
+    // A block at a time: the kick vectorises, and the scan then reads what is still in cache.
+    const std::uint8_t* fixed = any_fixed ? held : nullptr;
+    if (any_fixed)
+      kick_range<true>(p.v.data(), p.w.data(), p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(), fixed,
+                       lo, hi, half, rotation);
+    else
+      kick_range<false>(p.v.data(), p.w.data(), p.force.data(), p.torque.data(), p.mass.data(), p.inertia.data(), fixed,
+                        lo, hi, half, rotation);
+    if (next.x_build)
+      acc[kScanSums] += static_cast<double>(drift_beyond(p.x.data(), next.x_build, p.v.data(), p.force.data(),
+                                                         p.mass.data(), fixed, lo, hi, dt, next.lim2));
+    std::array<double, kScanSums> s{};
+    scan_range(p, lo, hi, fields, domain, s);
+    for (int k = 0; k < kScanSums; ++k) acc[k] += s[k];
+  };
+  std::size_t fast = 0;  // particles whose rotation increment is too large for the series
+  scan_blocks_.resize(sum_blocks(n));
+  if (!bodies && !thermal && n > kParallelThreshold && f.team_ready(p)) {
+    // The whole step as one parallel region: its threads wake once, not once per pass.
+#pragma omp parallel
+    {
+      kick_drift_in_team(p, rotation, any_fixed, held, dt, fast);
+      f.evaluate_in_team(p, b, req, &next);
+      if (!f.team_error()) block_sums_in_team<kScanSums + 1>(n, scan_blocks_, kick_scan);
+    }
+    if (f.team_error()) std::rethrow_exception(f.take_team_error());
+  } else {
+#pragma omp parallel if (n > kParallelThreshold)
+    kick_drift_in_team(p, rotation, any_fixed, held, dt, fast);
+    if (bodies) bodies_kick_drift(p, model_.clumps, dt, rotation);
+    if (thermal) {
+#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
+      for (std::size_t i = 0; i < n; ++i)
+        p.T[i] += dt * p.heat[i] /
+                  (p.mass[i] * model_.materials[static_cast<std::size_t>(p.material[i])].heat_capacity);
+      if (bodies) bodies_heat(p, model_.materials, dt);
+    }
+    f.evaluate(p, b, req);
+    if (bodies) {
+      p.bodies.index_members(p);  // a rebuild within the evaluation keeps the order, but checks it
+      bodies_kick(p, model_.clumps, dt, rotation);
+    }
+    next = f.next_drift_check(p, b, dt);
+#pragma omp parallel if (n > kParallelThreshold)
+    block_sums_in_team<kScanSums + 1>(n, scan_blocks_, kick_scan);
+  }
+  const auto sums = block_total<kScanSums + 1>(scan_blocks_);
   std::array<double, kScanSums> scan{};
   std::copy_n(sums.begin(), kScanSums, scan.begin());
   if (bodies) scan_bodies(p, fields, domain, scan);

@@ -3,8 +3,10 @@
 // LAMMPS use. Velocity-dependent forces (damping, Lorentz) see the half-step velocity, and the
 // tangential spring increment uses the velocity of the evaluated state (phi = 1 in (64)).
 // Temperature is advanced with explicit Euler.
+#include <array>
 #include <vector>
 
+#include "integrate/health_scan.hpp"
 #include "interact/step_policy.hpp"
 #include "integrate/step_report.hpp"
 #include "model/params.hpp"
@@ -26,6 +28,9 @@ class VerletIntegrator {
  private:
   const Model& model_;
   const Params& params_;
+  // [blocks of core/deterministic_sum.hpp] the second kick's pass: each block's scan sums and
+  // count of drifts beyond the next step's limit (J, J, J, J, -, -, -).
+  std::vector<std::array<double, kScanSums + 1>> scan_blocks_;
 };
 
 }  // namespace mpdem

@@ -228,6 +228,48 @@ bool Interactions::rebuild_due(const Particles& p, const Barriers& b, double dt)
 void Interactions::force_rebuild(Particles& p, const Barriers& b, bool reorder) { rebuild(p, b, reorder); }
 
 void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
+  prepare_evaluation(p, b, req);
+  double field_power = 0.0;  // W, dissipated by the body forces (interact/body_forces.hpp)
+  {
+    ScopedTimer timer(times_.fields);
+    field_power = start_accumulators(p);
+    external_.add_to(p);
+  }
+  if (near_) {
+    ScopedTimer timer(times_.other);
+    stats_.near_field_energy = near_->evaluate(p, *search_);
+  }
+  PairStats pp, pb;
+  {
+    ScopedTimer timer(times_.pairs);
+    pp = particle_contacts_->evaluate(p, *search_, req);
+  }
+  {
+    ScopedTimer timer(times_.barriers);
+    pb = barrier_contacts_->evaluate(p, b, *search_, req);
+  }
+  if (comm_) {
+    ScopedTimer timer(times_.exchange);
+    reduce_barrier_loads(b);
+  }
+  if (heat_) {
+    ScopedTimer timer(times_.other);
+    const HeatFlows h = heat_->evaluate(p, b, *search_);
+    if (req.commit) commit_heat(h, req);
+  }
+  if (bonds_) evaluate_bonds(p, req);
+  {
+    ScopedTimer timer(times_.exchange);
+    search_->fold_ghosts(p);  // what the periodic images received goes to their sources
+  }
+  if (p.has_bodies()) {
+    ScopedTimer timer(times_.other);
+    field_power += sum_onto_bodies(p, model_.params.fields, heat_ != nullptr);
+  }
+  book_evaluation(p, b, req, pp, pb, field_power);
+}
+
+void Interactions::prepare_evaluation(Particles& p, Barriers& b, const EvalRequest& req) {
   next_drift_.valid = false;  // the forces change
   b.move_to(req.time);
   table_.build(model_);  // a material or [contact] value edited between steps acts now
@@ -267,44 +309,10 @@ void Interactions::evaluate(Particles& p, Barriers& b, const EvalRequest& req) {
     ScopedTimer timer(times_.exchange);
     search_->refresh_ghosts(p);  // periodic images (or other ranks' particles) take their sources' state
   }
-  double field_power = 0.0;  // W, dissipated by the body forces (interact/body_forces.hpp)
-  {
-    ScopedTimer timer(times_.fields);
-    field_power = start_accumulators(p);
-    external_.add_to(p);
-  }
-  if (near_) {
-    ScopedTimer timer(times_.other);
-    stats_.near_field_energy = near_->evaluate(p, *search_);
-  }
-  PairStats pp, pb;
-  {
-    ScopedTimer timer(times_.pairs);
-    pp = particle_contacts_->evaluate(p, *search_, req);
-  }
-  {
-    ScopedTimer timer(times_.barriers);
-    pb = barrier_contacts_->evaluate(p, b, *search_, req);
-  }
-  if (comm_) {
-    ScopedTimer timer(times_.exchange);
-    reduce_barrier_loads(b);
-  }
-  if (heat_) {
-    ScopedTimer timer(times_.other);
-    const HeatFlows h = heat_->evaluate(p, b, *search_);
-    if (req.commit) commit_heat(h, req);
-  }
-  if (bonds_) evaluate_bonds(p, req);
-  {
-    ScopedTimer timer(times_.exchange);
-    search_->fold_ghosts(p);  // what the periodic images received goes to their sources
-  }
-  if (p.has_bodies()) {
-    ScopedTimer timer(times_.other);
-    field_power += sum_onto_bodies(p, model_.params.fields, heat_ != nullptr);
-  }
+}
 
+void Interactions::book_evaluation(const Particles& p, const Barriers& b, const EvalRequest& req, const PairStats& pp,
+                                   const PairStats& pb, double field_power) {
   stats_.contacts_pp = pp.contacts;
   stats_.contacts_pb = pb.contacts;
   stats_.elastic_energy = pp.elastic_energy + pb.elastic_energy;

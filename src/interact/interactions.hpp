@@ -8,7 +8,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <exception>
 #include <memory>
+#include <utility>
 #include <span>
 #include <vector>
 
@@ -41,6 +43,7 @@ struct OverlapReport;
 class BrickGrid;
 class Communicator;
 class NeighborSearch;
+struct PairStats;
 class ParticleContacts;
 class BarrierContacts;
 class NearFieldForces;
@@ -83,6 +86,22 @@ class Interactions {
   // Never reorders. Should the particles have moved beyond what prepare_step foresaw, it rebuilds
   // the lists in place first (counted by mid_step_rebuilds()).
   void evaluate(Particles& p, Barriers& b, const EvalRequest& req);
+  // The same evaluation with every pass in the caller's parallel region (velocity Verlet's step,
+  // integrate/verlet.cpp): every thread of the team calls it, and it returns to all of them
+  // after a barrier; the serial parts run on one thread (omp single). Only when team_ready(p).
+  // Should a serial part throw, every thread returns at once and team_error() holds what it threw
+  // (to rethrow after the region); it stays set until take_team_error(). next (shared, or null):
+  // set to next_drift_check(p, b, req.dt) before that barrier.
+  void evaluate_in_team(Particles& p, Barriers& b, const EvalRequest& req, DriftCheck* next);
+  // Whether evaluate_in_team can run this scene: one rank, and none of the parts whose passes
+  // open their own parallel regions or need a collective (near field, heat, bonds, clumps,
+  // external loads, a body force besides gravity).
+  bool team_ready(const Particles& p) const;
+  // Off: team_ready() is false, so the step keeps a parallel region per pass (for tests that
+  // compare the two, and for measurements). On by default.
+  void set_one_region(bool on) { one_region_ = on; }
+  bool team_error() const { return team_error_ != nullptr; }
+  std::exception_ptr take_team_error() { return std::exchange(team_error_, nullptr); }
   // Removes the particles whose keep[i] is 0, keeping everyone else's contact history.
   void remove_particles(Particles& p, const Barriers& b, const std::vector<char>& keep);
   // Before remove_particles: whether removing them changes the others' rates or the step's
@@ -170,6 +189,14 @@ class Interactions {
  private:
   // force = body forces, torque = heat = 0; returns the power the body forces dissipate (W).
   double start_accumulators(Particles& p) const;
+  // Its pass when the body forces depend on each particle alone (BodyForces::only_first), as an
+  // orphaned work-sharing loop: every thread of a team calls it, or one thread outside a region.
+  void start_first_forces(Particles& p) const;
+  // evaluate()'s serial parts: the lists' safety net and the ghosts' state before the passes,
+  // and the statistics from the passes' totals (field_power: W, the body forces' dissipation).
+  void prepare_evaluation(Particles& p, Barriers& b, const EvalRequest& req);
+  void book_evaluation(const Particles& p, const Barriers& b, const EvalRequest& req, const PairStats& pp,
+                       const PairStats& pb, double field_power);
   void commit_heat(const HeatFlows& h, const EvalRequest& req);
   // The bonds' forces and their statistics (interact/interactions_bonds.cpp).
   void evaluate_bonds(Particles& p, const EvalRequest& req);
@@ -200,6 +227,9 @@ class Interactions {
   InteractionStats stats_;
   ExternalLoads external_;
   PhaseTimes times_;
+  std::exception_ptr team_error_;  // what a serial part of evaluate_in_team threw
+  bool team_barriers_ = false;     // evaluate_in_team: the barrier contacts have a pass this evaluation
+  bool one_region_ = true;         // see set_one_region
   std::uint64_t mid_step_rebuilds_ = 0;
   RebuildHeapPolicy heap_policy_;  // a rare rebuild's large arrays in mappings of their own
   // m, bound on the particles' displacement since the build at the next evaluation, set by

@@ -26,12 +26,8 @@ double Interactions::start_accumulators(Particles& p) const {
     })[0];
   }
   if (forces.only_first()) {
-#pragma omp parallel for schedule(static) if (n > kParallelThreshold)
-    for (std::size_t i = 0; i < n; ++i) {
-      p.force[i] = forces.first_force(p, i);
-      p.torque[i] = Vec3{};
-      if (thermal) p.heat[i] = 0.0;
-    }
+#pragma omp parallel if (n > kParallelThreshold)
+    start_first_forces(p);
     return 0.0;
   }
   // W, the dissipative entries' power, summed in fixed blocks (independent of the thread count).
@@ -42,6 +38,18 @@ double Interactions::start_accumulators(Particles& p) const {
       if (thermal) p.heat[i] = 0.0;
     }
   })[0];
+}
+
+void Interactions::start_first_forces(Particles& p) const {
+  const BodyForces forces(model_.params.fields);
+  const bool thermal = heat_ != nullptr;
+  const std::size_t n = p.size();
+#pragma omp for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    p.force[i] = forces.first_force(p, i);
+    p.torque[i] = Vec3{};
+    if (thermal) p.heat[i] = 0.0;
+  }
 }
 
 }  // namespace mpdem

@@ -25,7 +25,8 @@ enum class Integrator { Trapezoidal, Verlet };
 
 struct TimeParams {
   double duration = 0.0;  // s, simulated time to run (required, > 0)
-  Integrator integrator = Integrator::Trapezoidal;
+  // Velocity Verlet unless [time] integrator = "trapezoidal" (the thesis's rule).
+  Integrator integrator = Integrator::Verlet;
   double phi = 0.5;             // -, trapezoidal weight in [0, 1] (0 explicit, 1 implicit)
   double dt = 0.0;              // s, (initial) time step (required, > 0)
   double dt_min = 0.0;          // s, adaptive lower bound (default dt / 1000)

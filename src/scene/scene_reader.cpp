@@ -31,6 +31,7 @@
 #include "scene/bond_reader.hpp"
 #include "scene/clump_reader.hpp"
 #include "scene/input_paths.hpp"
+#include "scene/trapezoidal_keys.hpp"
 
 namespace mpdem {
 
@@ -47,6 +48,7 @@ void read_time(const TomlSection& root, TimeParams& t) {
     else if (*name == "verlet") t.integrator = Integrator::Verlet;
     else s->fail("integrator", "expected \"trapezoidal\" or \"verlet\", got \"" + *name + "\"");
   }
+  if (t.integrator == Integrator::Verlet) refuse_trapezoidal_keys(root, *s);
   s->get("phi", t.phi, kUnitInterval);
   t.dt_min = s->number("dt_min", kPositive).value_or(t.dt / 1000.0);
   t.dt_max = s->number("dt_max", kPositive).value_or(t.dt);

@@ -177,12 +177,19 @@ void Simulation::resume_from(const std::filesystem::path& file) {
     // arrays are compared with this scene's (which would only say that counts differ).
     read("scene_fingerprint", [&](BinaryReader& s) {
       const std::string differs = fingerprint_difference(load_fingerprint(s), fingerprint_);
-      if (!differs.empty())
+      if (!differs.empty()) {
+        // A scene that ran the trapezoidal rule by default (before velocity Verlet became it).
+        const std::string hint =
+            differs.find("time.integrator") != std::string::npos
+                ? " A scene without [time] integrator runs velocity Verlet; one written for the trapezoidal rule "
+                  "by default needs integrator = \"trapezoidal\"."
+                : "";
         throw InputError(scene_.file.empty() ? name : scene_.file.string(), 0, "",
                          fmt::format("cannot resume from the checkpoint '{}': it was written for another scene - this "
-                                     "scene differs from that one in its {}. Resume with the scene the checkpoint "
+                                     "scene differs from that one in its {}.{} Resume with the scene the checkpoint "
                                      "was written for, or start a new run; editable on resume: {} (docs/output.md)",
-                                     name, differs, kEditableOnResume));
+                                     name, differs, hint, kEditableOnResume));
+      }
     });
     read("run", [&](BinaryReader& s) {
       for_each_counter(time_, steps_, evaluations_, removed_, redone_, dt_, last_balance_, last_active_,

@@ -43,10 +43,12 @@ TEST(Cli, WrongType) {
 }
 
 TEST(Cli, OutOfRange) {
-  expect_bad_input("phi", scene_text("[time]\nduration = 0.01\ndt = 1e-5\nphi = 1.5\n"), kParticles,
-                   "scene.toml:4: 'time.phi'", "[0, 1]");
-  expect_bad_input("dtbounds", scene_text("[time]\nduration = 0.01\ndt = 1e-5\ndt_min = 1e-4\ndt_max = 1e-6\n"),
-                   kParticles, "scene.toml", "dt_min");
+  expect_bad_input("phi", scene_text("[time]\nduration = 0.01\ndt = 1e-5\nphi = 1.5\nintegrator = \"trapezoidal\"\n"),
+                   kParticles, "scene.toml:4: 'time.phi'", "[0, 1]");
+  expect_bad_input(
+      "dtbounds",
+      scene_text("[time]\nduration = 0.01\ndt = 1e-5\ndt_min = 1e-4\ndt_max = 1e-6\nintegrator = \"trapezoidal\"\n"),
+      kParticles, "scene.toml", "dt_min");
   expect_bad_input("poisson",
                    "[time]\nduration = 0.01\ndt = 1e-5\n[[material]]\nname = \"m\"\npoisson = 0.5\n"
                    "[[particles]]\nfile = \"p.csv\"\n",

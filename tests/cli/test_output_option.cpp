@@ -12,9 +12,9 @@ TEST(OutputOption, RelativeToTheWorkingFolderAndTheSceneFolder) {
   fs::create_directories(d / "case");
   fs::create_directories(d / "work");
   write_text(d / "case" / "p.csv", "id,x,y,z,radius\n1,0,0,0.01,0.001\n");
-  write_text(d / "case" / "scene.toml",
-             "[time]\nduration = 1e-4\ndt = 1e-5\n\n[[material]]\nname = \"glass\"\n\n[[particles]]\nfile = "
-             "\"p.csv\"\n\n[output]\ndir = \"from_scene\"\n");
+  write_text(d / "case" / "scene.toml", "[time]\nduration = 1e-4\ndt = 1e-5\nintegrator = "
+                                        "\"trapezoidal\"\n\n[[material]]\nname = \"glass\"\n\n[[particles]]\nfile = "
+                                        "\"p.csv\"\n\n[output]\ndir = \"from_scene\"\n");
   const CommandResult option = run_mpdem("run ../case/scene.toml --quiet --output from_option", d / "work");
   EXPECT_EQ(option.status, 0) << option.err;
   EXPECT_TRUE(fs::exists(d / "work" / "from_option" / "log.csv"));

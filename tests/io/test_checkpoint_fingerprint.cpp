@@ -187,6 +187,26 @@ TEST(CheckpointFingerprint, ChangedContactLawOrIntegratorIsRefused) {
   expect_refused(gravity, {"physics (gravity.vector)"});
 }
 
+// A checkpoint of a scene that ran the trapezoidal rule by default (before velocity Verlet became
+// the default), resumed with that scene unchanged: refused, saying what the scene now runs.
+TEST(CheckpointFingerprint, ResumeAcrossTheNewDefaultIntegratorSaysWhy) {
+  test::TempDir d("fingerprint");
+  Files old_default;
+  old_default.scene = replaced(kScene, "integrator = \"verlet\"", "integrator = \"trapezoidal\"");
+  write(d, old_default);
+  {
+    Simulation first = loaded(d);
+    advance(first, 20);
+    first.write_checkpoint(d.path / "ck.bin");
+  }
+  Files unnamed;
+  unnamed.scene = replaced(kScene, "integrator = \"verlet\"\n", "");
+  write(d, unnamed);
+  const std::string msg = test::error_of([&] { loaded(d).resume_from(d.path / "ck.bin"); });
+  test::expect_contains(msg, {"time integration (time.integrator)", "without [time] integrator runs velocity Verlet",
+                              "needs integrator = \"trapezoidal\""});
+}
+
 // Liquid bridges belong to the contact laws: a changed [liquid_bridge] key or an entry's
 // liquid_bridge table is refused naming it; scenes without bridges keep their items.
 TEST(CheckpointFingerprint, ChangedLiquidBridgeIsRefused) {

@@ -140,7 +140,7 @@ def test_bonds_table_from_the_builder(tmp_path):
 
 def test_no_bonds_without_the_table():
     s = mpdem.Scene()
-    s.time(duration=1e-3, dt=1e-6)
+    s.time(duration=1e-3, dt=1e-6, integrator="trapezoidal")
     s.material("glass", density=RHO, young=1e8, poisson=0.3)
     s.particles([[0.0, 0.0, 0.0], [ELL, 0.0, 0.0]], R, id=[1, 2], material="glass")
     sim = mpdem.Simulation(s, threads=1, write_output=False)

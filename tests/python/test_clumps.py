@@ -200,7 +200,7 @@ def test_a_scene_without_clumps_has_no_bodies(tmp_path):
 def test_the_builder_writes_clump_templates(tmp_path):
     make(tmp_path)  # the CSV files
     s = mpdem.Scene(dir=tmp_path)
-    s.time(duration=0.1, dt=DT).gravity([0.0, 0.0, G]).material("glass", density=RHO, young=1e7, poisson=0.3)
+    s.time(duration=0.1, dt=DT, integrator="trapezoidal").gravity([0.0, 0.0, G]).material("glass", density=RHO, young=1e7, poisson=0.3)
     s.clump("dumbbell", [[0.0, -R, 0.0, R], [0.0, R, 0.0, R]])
     s.particles(file="bodies.csv", clump="dumbbell", material="glass")
     s.domain(min=[-0.1, -0.1, -0.1], max=[0.1, 0.1, 0.1])

@@ -20,7 +20,7 @@ def willett(gap):
 
 def two_spheres(**bridge):
     s = mpdem.Scene()
-    s.time(duration=1.0, dt=1e-5)
+    s.time(duration=1.0, dt=1e-5, integrator="trapezoidal")
     s.gravity([0.0, 0.0, 0.0])
     s.checks(max_overlap=0.0)
     s.material("glass", density=2500.0, young=1e7, poisson=0.3)

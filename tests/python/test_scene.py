@@ -92,3 +92,42 @@ def test_scene_keys_unknown_to_the_builder_pass_through(tmp_path):
     s.neighbor(skin=2e-4)
     assert "[neighbor]\nskin = 0.0002" in s.to_toml(tmp_path / "n.toml")
     mpdem.Simulation(s, write_output=False).step(3)
+
+
+def coasting_sphere(tmp_path, **integrator):
+    """One sphere coasting against viscous drag, the integrator named or not: 20 steps."""
+    s = mpdem.Scene(dir=tmp_path)
+    s.time(duration=1.0, dt=1e-4, **integrator).gravity([0.0, 0.0, 0.0]).fields(drag=1e-3)
+    s.material("glass", density=2500.0, young=1e7, poisson=0.3)
+    s.particles([[0.0, 0.0, 0.0]], [1e-2], velocity=[[1.0, 0.5, 0.0]], id=[1], material="glass")
+    s.domain(min=[-1.0, -1.0, -1.0], max=[1.0, 1.0, 1.0])
+    sim = mpdem.Simulation(s, threads=1, write_output=False)
+    sim.step(20)
+    return s, sim
+
+
+def test_the_default_integrator_is_verlet(tmp_path):
+    """A Scene that does not name its integrator runs velocity Verlet: bitwise the run that names
+    it, one evaluation a step and no iterations; the trapezoidal rule's run differs."""
+    scene, default = coasting_sphere(tmp_path)
+    assert "integrator" not in scene.data["time"]
+    _, verlet = coasting_sphere(tmp_path, integrator="verlet")
+    _, trapezoidal = coasting_sphere(tmp_path, integrator="trapezoidal")
+    for name in ("position", "velocity"):
+        assert np.array_equal(getattr(default.particles, name), getattr(verlet.particles, name)), name
+    assert default.log()["iterations"] == 0 and default.log()["evaluations_total"] == 21
+    assert trapezoidal.log()["iterations"] > 0
+    assert not np.array_equal(default.particles.velocity, trapezoidal.particles.velocity)
+
+
+def test_trapezoidal_keys_need_the_trapezoidal_rule(tmp_path):
+    """A key only the trapezoidal rule reads is refused when the integrator is (by default) Verlet."""
+    s = mpdem.Scene(dir=tmp_path)
+    s.time(duration=1.0, dt=1e-4, adaptive=True).material("glass", density=2500.0, young=1e7, poisson=0.3)
+    s.particles([[0.0, 0.0, 0.0]], [1e-2], id=[1], material="glass")
+    s.domain(min=[-1.0, -1.0, -1.0], max=[1.0, 1.0, 1.0])
+    with pytest.raises(mpdem.InputError, match='integrator = "trapezoidal"') as e:
+        mpdem.Simulation(s, threads=1, write_output=False)
+    assert e.value.key == "time.adaptive" and 'the default integrator is "verlet"' in str(e.value)
+    s.time(integrator="trapezoidal")
+    mpdem.Simulation(s, threads=1, write_output=False)  # read

@@ -93,10 +93,11 @@ TEST(DerivedSizes, StepCount) {
     return test::error_of([&] { load_scene(scene); });
   };
   expect_contains(error("dt = 1e-300\n"), {"scene.toml:3: 'time.dt'", "1e+300 steps", "at most 2^53"});
-  expect_contains(error("dt = 1e-320\ndt_min = 1e-320\n"), {"scene.toml:3: 'time.dt'", "dt underflows"});
-  expect_contains(error("dt = 1e-5\nadaptive = true\ndt_min = 1e-320\n"),
+  expect_contains(error("dt = 1e-320\ndt_min = 1e-320\nintegrator = \"trapezoidal\"\n"),
+                  {"scene.toml:3: 'time.dt'", "dt underflows"});
+  expect_contains(error("dt = 1e-5\nadaptive = true\ndt_min = 1e-320\nintegrator = \"trapezoidal\"\n"),
                   {"scene.toml:5: 'time.dt_min'", "dt_min underflows"});
-  expect_contains(error("dt = 1e-5\nadaptive = true\ndt_min = 1e-17\n"),
+  expect_contains(error("dt = 1e-5\nadaptive = true\ndt_min = 1e-17\nintegrator = \"trapezoidal\"\n"),
                   {"scene.toml:5: 'time.dt_min'", "1e+17 steps"});
 }
 

@@ -26,7 +26,7 @@ TEST(SceneReader, FullSceneMapsEveryKey) {
   const fs::path scene = d.write("scene.toml", R"(
 [time]
 duration = 2          # an integer where a float is expected
-integrator = "verlet"
+integrator = "trapezoidal"  # the keys below are the trapezoidal rule's
 phi = 0.75
 dt = 1e-4
 dt_min = 1e-6
@@ -139,7 +139,7 @@ progress_every = 5.0
   const Params& p = s.model.params;
   EXPECT_EQ(s.dir, d.path.lexically_normal());
   EXPECT_EQ(p.time.duration, 2.0);
-  EXPECT_EQ(p.time.integrator, Integrator::Verlet);
+  EXPECT_EQ(p.time.integrator, Integrator::Trapezoidal);
   EXPECT_EQ(p.time.phi, 0.75);
   EXPECT_EQ(p.time.dt, 1e-4);
   EXPECT_EQ(p.time.dt_min, 1e-6);
@@ -261,7 +261,7 @@ TEST(SceneReader, DocumentedDefaults) {
   EXPECT_EQ(p.time.dt, 2e-5);
   EXPECT_EQ(p.time.dt_min, 2e-5 / 1000.0);
   EXPECT_EQ(p.time.dt_max, 2e-5);
-  EXPECT_EQ(p.time.integrator, Integrator::Trapezoidal);
+  EXPECT_EQ(p.time.integrator, Integrator::Verlet);
   EXPECT_EQ(p.time.phi, 0.5);
   EXPECT_FALSE(p.time.adaptive);
   EXPECT_EQ(p.time.desired_iterations, 10);
@@ -298,7 +298,8 @@ TEST(SceneReader, DocumentedDefaults) {
 TEST(SceneReader, DtBoundsDefaultAroundAGivenDt) {
   TempDir d("mpdem_scene");
   // Only dt_max given: dt_min still defaults to dt / 1000.
-  const Scene s = parse_scene_file(d.write("scene.toml", "[time]\nduration = 1\ndt = 1e-3\ndt_max = 1e-2\n"));
+  const Scene s = parse_scene_file(
+      d.write("scene.toml", "[time]\nduration = 1\ndt = 1e-3\nintegrator = \"trapezoidal\"\ndt_max = 1e-2\n"));
   EXPECT_EQ(s.model.params.time.dt_min, 1e-6);
   EXPECT_EQ(s.model.params.time.dt_max, 1e-2);
 }

@@ -6,8 +6,10 @@
 
 namespace mpdem::test {
 
+// The trapezoidal rule, as before Verlet became the default: a test that means Verlet says so.
 inline Scene make_scene(double dt, double duration) {
   Scene s;
+  s.model.params.time.integrator = Integrator::Trapezoidal;
   s.model.params.time.dt = dt;
   s.model.params.time.dt_min = dt;
   s.model.params.time.dt_max = dt;

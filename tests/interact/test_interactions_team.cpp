@@ -15,6 +15,7 @@
 #include "core/parallel.hpp"
 #include "interact/interactions.hpp"
 #include "sim/simulation.hpp"
+#include "support/cohesive_scenes.hpp"
 #include "support/dense_granular_scene.hpp"
 
 namespace mpdem {
@@ -27,12 +28,14 @@ struct Final {
   bool one_region = false;  // whether the run's scene took the one-region step
 };
 
-// 5600 spheres falling into an open box (walls: the barrier pass) with rebuilds, velocity Verlet.
-Final run(int threads, bool one_region, int steps) {
+// 5600 spheres falling into an open box (walls: the barrier pass) with rebuilds, velocity Verlet;
+// wet: JKR necks and liquid bridges on every contact (the kernels' cohesive path, a state per pair).
+Final run(int threads, bool one_region, int steps, bool wet = false) {
   omp_set_num_threads(threads);
   const double r0 = 1e-3, dt = 4e-6;
   Scene s = test::dense_scene(20, 20, 14, r0, 0.05, 2.12 * r0, 0.15, 21, dt);
   s.model.params.time.integrator = Integrator::Verlet;
+  if (wet) test::make_wet(s, 0.05, 0.5, 0.072, 1e-3);
   Simulation sim(std::move(s), RunOptions{{}, false, false});
   sim.interactions().set_one_region(one_region);
   for (int k = 0; k < steps; ++k) sim.advance(dt);
@@ -73,6 +76,22 @@ TEST(InteractionsTeam, OneRegionStepGivesTheBitsOfARegionPerPass) {
     EXPECT_EQ(one.stats.damping_dissipated, per_pass.stats.damping_dissipated);
     EXPECT_EQ(one.stats.friction_dissipated, per_pass.stats.friction_dissipated);
   }
+}
+
+TEST(InteractionsTeam, OneRegionStepGivesTheBitsOfARegionPerPassWithCohesion) {
+  const Final one = run(2, true, 300, true);
+  const Final per_pass = run(2, false, 300, true);
+  ASSERT_TRUE(one.one_region);
+  EXPECT_EQ(one.id, per_pass.id);
+  EXPECT_EQ(differing(one.x, per_pass.x), 0u);
+  EXPECT_EQ(differing(one.v, per_pass.v), 0u);
+  EXPECT_EQ(differing(one.w, per_pass.w), 0u);
+  EXPECT_GT(one.stats.bridges, 1000u);  // the cohesive path runs
+  EXPECT_EQ(one.stats.bridges, per_pass.stats.bridges);
+  EXPECT_EQ(one.stats.cohesion_breaks, per_pass.stats.cohesion_breaks);
+  EXPECT_EQ(one.stats.ruptures, per_pass.stats.ruptures);
+  EXPECT_EQ(one.stats.cohesion_dissipated, per_pass.stats.cohesion_dissipated);
+  EXPECT_EQ(one.stats.elastic_energy, per_pass.stats.elastic_energy);
 }
 
 TEST(InteractionsTeam, ASerialPartThatThrowsReachesTheCallerAfterTheRegion) {

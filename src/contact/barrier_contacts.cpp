@@ -122,46 +122,44 @@ void BarrierContacts::run_groups(Particles& p, Barriers& b, const NeighborSearch
   const bool rotating = b.rotating();
   const std::size_t groups = store_.groups();
   const std::size_t active = store_.size();
-  {
-    // One thread visits all particles in order: it can add each contact's load to its element
-    // right away, in the order element_loads would (ascending particle), saving that pass.
-    const bool serial = omp_get_num_threads() == 1;
-    if (serial) direct_ = true;
-    std::vector<BarrierContact> found;  // per thread, reused by its particles
-    found.reserve(kSlots);
-    const auto batch = std::make_unique<BarrierBatch>();  // per thread (~40 KB: not on the stack)
-    // Runs of groups with equal numbers of active particles (those near walls cluster in index).
-    const int threads = omp_get_num_threads(), r = omp_get_thread_num();
-    const auto active_before = [&](std::size_t g) { return store_.group_begin(g); };
-    const std::size_t g1 = balanced_split(r + 1, threads, groups, active_before);
-    for (std::size_t g = balanced_split(r, threads, groups, active_before); g < g1; ++g) {
-      BarrierSums acc{};
-      for (std::size_t k = store_.group_begin(g); k < store_.group_begin(g + 1); ++k) {
-        // Prefetch only (no effect on the results): particle data kAhead ahead, and the candidate
-        // list of the particle half-way, whose offsets were prefetched kAhead / 2 visits ago.
-        if (k + kAhead < active) {
-          prefetch_particle(p, broad, store_.particle(k + kAhead));
-          prefetch_records(store_, k + kAhead);
-        }
-        if (k + kAhead / 2 < active) {
-          const auto c = broad.candidates(store_.particle(k + kAhead / 2));
-          if (!c.empty()) __builtin_prefetch(c.data());
-        }
-        if (!batch->room()) flush(p, serial ? &b : nullptr, req, *batch, acc);
-        if (rotating) collect<true>(k, p, b, broad, req, found, *batch, acc);
-        else collect<false>(k, p, b, broad, req, found, *batch, acc);
+  // One thread visits all particles in order: it can add each contact's load to its element
+  // right away, in the order element_loads would (ascending particle), saving that pass.
+  const bool serial = omp_get_num_threads() == 1;
+  if (serial) direct_ = true;
+  std::vector<BarrierContact> found;  // per thread, reused by its particles
+  found.reserve(kSlots);
+  const auto batch = std::make_unique<BarrierBatch>();  // per thread (~40 KB: not on the stack)
+  // Runs of groups with equal numbers of active particles (those near walls cluster in index).
+  const int threads = omp_get_num_threads(), r = omp_get_thread_num();
+  const auto active_before = [&](std::size_t g) { return store_.group_begin(g); };
+  const std::size_t g1 = balanced_split(r + 1, threads, groups, active_before);
+  for (std::size_t g = balanced_split(r, threads, groups, active_before); g < g1; ++g) {
+    BarrierSums acc{};
+    for (std::size_t k = store_.group_begin(g); k < store_.group_begin(g + 1); ++k) {
+      // Prefetch only (no effect on the results): particle data kAhead ahead, and the candidate
+      // list of the particle half-way, whose offsets were prefetched kAhead / 2 visits ago.
+      if (k + kAhead < active) {
+        prefetch_particle(p, broad, store_.particle(k + kAhead));
+        prefetch_records(store_, k + kAhead);
       }
-      flush(p, serial ? &b : nullptr, req, *batch, acc);
-      partial_[g] = acc;
+      if (k + kAhead / 2 < active) {
+        const auto c = broad.candidates(store_.particle(k + kAhead / 2));
+        if (!c.empty()) __builtin_prefetch(c.data());
+      }
+      if (!batch->room()) flush(p, serial ? &b : nullptr, req, *batch, acc);
+      if (rotating) collect<true>(k, p, b, broad, req, found, *batch, acc);
+      else collect<false>(k, p, b, broad, req, found, *batch, acc);
     }
-    if (!serial) {
-      // Each element's loads summed by one thread, over its users in particle order: the result
-      // does not depend on the threads or the schedule (dynamic: a floor element may carry most).
-      // In this region, after its particles: one fork and join less per evaluation.
+    flush(p, serial ? &b : nullptr, req, *batch, acc);
+    partial_[g] = acc;
+  }
+  if (!serial) {
+    // Each element's loads summed by one thread, over its users in particle order: the result
+    // does not depend on the threads or the schedule (dynamic: a floor element may carry most).
+    // In this region, after its particles: one fork and join less per evaluation.
 #pragma omp barrier
 #pragma omp for schedule(dynamic, 1 + m / 256)
-      for (std::size_t e = 0; e < m; ++e) element_loads(b, e);
-    }
+    for (std::size_t e = 0; e < m; ++e) element_loads(b, e);
   }
 }
 

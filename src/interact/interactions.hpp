@@ -189,8 +189,8 @@ class Interactions {
  private:
   // force = body forces, torque = heat = 0; returns the power the body forces dissipate (W).
   double start_accumulators(Particles& p) const;
-  // Its pass when the body forces depend on each particle alone (BodyForces::only_first), as an
-  // orphaned work-sharing loop: every thread of a team calls it, or one thread outside a region.
+  // Its pass when gravity is the only body force (BodyForces::only_first), as an orphaned
+  // work-sharing loop: every thread of a team calls it, or one thread outside a region.
   void start_first_forces(Particles& p) const;
   // evaluate()'s serial parts: the lists' safety net and the ghosts' state before the passes,
   // and the statistics from the passes' totals (field_power: W, the body forces' dissipation).

@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <span>
 #include <sstream>
+#include <string_view>
 
 #include <fmt/core.h>
 #include <toml++/toml.h>
@@ -74,9 +76,7 @@ void read_time(const TomlSection& root, TimeParams& t) {
 }
 
 void read_tolerance(const TomlSection& root, ToleranceParams& t) {
-  const auto s = root.table("tolerance",
-                            {"position", "velocity", "rotation", "angular_velocity", "temperature", "position_floor",
-                             "velocity_floor", "rotation_floor", "angular_velocity_floor", "temperature_floor"});
+  const auto s = root.table("tolerance", std::span<const std::string_view>(kToleranceKeys));
   if (!s) return;
   s->get("position", t.position, kPositive);
   s->get("velocity", t.velocity, kPositive);

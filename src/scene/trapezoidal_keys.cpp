@@ -10,12 +10,9 @@ namespace mpdem {
 
 namespace {
 
-// Keep in step with read_time and read_tolerance (scene_reader.cpp).
+// Keep in step with read_time (scene_reader.cpp); [tolerance] is all the trapezoidal rule's.
 constexpr std::array<std::string_view, 7> kTimeKeys = {"phi", "adaptive",      "dt_min", "dt_max", "desired_iterations",
                                                        "p",   "max_iterations"};
-constexpr std::array<std::string_view, 10> kToleranceKeys = {
-    "position",       "velocity",       "rotation",       "angular_velocity",       "temperature",
-    "position_floor", "velocity_floor", "rotation_floor", "angular_velocity_floor", "temperature_floor"};
 
 // The key of `keys` present in `s` on the earliest line, if any.
 template <std::size_t N>

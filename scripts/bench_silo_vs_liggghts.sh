@@ -14,6 +14,8 @@
 #   DURATION   simulated discharge time, s (default 0.1: 25 000 steps of 4e-6 s)
 #   RATE_FROM  the discharge rate is the slope of the particle count from this time on, s (default 0.03)
 #   NO_INSTALL=1  do not apt-get install missing LIGGGHTS / Open MPI / GNU time
+#   NO_LEDGER=1   also run MPDEM with [checks] energy_ledger = false, interleaved like the others,
+#                 as the row "mpdem verlet, no ledger"
 #
 # 1. Once: `mpdem mesh funnel` writes the hopper's STL (both codes read it), bench/silo/make_silo.py
 #    a jittered lattice of spheres, and mpdem lets it settle on a closed outlet (a lid, 0.15 s,
@@ -99,14 +101,16 @@ for th in $THREADS; do
     MEMS[liggghts,$th]+=" $(cat "$log".rank* | awk '{s += $1} END {print s}')"
     echo "  liggghts np=$th run $r: $secs s, $(echo "${SAMPLES[liggghts,$th]}" | awk '{print $NF}') ns/particle-step, discharge $rate /s"
 
-    order="new old"; [ $((r % 2)) -eq 0 ] && order="old new"
+    order="new noledger old"; [ $((r % 2)) -eq 0 ] && order="old noledger new"
     for which in $order; do
       exe=$MPDEM; code=verlet
       if [ "$which" = old ]; then [ -n "${MPDEM_OLD:-}" ] || continue; exe=$MPDEM_OLD; code=old_verlet; fi
+      if [ "$which" = noledger ]; then [ "${NO_LEDGER:-0}" = 1 ] || continue; code=verlet_noledger; fi
       dir="$WORK/mpdem_${code}_t${th}_r$r"
       rm -rf "$dir" && mkdir -p "$dir"
       cp "$BED/particles.csv" "$BED/silo.stl" "$dir/"
       scene "$dir/scene.toml" particles.csv "" "$DURATION" out 0
+      [ "$code" = verlet_noledger ] && sed -i 's/^\[checks\]$/[checks]\nenergy_ledger = false/' "$dir/scene.toml"
       env "${MPDEM_OMP_ENV[@]}" /usr/bin/time -v "$exe" run "$dir/scene.toml" --threads "$th" --overwrite \
         > "$dir/run.out" 2> "$dir/run.err"
       secs=$(run_seconds "$dir/run.out" "$dir/run.err")
@@ -122,6 +126,7 @@ for th in $THREADS; do
   done
   CODES="liggghts verlet"
   [ -n "${MPDEM_OLD:-}" ] && CODES="liggghts verlet old_verlet"
+  [ "${NO_LEDGER:-0}" = 1 ] && CODES="${CODES/verlet/verlet verlet_noledger}"
   for code in $CODES; do
     NS[$code,$th]=$(echo "${SAMPLES[$code,$th]}" | median)
     WALL[$code,$th]=$(echo "${WALLS[$code,$th]}" | median)
@@ -139,6 +144,7 @@ for th in $THREADS; do
   for code in $CODES; do
     label=$code; [ "$code" = liggghts ] && label="LIGGGHTS 3.8 (MPI)"; [ "$code" = verlet ] && label="mpdem verlet"
     [ "$code" = old_verlet ] && label="old mpdem verlet"
+    [ "$code" = verlet_noledger ] && label="mpdem verlet, no ledger"
     printf '| %-20s | %7s | %8.2f | %9.1f | %14.0f | %8.1f | %17.2fx |\n' "$label" "$th" "${WALL[$code,$th]}" "${NS[$code,$th]}" \
       "${RATE[$code,$th]}" "$(awk -v k="${RSS[$code,$th]}" 'BEGIN {print k / 1024}')" \
       "$(awk -v a="${NS[$code,$th]}" -v b="${NS[liggghts,$th]}" 'BEGIN {print b / a}')"

@@ -16,6 +16,8 @@
 #   TRAP_RELAX untimed steps of the trapezoidal runs (default: RELAX)
 #   SHARED     folder with the reference inputs (default: ../shared/bench beside the repository)
 #   NO_INSTALL=1  do not apt-get install missing LIGGGHTS / Open MPI / GNU time
+#   NO_LEDGER=1   also run MPDEM's Verlet with --no-energy-ledger ([checks] energy_ledger = false),
+#                 interleaved like the others, as the row "mpdem verlet, no ledger"
 # Exit status 1 when the two codes' contact counts differ by more than 2 %.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
@@ -60,17 +62,23 @@ for bed in "${BEDS[@]}"; do
       REB[liggghts,$th]="-"; EVAL[liggghts,$th]=1
       echo "  liggghts np=$th run $r: $(echo "${SAMPLES[liggghts,$th]}" | awk '{print $NF}') ns/particle-step, contacts/particle ${CONT[liggghts,$th]}"
 
-      for integ in verlet trapezoidal; do
+      CONFIGS="verlet trapezoidal"; [ "${NO_LEDGER:-0}" = 1 ] && CONFIGS="verlet verlet_noledger trapezoidal"
+      for config in $CONFIGS; do
+        integ=${config%_noledger}; extra=()
+        [ "$config" = verlet_noledger ] && extra=(--no-energy-ledger)
         # Alternate which binary runs first after LIGGGHTS (whose MPI job may still be winding down).
         order="new old"; [ $((r % 2)) -eq 0 ] && order="old new"
         for which in $order; do
-          exe=$MPDEM; code=$integ
-          if [ "$which" = old ]; then [ -n "${MPDEM_OLD:-}" ] || continue; exe=$MPDEM_OLD; code=old_$integ; fi
+          exe=$MPDEM; code=$config
+          if [ "$which" = old ]; then
+            [ -n "${MPDEM_OLD:-}" ] && [ ${#extra[@]} -eq 0 ] || continue
+            exe=$MPDEM_OLD; code=old_$integ
+          fi
           log="$WORK/mpdem_${bed}_${code}_t${th}_r$r"
           k=$steps; rx=$RELAX
           [ "$integ" = trapezoidal ] && k=${TRAP_STEPS:-$steps} && rx=${TRAP_RELAX:-$RELAX}
           env "${MPDEM_OMP_ENV[@]}" /usr/bin/time -v "$exe" bench "$data" --integrator "$integ" --phi 0.5 --threads "$th" \
-            --steps "$k" --relax "$rx" > "$log.out" 2> "$log.time"
+            --steps "$k" --relax "$rx" "${extra[@]}" > "$log.out" 2> "$log.time"
           line=$(grep '^BENCH_RESULT' "$log.out")
           SAMPLES[$code,$th]+=" $(echo "$line" | field ns_per_pstep)"
           MEMS[$code,$th]+=" $(peak_kib "$log.time")"
@@ -83,6 +91,7 @@ for bed in "${BEDS[@]}"; do
     done
     CODES="liggghts verlet trapezoidal"
     [ -n "${MPDEM_OLD:-}" ] && CODES="liggghts verlet old_verlet trapezoidal old_trapezoidal"
+    [ "${NO_LEDGER:-0}" = 1 ] && CODES="${CODES/verlet /verlet verlet_noledger }"
     for code in $CODES; do
       NS[$code,$th]=$(echo "${SAMPLES[$code,$th]}" | median)
       RSS[$code,$th]=$(echo "${MEMS[$code,$th]}" | median)
@@ -102,6 +111,7 @@ for bed in "${BEDS[@]}"; do
       label=$code; [ "$code" = liggghts ] && label="LIGGGHTS 3.8 (MPI)"; [ "$code" = verlet ] && label="mpdem verlet"
       [ "$code" = trapezoidal ] && label="mpdem trapezoidal 0.5"
       [ "$code" = old_verlet ] && label="old mpdem verlet"
+      [ "$code" = verlet_noledger ] && label="mpdem verlet, no ledger"
       [ "$code" = old_trapezoidal ] && label="old mpdem trapezoidal"
       printf '| %-22s | %7s | %9.1f | %12.3g | %6.2f | %8s | %9.4f | %8.1f | %14s |\n' "$label" "$th" "$ns" \
         "$(awk -v x="$ns" 'BEGIN {print 1e9 / x}')" "${EVAL[$code,$th]}" "${REB[$code,$th]}" "${CONT[$code,$th]}" \

@@ -33,6 +33,9 @@ struct BenchArgs {
   // the spheres closer than a small gap at the start.
   std::string cohesion = "none";
   bool bonds = false;
+  // The contacts' energy ledger ([checks] energy_ledger); --no-energy-ledger: off, the energy checks
+  // with it, as LIGGGHTS computes no dissipation.
+  bool energy_ledger = true;
 };
 
 // Runs the benchmark and prints the results on stdout (a human-readable block and one

@@ -68,6 +68,7 @@ void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
   prm.analysis.thermal = false;
   prm.neighbor.skin = a.skin;
   add_bed_physics(a, prm);  // --cohesion, --bonds
+  if (!a.energy_ledger) prm.checks.energy_ledger = false, prm.checks.energy_jump = prm.checks.energy_drift = 0.0;
   if (!a.output.empty()) {
     prm.output.particles_every = a.dt * static_cast<double>(a.snapshot_every);
     prm.output.format = vtk_format_from_name(a.format).value();  // the command line checked the name
@@ -212,6 +213,7 @@ int bench_command(const BenchArgs& args) {
   if (a.clumps) fmt::print("  clumps: {:.0f} tetrahedral bodies of 4 members (a particle is a member)\n", bodies);
   if (const std::string physics = bed_physics_summary(a); !physics.empty()) fmt::print("  {}\n", physics);
   fmt::print("  steps: {} untimed + {} timed, dt = {:g} s, skin = {:g} m\n", a.relax, a.steps, a.dt, a.skin);
+  if (!a.energy_ledger) fmt::print("  energy ledger off (--no-energy-ledger): no energy checks\n");
   fmt::print("  wall time of timed steps   {:.3f} s\n", seconds);
   fmt::print("  throughput                 {:.4g} particle-steps/s\n", seconds > 0 ? psteps / seconds : 0.0);
   fmt::print("  cost                       {:.1f} ns/particle-step\n", psteps > 0 ? 1e9 * seconds / psteps : 0.0);

@@ -68,6 +68,8 @@ int dispatch(int argc, char** argv) {
       ->check(CLI::IsMember(mpdem::cli::kBenchCohesions));
   bench_cmd->add_flag("--bonds", bench.bonds,
                       "parallel bonds between the spheres (or members) closer than 10 um at the start");
+  bench_cmd->add_flag("--no-energy-ledger{false}", bench.energy_ledger,
+                      "the contacts' energies only for the logged steps, no energy checks ([checks] energy_ledger)");
   bench_cmd->add_option("--snapshot-every", bench.snapshot_every, "steps between particle VTU snapshots (0: none)")
       ->check(CLI::NonNegativeNumber);
   bench_cmd->add_option("--format", bench.format, "VTK format of the snapshots")

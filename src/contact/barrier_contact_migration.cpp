@@ -1,5 +1,6 @@
-// BarrierContacts' committed history keyed by particle id, for particles that change rank
-// (parallel/halo_exchange.hpp): one record per contact, anchored at its particle.
+// BarrierContacts' committed history outside the evaluations: in the checkpoint, and keyed by
+// particle id for particles that change rank (parallel/halo_exchange.hpp): one record per
+// contact, anchored at its particle.
 #include <algorithm>
 #include <stdexcept>
 #include <unordered_map>
@@ -75,6 +76,16 @@ void BarrierContacts::save_records(BinaryWriter& w, const AttachedRecords& rec, 
   }
   write_store_form(w, std::move(order), rec);
   w.value(overflows);
+}
+
+void BarrierContacts::save(BinaryWriter& w) const {
+  store_.save(w);
+  w.value(overflows_);
+}
+
+void BarrierContacts::restore(BinaryReader& r, std::size_t particles) {
+  store_.restore(r, particles);
+  overflows_ = r.value<std::uint64_t>();
 }
 
 }  // namespace mpdem

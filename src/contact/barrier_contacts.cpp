@@ -57,9 +57,6 @@ template <int write = 0, class T>
   prefetch_bytes<sizeof(BarrierLoad), 1>(store.loads(k));
 }
 
-// Pa, from the summed force on element e.
-double element_pressure(const Barriers& b, std::size_t e) { return -dot(b.force[e], b.current_normal(e)) / b.area[e]; }
-
 }  // namespace
 
 BarrierContacts::BarrierContacts(const ContactTable& table, const Barriers& b)
@@ -364,53 +361,6 @@ void BarrierContacts::flush(Particles& p, Barriers* loads_to, const EvalRequest&
   acc[8] = sum8;
   batch.particles = 0;
   batch.count = 0;
-}
-
-void BarrierContacts::element_loads(Barriers& b, std::size_t e) {
-  std::size_t users = 0;
-  const std::uint32_t* user = store_.element_users(e, users);
-  if (users > 0) {
-    const auto el = static_cast<std::int32_t>(e);
-    const Vec3& centre = centres_[e];
-    Vec3 force = b.force[e], moment = b.moment[e];
-    for (std::size_t u = 0; u < users; ++u) {
-      const BarrierLoad* l = store_.loads(user[u]);
-      const std::size_t used = store_.load_used(user[u]);
-      for (std::size_t c = 0; c < used; ++c)
-        if (l[c].element == el) {
-          force += l[c].force;
-          moment += cross(l[c].point - centre, l[c].force);
-          break;
-        }
-    }
-    b.force[e] = force;
-    b.moment[e] = moment;
-  }
-  b.pressure[e] = element_pressure(b, e);
-}
-
-OverlapReport BarrierContacts::max_overlap(const Particles& p, const Barriers& b) const {
-  OverlapReport r;
-  for (std::size_t k = 0; k < store_.size(); ++k) {
-    const std::size_t i = store_.particle(k);
-    if (i >= p.size()) continue;
-    const BarrierLoad* l = store_.loads(k);
-    for (std::size_t c = 0; c < store_.load_used(k); ++c) {
-      const double ratio = l[c].overlap / p.radius[i];
-      if (ratio > r.ratio) r = {ratio, p.id[i], -1, b.id[static_cast<std::size_t>(l[c].element)]};
-    }
-  }
-  return r;
-}
-
-void BarrierContacts::save(BinaryWriter& w) const {
-  store_.save(w);
-  w.value(overflows_);
-}
-
-void BarrierContacts::restore(BinaryReader& r, std::size_t particles) {
-  store_.restore(r, particles);
-  overflows_ = r.value<std::uint64_t>();
 }
 
 }  // namespace mpdem

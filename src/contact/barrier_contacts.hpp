@@ -40,6 +40,9 @@ namespace mpdem {
 
 struct BarrierBatch;  // contacts evaluated together (contact/barrier_batch.hpp)
 
+// Pa, the pressure on element e from the summed force on it (barrier_contact_loads.cpp).
+double element_pressure(const Barriers& b, std::size_t e);
+
 class BarrierContacts {
  public:
   static constexpr int kSlots = BarrierContactStore::kSlots;  // simultaneous barrier contacts per particle

@@ -84,7 +84,7 @@ MPDEM_SCALAR_LOOPS void gather_history(const PairPass& pass, Batch& b) {
 // kCohesive (PairPass::state): the overlap keeps its sign (negative: a gap), and the law and a
 // liquid bridge act by the contact's formed state (contact/cohesive_contact.hpp), which records
 // what acts now and what broke with the energy it held; scalar, the bridges read through the table.
-template <bool kUniform, class Law, bool kCohesive = false>
+template <bool kUniform, class Law, bool kCohesive = false, bool kEnergy = true>
 void geometry_normal(const PairPass& pass, Batch& b) {
   gather_members<kUniform, kCohesive>(pass, b);
   const PairLaw u = pass.uniform_law;
@@ -120,13 +120,13 @@ void geometry_normal(const PairPass& pass, Batch& b) {
     b.r_star[t] = r;
     b.fn_net[t] = n.fn, b.fn_load[t] = n.fn_limit;
     b.tangential_stiffness[t] = n.k_t, b.tangential_damping[t] = n.d_t;
-    b.normal_energy[t] = n.energy, b.normal_damping[t] = n.damping;
+    if constexpr (kEnergy) b.normal_energy[t] = n.energy, b.normal_damping[t] = n.damping;
   }
 }
 
 // Stage 2: the tangential half of the law (tangential_contact) with the spring increment (64)
 // (Verlet: phi = 1), and the contact's force, torque arm and energy terms (vectorised).
-template <bool kUniform, bool kStepStart, bool kCohesive = false>
+template <bool kUniform, bool kStepStart, bool kCohesive = false, bool kEnergy = true>
 void tangential_stage(const PairPass& pass, Batch& b) {
   gather_history<kStepStart>(pass, b);
   const double dt = pass.dt, phi = pass.phi, dt_phi = pass.dt * pass.phi;
@@ -145,7 +145,7 @@ void tangential_stage(const PairPass& pass, Batch& b) {
     NormalContact n;
     n.fn = b.fn_net[t], n.fn_limit = b.fn_load[t];
     n.k_t = b.tangential_stiffness[t], n.d_t = b.tangential_damping[t];
-    n.energy = b.normal_energy[t], n.damping = b.normal_damping[t];
+    if constexpr (kEnergy) n.energy = b.normal_energy[t], n.damping = b.normal_damping[t];
     ContactResult r = tangential_contact(
         kUniform ? mu_s_u : b.coefficients[kMuS][t], kUniform ? mu_d_u : b.coefficients[kMuD][t],
         kUniform ? form_u : b.spring_form[t], n, {b.s0x[t], b.s0y[t], b.s0z[t]}, nrm, increment, vt, decide);
@@ -159,11 +159,13 @@ void tangential_stage(const PairPass& pass, Batch& b) {
     const Vec3 arm = cross(nrm, r.ft);  // torque r_P x f_t = -R n x f_t on both members (62)
     b.fx[t] = f.x, b.fy[t] = f.y, b.fz[t] = f.z;
     b.ax[t] = arm.x, b.ay[t] = arm.y, b.az[t] = arm.z;
-    b.energy[t] = r.energy;
-    b.damping[t] = r.damping;
-    b.spring_energy_before[t] = r.spring_energy_before;
-    b.spring_energy_after[t] = r.spring_energy;
-    b.tangential_loss[t] = r.tangential_loss;
+    if constexpr (kEnergy) {
+      b.energy[t] = r.energy;
+      b.damping[t] = r.damping;
+      b.spring_energy_before[t] = r.spring_energy_before;
+      b.spring_energy_after[t] = r.spring_energy;
+      b.tangential_loss[t] = r.tangential_loss;
+    }
   }
 }
 
@@ -171,7 +173,7 @@ void tangential_stage(const PairPass& pass, Batch& b) {
 // The sums and the arrays' addresses are local: kept in out and pass, every store to a particle
 // would make the compiler reload them, and each contact's sums would wait for the previous
 // contact's store (a store-to-load chain through memory).
-template <bool kUniform, bool kCohesive = false>
+template <bool kUniform, bool kCohesive = false, bool kEnergy = true>
 void apply(const PairPass& pass, const Batch& b, PairBlockSums& out) {
   const bool rolling = pass.rolling, commit = pass.commit, first_iteration = pass.iteration == 1;
   const double uniform_mu_r = pass.uniform_law.mu_r();
@@ -230,16 +232,18 @@ void apply(const PairPass& pass, const Batch& b, PairBlockSums& out) {
     *fj -= f;
     *tj -= roll + rj * arm;
     s.contacts += kCohesive ? ((b.live[t] & kLawFormed) != 0 ? 1.0 : 0.0) : 1.0;
-    s.elastic_energy += b.energy[t];
-    if constexpr (kCohesive) s.elastic_magnitude += std::abs(b.energy[t]);
-    s.damping_power += b.damping[t];
-    s.rolling_power -= dot(roll, wrel);
-    // Selected values, not a selected address: that would keep the sums in memory.
-    const bool slid = b.slip[t] != 0;
-    s.sliding_loss += slid ? b.tangential_loss[t] : 0.0;
-    s.sticking_loss += slid ? 0.0 : b.tangential_loss[t];
-    s.spring_before += b.spring_energy_before[t];
-    s.spring_after += b.spring_energy_after[t];
+    if constexpr (kEnergy) {
+      s.elastic_energy += b.energy[t];
+      if constexpr (kCohesive) s.elastic_magnitude += std::abs(b.energy[t]);
+      s.damping_power += b.damping[t];
+      s.rolling_power -= dot(roll, wrel);
+      // Selected values, not a selected address: that would keep the sums in memory.
+      const bool slid = b.slip[t] != 0;
+      s.sliding_loss += slid ? b.tangential_loss[t] : 0.0;
+      s.sticking_loss += slid ? 0.0 : b.tangential_loss[t];
+      s.spring_before += b.spring_energy_before[t];
+      s.spring_after += b.spring_energy_after[t];
+    }
     // Divide only for a contact deeper than the deepest so far.
     const double rmin = std::min(ri, rj);
     if (b.overlap[t] > s.deepest.ratio * rmin) s.deepest = {b.overlap[t] / rmin, pass.id[i], pass.id[j]};
@@ -259,16 +263,16 @@ void record_batch(const PairPass& pass, const Batch& b) {
   }
 }
 
-template <bool kUniform, class Law, bool kStepStart, bool kCohesive>
+template <bool kUniform, class Law, bool kStepStart, bool kCohesive, bool kEnergy>
 void run(const PairPass& pass, Batch& b, PairBlockSums& out) {
-  geometry_normal<kUniform, Law, kCohesive>(pass, b);
-  tangential_stage<kUniform, kStepStart, kCohesive>(pass, b);
-  apply<kUniform, kCohesive>(pass, b, out);
+  geometry_normal<kUniform, Law, kCohesive, kEnergy>(pass, b);
+  tangential_stage<kUniform, kStepStart, kCohesive, kEnergy>(pass, b);
+  apply<kUniform, kCohesive, kEnergy>(pass, b, out);
   if (pass.record) record_batch<kCohesive>(pass, b);
   b.count = 0;
 }
 
-template <bool kUniform, class Law, bool kStepStart, bool kCohesive = false>
+template <bool kUniform, class Law, bool kStepStart, bool kCohesive = false, bool kEnergy = true>
 PairBlockSums evaluate_block(const PairPass& pass, std::size_t lo, std::size_t hi, std::size_t cross_first,
                              std::size_t cross_last) {
   PairBlockSums out;
@@ -327,9 +331,9 @@ PairBlockSums evaluate_block(const PairPass& pass, std::size_t lo, std::size_t h
       select_scalar(pass, b, k, cnt, end, c);
 #endif
     }
-    if (b.count + kGroup > kBatch) run<kUniform, Law, kStepStart, kCohesive>(pass, b, out);
+    if (b.count + kGroup > kBatch) run<kUniform, Law, kStepStart, kCohesive, kEnergy>(pass, b, out);
   }
-  if (b.count > 0) run<kUniform, Law, kStepStart, kCohesive>(pass, b, out);
+  if (b.count > 0) run<kUniform, Law, kStepStart, kCohesive, kEnergy>(pass, b, out);
   return out;
 }
 
@@ -341,13 +345,16 @@ PairBlockSums block_for_law(const PairPass& pass, std::size_t lo, std::size_t hi
   if (pass.state)
     return step_start ? evaluate_block<false, Law, true, true>(pass, lo, hi, c0, c1)
                       : evaluate_block<false, Law, false, true>(pass, lo, hi, c0, c1);
+  // Without energies (PairPass::energies): Verlet's steps between the ones whose energies are used.
   if constexpr (!std::is_same_v<Law, MixedLaw>) {
     if (pass.uniform)
-      return step_start ? evaluate_block<true, Law, true>(pass, lo, hi, c0, c1)
-                        : evaluate_block<true, Law, false>(pass, lo, hi, c0, c1);
+      return step_start      ? evaluate_block<true, Law, true>(pass, lo, hi, c0, c1)
+             : pass.energies ? evaluate_block<true, Law, false>(pass, lo, hi, c0, c1)
+                             : evaluate_block<true, Law, false, false, false>(pass, lo, hi, c0, c1);
   }
-  return step_start ? evaluate_block<false, Law, true>(pass, lo, hi, c0, c1)
-                    : evaluate_block<false, Law, false>(pass, lo, hi, c0, c1);
+  return step_start      ? evaluate_block<false, Law, true>(pass, lo, hi, c0, c1)
+         : pass.energies ? evaluate_block<false, Law, false>(pass, lo, hi, c0, c1)
+                         : evaluate_block<false, Law, false, false, false>(pass, lo, hi, c0, c1);
 }
 
 }  // namespace

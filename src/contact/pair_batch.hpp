@@ -91,6 +91,9 @@ struct PairPass {
   std::uint8_t* __restrict state = nullptr;  // [pairs] kLawFormed | kBridgeFormed (cohesive_contact.hpp), committed
   const BridgeLaw* __restrict bridges = nullptr;  // [materials x materials] (ContactTable), or null: none
   double gap = 0.0;                               // m, >= 0, the candidates' reach beyond touching
+  // False: the contacts' energy terms (PairBlockSums' energies and powers) are neither computed nor
+  // summed (a step whose energies nobody reads; the cohesive and trapezoidal kernels always do).
+  bool energies = true;
 };
 
 // True when the build has the AVX-512 candidate selection (bitwise the same as the scalar one).

@@ -44,6 +44,7 @@ struct PairStats {
   std::size_t bridges = 0, breaks = 0, ruptures = 0;
   double cohesion_loss = 0.0;
   double elastic_magnitude = 0.0;  // J, sum of the contacts' |stored energy| (cohesion only)
+  bool energies = true;            // the energy terms above were computed (compute_energies)
 };
 
 // The deepest contact of the last evaluation, relative to the smaller radius.
@@ -100,6 +101,10 @@ class ParticleContacts {
   // (off: none kept); records() are the last evaluation's, for the list it was made on.
   void record_contacts(bool on);
   bool recording() const { return recording_; }
+  // Off: the evaluations that follow neither compute nor sum the contacts' energy terms (PairPass::
+  // energies; [checks] energy_ledger = false, between the steps that write a log row). The
+  // cohesive and trapezoidal kernels compute them always.
+  void compute_energies(bool on) { energies_ = on; }
   const std::vector<PairRecord>& records() const { return records_; }
 
   // The deepest contact of the last evaluation.
@@ -151,6 +156,7 @@ class ParticleContacts {
   PairPass pass_{};  // the evaluation begin() set up, which run_blocks() runs
   bool vector_select_ = true;
   bool recording_ = false;
+  bool energies_ = true;             // see compute_energies
   std::vector<PairRecord> records_;  // [pairs] while recording: the last evaluation's contacts
 };
 

@@ -34,7 +34,18 @@ enum class StatBalance {
   heat  // the thermal balance (heat that left the particles), not the mechanical one
 };
 // When the member has a log.csv column (the optional ones only for the physics the scene uses).
-enum class StatLogged { never, always, near_field, driven_barriers, thermal, dissipative_field, cohesion, bonds };
+// ledger: only with the contacts' energy ledger ([checks] energy_ledger).
+enum class StatLogged {
+  never,
+  always,
+  ledger,
+  near_field,
+  driven_barriers,
+  thermal,
+  dissipative_field,
+  cohesion,
+  bonds
+};
 // Where its column goes among the log's own (docs/output.md "log.csv"): after `removed`; after
 // `potential`; before `total_energy` (the work taken off it); after `total_energy`.
 enum class StatSlot { counts, energies, supplied, heat };
@@ -61,8 +72,8 @@ struct StatInfo {
   /* Hertz + tangential springs at the last evaluation */                                                              \
   X(double, elastic_energy, "J", sum, false, interactions, stored, "elastic", always, energies)                        \
   /* normal dashpots and sticking tangential dashpots; sliding, rolling and the springs' restiffening */               \
-  X(double, damping_dissipated, "J", sum, true, interactions, dissipated, "damping_dissipated", always, energies)      \
-  X(double, friction_dissipated, "J", sum, true, interactions, dissipated, "friction_dissipated", always, energies)    \
+  X(double, damping_dissipated, "J", sum, true, interactions, dissipated, "damping_dissipated", ledger, energies)      \
+  X(double, friction_dissipated, "J", sum, true, interactions, dissipated, "friction_dissipated", ledger, energies)    \
   /* normal dashpots' and rolling resistance's powers at the last commit (the trapezoid's start values) */             \
   X(double, damping_power, "W", sum, false, interactions, none, nullptr, never, energies)                              \
   X(double, rolling_power, "W", sum, false, interactions, none, nullptr, never, energies)                              \

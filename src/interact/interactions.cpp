@@ -315,9 +315,12 @@ void Interactions::book_evaluation(const Particles& p, const Barriers& b, const 
                                    const PairStats& pb, double field_power) {
   stats_.contacts_pp = pp.contacts;
   stats_.contacts_pb = pb.contacts;
-  stats_.elastic_energy = pp.elastic_energy + pb.elastic_energy;
+  // An evaluation without the contacts' energies (compute_energies) keeps the last computed ones.
+  if (pp.energies) {
+    stats_.elastic_energy = pp.elastic_energy + pb.elastic_energy;
+    stats_.elastic_magnitude = pp.elastic_magnitude + pb.elastic_magnitude;
+  }
   stats_.bridges = pp.bridges + pb.bridges;
-  stats_.elastic_magnitude = pp.elastic_magnitude + pb.elastic_magnitude;
   if (req.commit) {
     // Cohesion: what broke held energy the force no longer stores (contact/pair_batch.hpp).
     stats_.cohesion_breaks += pp.breaks + pb.breaks;
@@ -330,13 +333,18 @@ void Interactions::book_evaluation(const Particles& p, const Barriers& b, const 
     // stored energy lost between the last commit and this step's stiffness k_t(delta), with the
     // springs of contacts that ended (the total spring keeps s as k_t changes, the incremental
     // one k_t s: neither keeps 1/2 k_t |s|^2).
-    const double damping = pp.damping_power + pb.damping_power, rolling = pp.rolling_power + pb.rolling_power;
-    const double restiffened = stats_.spring_energy - (pp.spring_before + pb.spring_before);
-    stats_.damping_dissipated += 0.5 * req.dt * (stats_.damping_power + damping) + pp.sticking_loss + pb.sticking_loss;
-    stats_.friction_dissipated += 0.5 * req.dt * (stats_.rolling_power + rolling) + pp.sliding_loss + pb.sliding_loss +
-                                  restiffened;
-    stats_.damping_power = damping;
-    stats_.rolling_power = rolling;
+    // Without the ledger ([checks] energy_ledger = false) the steps between log rows have no terms.
+    if (model_.params.checks.energy_ledger) {
+      const double damping = pp.damping_power + pb.damping_power, rolling = pp.rolling_power + pb.rolling_power;
+      const double restiffened = stats_.spring_energy - (pp.spring_before + pb.spring_before);
+      stats_.damping_dissipated += 0.5 * req.dt * (stats_.damping_power + damping) + pp.sticking_loss +
+                                   pb.sticking_loss;
+      stats_.friction_dissipated += 0.5 * req.dt * (stats_.rolling_power + rolling) + pp.sliding_loss +
+                                    pb.sliding_loss + restiffened;
+      stats_.damping_power = damping;
+      stats_.rolling_power = rolling;
+      stats_.spring_energy = pp.spring_after + pb.spring_after;
+    }
     // The barriers' loads are this evaluation's: the power their motion puts into the particles.
     double drive = 0.0;  // W (0 for a resting element)
     for (std::size_t e = 0; e < b.size(); ++e) drive += b.drive_power(e);
@@ -354,7 +362,6 @@ void Interactions::book_evaluation(const Particles& p, const Barriers& b, const 
                                                               model_.params.analysis.rotation);  // W
     stats_.external_work += 0.5 * req.dt * (stats_.external_power + pushed);
     stats_.external_power = pushed;
-    stats_.spring_energy = pp.spring_after + pb.spring_after;
     stats_.field_dissipated += 0.5 * req.dt * (stats_.field_power + field_power);
     stats_.field_power = field_power;
   }

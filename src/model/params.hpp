@@ -200,6 +200,11 @@ struct CheckParams {
                                //    to kinetic + rotational + elastic energy (0 = off)
   double energy_drift = 0.05;  // -, largest change of the energy balance over the whole run relative
                                //    to the start balance before the end-of-run warning (0 = off)
+  // The contacts' energy ledger (their dissipation booked every step, which the two energy checks
+  // need). false: the contact kernels compute energies only for the steps that write a log row
+  // (`elastic`), the log has no damping_dissipated, friction_dissipated and total_energy, and
+  // energy_jump and energy_drift are off (scene/checks_reader.hpp).
+  bool energy_ledger = true;
 };
 
 // One [[coarse_grain]] entry (docs/output.md "Coarse-grained fields"): fields on a grid (.vti

@@ -29,6 +29,7 @@ GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
   thermal_ = model.params.analysis.thermal;
   bodies_ = !model.clumps.empty();
   bonds_ = model.params.bonds.enabled();
+  ledger_ = model.params.checks.energy_ledger;
   const bool driven = std::any_of(barriers.motion.begin(), barriers.motion.end(),
                                   [](const MotionLaw& m) { return !m.is_static(); });
   const bool cohesion = has_cohesion(model);
@@ -36,6 +37,7 @@ GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
     switch (kStats[k].logged) {
       case StatLogged::never: logged_[k] = false; break;
       case StatLogged::always: logged_[k] = true; break;
+      case StatLogged::ledger: logged_[k] = model.params.checks.energy_ledger; break;
       case StatLogged::near_field: logged_[k] = near_field_enabled(model.params.near_field); break;
       case StatLogged::driven_barriers: logged_[k] = driven; break;
       case StatLogged::thermal: logged_[k] = thermal_; break;
@@ -55,8 +57,8 @@ GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
   if (bonds_) columns_.push_back("bonds_broken_interval");  // after bonds_broken, the last count
   for (const char* c : {"kinetic", "rotational", "potential"}) columns_.push_back(c);
   stat_columns(StatSlot::energies);
-  stat_columns(StatSlot::supplied);  // taken off total_energy
-  columns_.push_back("total_energy");
+  stat_columns(StatSlot::supplied);                 // taken off total_energy
+  if (ledger_) columns_.push_back("total_energy");  // without the ledger, the sum lacks the dissipation
   stat_columns(StatSlot::heat);
   if (thermal_) columns_.push_back("thermal_energy");
   columns_.insert(columns_.end(), open_system_columns.begin(), open_system_columns.end());
@@ -88,7 +90,7 @@ std::vector<double> GlobalLogLayout::values(const GlobalLogRow& r, const Particl
   row.push_back(e.potential + t.electric);  // J, gravitational + electric
   stat_values(StatSlot::energies);
   stat_values(StatSlot::supplied);
-  row.push_back(energy_balance(e, t.electric, s, kLogBalance));
+  if (ledger_) row.push_back(energy_balance(e, t.electric, s, kLogBalance));
   stat_values(StatSlot::heat);
   if (thermal_) row.push_back(t.thermal);
   row.insert(row.end(), r.open_system.begin(), r.open_system.end());

@@ -59,6 +59,7 @@ class GlobalLogLayout {
   bool thermal_ = false;  // log the thermal energy (after the heat exchanged with the outside)
   bool bodies_ = false;   // log the clumps' bodies and members (a scene with clump templates)
   bool bonds_ = false;    // log the bonds broken in the interval (a scene with [bonds])
+  bool ledger_ = true;    // the contacts' energy ledger: total_energy is logged
 };
 
 }  // namespace mpdem

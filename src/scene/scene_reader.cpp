@@ -31,6 +31,7 @@
 #include "model/scene.hpp"
 #include "generate/generated_particles.hpp"
 #include "scene/bond_reader.hpp"
+#include "scene/checks_reader.hpp"
 #include "scene/clump_reader.hpp"
 #include "scene/input_paths.hpp"
 #include "scene/trapezoidal_keys.hpp"
@@ -276,11 +277,7 @@ void read_domain_neighbor_output(const TomlSection& root, Params& p) {
       else s->fail("balance_cost", "expected \"work\" or \"time\", got \"" + *c + "\"");
     }
   }
-  if (const auto s = root.table("checks", {"max_overlap", "energy_jump", "energy_drift"})) {
-    s->get("max_overlap", p.checks.max_overlap, kNonNegative);
-    s->get("energy_jump", p.checks.energy_jump, kNonNegative);
-    s->get("energy_drift", p.checks.energy_drift, kNonNegative);  // checked once, at the end of the run
-  }
+  read_checks(root, p.checks);
   if (const auto s = root.table("output",
                                 {"dir", "particles_every", "barriers_every", "particle_csv_every", "barrier_log_every",
                                  "log_every", "checkpoint_every", "progress_every", "format", "contacts_every",

@@ -9,14 +9,42 @@
 #include "contact/particle_contacts.hpp"
 #include "parallel/gather.hpp"
 #include "core/run_error.hpp"
+#include "integrate/energy_balance.hpp"
+#include "sim/inlets.hpp"
 #include "sim/simulation.hpp"
 
 namespace mpdem {
 
+double Simulation::energy_balance(const HealthScan& s) const {
+  const double inserted = inlets_ ? inlets_->inserted_energy() : 0.0;  // J, what inlets brought in
+  return mpdem::energy_balance(s.energy, s.electric, stats(), BalanceScope{false, inserted, record_.removed_energy});
+}
+
+void Simulation::record_state(const HealthScan& s) {
+  const double balance = energy_balance(s);
+  const double active = active_energy(s.energy, stats().elastic_energy + stats().bond_energy,
+                                      stats().elastic_magnitude);
+  if (!record_.started) {
+    record_.start_balance = balance;
+    record_.start_active = active;
+    record_.started = true;
+  }
+  record_.balance = balance;
+  record_.peak_active = std::max(record_.peak_active, active);
+}
+
+void Simulation::record_overlap(const OverlapReport& r) {
+  if (r.ratio > record_.deepest.ratio) {
+    record_.deepest = r;
+    record_.deepest_time = time_;
+  }
+}
+
 void Simulation::check_energy(const HealthScan& s) {
   const Params& prm = scene_.model.params;
-  // The near field's potential is not in the balance, so its scenes cannot be checked this way.
-  if (!(prm.checks.energy_jump > 0.0) || prm.near_field.cutoff > 0.0) return;
+  // The near field's potential is not in the balance, so its scenes cannot be checked this way;
+  // nor those without the contacts' ledger (a scene built in code may leave energy_jump set).
+  if (!(prm.checks.energy_jump > 0.0) || prm.near_field.cutoff > 0.0 || !prm.checks.energy_ledger) return;
   const ParticleEnergy& e = s.energy;
   const double balance = energy_balance(s);
   const double active = active_energy(e, stats().elastic_energy + stats().bond_energy, stats().elastic_magnitude);

@@ -5,6 +5,9 @@
 # take more than 1.3x the time of 1.
 #
 # Usage: scripts/bench_shared_machine.sh [20k|100k]
+#        SCENE=path/scene.toml scripts/bench_shared_machine.sh   (any scene instead of a bed: `mpdem
+#        run` of it, the time loop's wall time; e.g. the flowing silo that bench_silo_vs_liggghts.sh
+#        writes into its WORK folder)
 # Environment:
 #   MPDEM    mpdem executable (default: build/mpdem)
 #   WORK     scratch folder (default: build/bench-bed)
@@ -13,6 +16,7 @@
 #   ENVS     OpenMP environments to compare, ';'-separated, each a space-separated list of
 #            VAR=value ("-": mpdem's default) (default "-;OMP_WAIT_POLICY=active;OMP_WAIT_POLICY=passive")
 #   SHARED   folder with the beds (default: ../shared/bench beside the repository)
+#   SCENE    a scene file to run instead of a bed (STEPS and RELAX then do not apply)
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 MPDEM="${MPDEM:-$ROOT/build/mpdem}"
@@ -27,10 +31,18 @@ bed="${1:-20k}"
 # shellcheck source=bench_lib.sh
 . "$ROOT/scripts/bench_lib.sh"
 mkdir -p "$WORK"
-data=$(bed_file "$bed" "$WORK" "$SHARED")
+SCENE="${SCENE:-}"
+if [ -z "$SCENE" ]; then data=$(bed_file "$bed" "$WORK" "$SHARED"); fi
 
 run() {  # env (or -), threads: prints the timed seconds
   local e=() ; [ "$1" = "-" ] || read -r -a e <<< "$1"
+  if [ -n "$SCENE" ]; then
+    local out="$WORK/shared_machine_run.out"
+    env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT -u OMP_NUM_THREADS "${e[@]}" \
+      "$MPDEM" run "$SCENE" --threads "$2" --overwrite --output "$WORK/shared_machine_out" > "$out" 2>&1
+    run_seconds "$out"
+    return
+  fi
   env -u OMP_WAIT_POLICY -u GOMP_SPINCOUNT -u OMP_NUM_THREADS "${e[@]}" \
     "$MPDEM" bench "$data" --threads "$2" --steps "$STEPS" --relax "$RELAX" | grep '^BENCH_RESULT' | field seconds
 }
@@ -51,7 +63,8 @@ for r in $(seq 1 "$RUNS"); do
     busy_off
   done
 done
-echo "== bed $bed, $STEPS timed steps, median of $RUNS; busy: one shell busy loop beside the run =="
+if [ -n "$SCENE" ]; then what="scene $SCENE"; else what="bed $bed, $STEPS timed steps"; fi
+echo "== $what, median of $RUNS; busy: one shell busy loop beside the run =="
 printf '%-34s %-5s %10s %10s %12s\n' "OpenMP environment" "load" "1 thread" "2 threads" "2 / 1"
 for e in "${envs[@]}"; do
   for load in idle busy; do

@@ -345,16 +345,16 @@ PairBlockSums block_for_law(const PairPass& pass, std::size_t lo, std::size_t hi
   if (pass.state)
     return step_start ? evaluate_block<false, Law, true, true>(pass, lo, hi, c0, c1)
                       : evaluate_block<false, Law, false, true>(pass, lo, hi, c0, c1);
-  // Without energies (PairPass::energies): Verlet's steps between the ones whose energies are used.
+  // Without energies (PairPass::energies): the evaluations whose energies nobody reads.
+  const auto block = [&]<bool kUniform, bool kStepStart>() {
+    return pass.energies ? evaluate_block<kUniform, Law, kStepStart>(pass, lo, hi, c0, c1)
+                         : evaluate_block<kUniform, Law, kStepStart, false, false>(pass, lo, hi, c0, c1);
+  };
   if constexpr (!std::is_same_v<Law, MixedLaw>) {
     if (pass.uniform)
-      return step_start      ? evaluate_block<true, Law, true>(pass, lo, hi, c0, c1)
-             : pass.energies ? evaluate_block<true, Law, false>(pass, lo, hi, c0, c1)
-                             : evaluate_block<true, Law, false, false, false>(pass, lo, hi, c0, c1);
+      return step_start ? block.template operator()<true, true>() : block.template operator()<true, false>();
   }
-  return step_start      ? evaluate_block<false, Law, true>(pass, lo, hi, c0, c1)
-         : pass.energies ? evaluate_block<false, Law, false>(pass, lo, hi, c0, c1)
-                         : evaluate_block<false, Law, false, false, false>(pass, lo, hi, c0, c1);
+  return step_start ? block.template operator()<false, true>() : block.template operator()<false, false>();
 }
 
 }  // namespace

@@ -92,7 +92,9 @@ struct PairPass {
   const BridgeLaw* __restrict bridges = nullptr;  // [materials x materials] (ContactTable), or null: none
   double gap = 0.0;                               // m, >= 0, the candidates' reach beyond touching
   // False: the contacts' energy terms (PairBlockSums' energies and powers) are neither computed nor
-  // summed (a step whose energies nobody reads; the cohesive and trapezoidal kernels always do).
+  // summed: an evaluation whose energies nobody reads (the trapezoidal rule's iterations; with
+  // [checks] energy_ledger = false, Verlet's steps between log rows). The cohesive kernel always
+  // computes them.
   bool energies = true;
 };
 

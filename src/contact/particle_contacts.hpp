@@ -102,8 +102,9 @@ class ParticleContacts {
   void record_contacts(bool on);
   bool recording() const { return recording_; }
   // Off: the evaluations that follow neither compute nor sum the contacts' energy terms (PairPass::
-  // energies; [checks] energy_ledger = false, between the steps that write a log row). The
-  // cohesive and trapezoidal kernels compute them always.
+  // energies; [checks] energy_ledger = false, between the steps that write a log row). On, the
+  // commits compute them (an iteration of the trapezoidal rule never does); the cohesive kernel
+  // always.
   void compute_energies(bool on) { energies_ = on; }
   const std::vector<PairRecord>& records() const { return records_; }
 

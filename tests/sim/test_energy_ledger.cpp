@@ -32,12 +32,13 @@ struct Logged {
   std::vector<std::vector<double>> rows;  // log.csv
 };
 
-// 5600 spheres falling into an open box (rebuilds, walls), velocity Verlet, 230 steps with a log
-// row every 50 steps and one at the end (230 is not a multiple).
-Logged run(bool ledger, int threads, bool one_region, const TempDir& dir) {
+// 5600 spheres falling into an open box (rebuilds, walls), 230 steps with a log row every 50
+// steps and one at the end (230 is not a multiple).
+Logged run(bool ledger, int threads, bool one_region, const TempDir& dir, Integrator integ = Integrator::Verlet) {
   omp_set_num_threads(threads);
   const double dt = 4e-6;
   Scene s = test::dense_scene(20, 20, 14, 1e-3, 0.05, 2.12e-3, 0.15, 21, dt);
+  s.model.params.time.integrator = integ;
   s.model.params.time.duration = 230 * dt;
   s.model.params.output.log_every = 50;
   s.model.params.checks.energy_ledger = ledger;
@@ -63,32 +64,39 @@ bool has(const std::vector<std::string>& h, const std::string& c) {
   return std::find(h.begin(), h.end(), c) != h.end();
 }
 
+// The trapezoidal rule (its commits: its iterations never compute the energies) and velocity
+// Verlet at 1 and 2 threads, Verlet also with a parallel region per pass.
 TEST(EnergyLedger, OffMovesTheParticlesAndLogsTheSharedColumnsBitForBit) {
-  for (const int threads : {1, 2}) {
-    for (const bool one_region : {true, false}) {
-      SCOPED_TRACE("threads " + std::to_string(threads) + (one_region ? ", one region" : ", a region per pass"));
-      TempDir on_dir("mpdem_ledger_on"), off_dir("mpdem_ledger_off");
-      const Logged on = run(true, threads, one_region, on_dir);
-      const Logged off = run(false, threads, one_region, off_dir);
-      EXPECT_TRUE(same_bits(on.x, off.x));
-      EXPECT_TRUE(same_bits(on.v, off.v));
-      EXPECT_TRUE(same_bits(on.w, off.w));
-      for (const char* c : {"damping_dissipated", "friction_dissipated", "total_energy"}) {
-        EXPECT_TRUE(has(on.header, c)) << c;
-        EXPECT_FALSE(has(off.header, c)) << c;
-      }
-      ASSERT_EQ(on.rows.size(), off.rows.size());
-      ASSERT_EQ(on.rows.size(), 6u);  // t = 0, steps 50, 100, 150, 200, and the end (230)
-      // The ledger's run dissipates (the columns it drops are not zeros), and the bed is in contact.
-      const std::size_t damping = test::index_of(on.header, "damping_dissipated");
-      EXPECT_GT(on.rows.back()[damping], 0.0);
-      const std::size_t elastic_on = test::index_of(on.header, "elastic");
-      EXPECT_GT(on.rows.back()[elastic_on], 0.0);
-      for (std::size_t c = 0; c < off.header.size(); ++c) {
-        const std::size_t k = test::index_of(on.header, off.header[c]);
-        for (std::size_t r = 0; r < off.rows.size(); ++r)
-          EXPECT_EQ(off.rows[r][c], on.rows[r][k]) << off.header[c] << ", row " << r;
-      }
+  struct Case {
+    Integrator integ;
+    int threads;
+    bool one_region;
+  };
+  for (const Case run_case :
+       {Case{Integrator::Verlet, 1, true}, Case{Integrator::Verlet, 2, true}, Case{Integrator::Verlet, 1, false},
+        Case{Integrator::Verlet, 2, false}, Case{Integrator::Trapezoidal, 2, true}}) {
+    const auto [integ, threads, one_region] = run_case;
+    SCOPED_TRACE(std::string(integ == Integrator::Verlet ? "verlet" : "trapezoidal") + ", threads " +
+                 std::to_string(threads) + (one_region ? ", one region" : ", a region per pass"));
+    TempDir on_dir("mpdem_ledger_on"), off_dir("mpdem_ledger_off");
+    const Logged on = run(true, threads, one_region, on_dir, integ);
+    const Logged off = run(false, threads, one_region, off_dir, integ);
+    EXPECT_TRUE(same_bits(on.x, off.x));
+    EXPECT_TRUE(same_bits(on.v, off.v));
+    EXPECT_TRUE(same_bits(on.w, off.w));
+    for (const char* column : {"damping_dissipated", "friction_dissipated", "total_energy"}) {
+      EXPECT_TRUE(has(on.header, column)) << column;
+      EXPECT_FALSE(has(off.header, column)) << column;
+    }
+    ASSERT_EQ(on.rows.size(), off.rows.size());
+    ASSERT_EQ(on.rows.size(), 6u);  // t = 0, steps 50, 100, 150, 200, and the end (230)
+    // The ledger's run dissipates (the columns it drops are not zeros), and the bed is in contact.
+    EXPECT_GT(on.rows.back()[test::index_of(on.header, "damping_dissipated")], 0.0);
+    EXPECT_GT(on.rows.back()[test::index_of(on.header, "elastic")], 0.0);
+    for (std::size_t c = 0; c < off.header.size(); ++c) {
+      const std::size_t k = test::index_of(on.header, off.header[c]);
+      for (std::size_t r = 0; r < off.rows.size(); ++r)
+        EXPECT_EQ(off.rows[r][c], on.rows[r][k]) << off.header[c] << ", row " << r;
     }
   }
 }

@@ -51,6 +51,9 @@ struct RunSummary {
   RunRecord record;
   double drift_limit = 0.0;     // -, checks.energy_drift (0: no warning)
   std::string drift_unchecked;  // why the drift says nothing about the step (empty: it does)
+  // false: [checks] energy_ledger = false, the contacts' dissipation is not in the balance, which
+  // then measures nothing: the summary says so instead of a drift, and nothing warns.
+  bool booked = true;
   // An open system (inlets or sinks): energy enters and leaves after t = 0, so the start balance
   // alone is no measure of it (0 J for a silo filled from empty).
   bool open = false;

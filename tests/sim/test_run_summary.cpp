@@ -105,6 +105,15 @@ TEST(RunRecord, DriftWarningAboveTheThresholdOnly) {
   s.drift_unchecked = "moving barriers do work that is not in the balance";
   EXPECT_EQ(drift_warning(s), "");
   EXPECT_NE(summary_line(s).find("not checked: moving barriers"), std::string::npos) << summary_line(s);
+  // Without the contacts' ledger ([checks] energy_ledger = false) the balance is not booked: no
+  // drift figure, no warning, whatever the numbers.
+  s.drift_unchecked.clear();
+  s.booked = false;
+  EXPECT_EQ(drift_warning(s), "");
+  EXPECT_EQ(summary_line(s).find("drift"), std::string::npos) << summary_line(s);
+  EXPECT_EQ(summary_line(s).rfind("energy balance not booked ([checks] energy_ledger = false); ", 0), 0u)
+      << summary_line(s);
+  s.booked = true;
   // A balance that starts at zero is measured against the kinetic + rotational + elastic energy.
   RunRecord r;
   r.start_active = 2.0;

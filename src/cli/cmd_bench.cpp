@@ -67,8 +67,8 @@ void build_scene(const LammpsData& d, const BenchArgs& a, Scene& s) {
   prm.analysis.rotation = true;
   prm.analysis.thermal = false;
   prm.neighbor.skin = a.skin;
-  add_bed_physics(a, prm);  // --cohesion, --bonds
-  if (!a.energy_ledger) prm.checks.energy_ledger = false, prm.checks.energy_jump = prm.checks.energy_drift = 0.0;
+  add_bed_physics(a, prm);                     // --cohesion, --bonds
+  prm.checks.energy_ledger = a.energy_ledger;  // without it Simulation checks no energy
   if (!a.output.empty()) {
     prm.output.particles_every = a.dt * static_cast<double>(a.snapshot_every);
     prm.output.format = vtk_format_from_name(a.format).value();  // the command line checked the name

@@ -93,8 +93,8 @@ struct PairPass {
   double gap = 0.0;                               // m, >= 0, the candidates' reach beyond touching
   // False: the contacts' energy terms (PairBlockSums' energies and powers) are neither computed nor
   // summed: an evaluation whose energies nobody reads (the trapezoidal rule's iterations; with
-  // [checks] energy_ledger = false, Verlet's steps between log rows). The cohesive kernel always
-  // computes them.
+  // [checks] energy_ledger = false, the steps between log rows). The cohesive kernel computes them
+  // always: with `state`, ParticleContacts sets it true.
   bool energies = true;
 };
 

@@ -121,7 +121,8 @@ void ParticleContacts::begin(Particles& p, const NeighborSearch& search, const E
                    table_.any_particle_bridges() ? table_.particle_bridges() : nullptr,
                    state_.empty() ? 0.0 : gap_};
   // Only a commit books energies (Interactions::book_evaluation): an iteration's are never read.
-  pass_.energies = energies_ && req.commit;
+  // The cohesive kernel computes them always (pair_batch.cpp), so its pass says so.
+  pass_.energies = (energies_ && req.commit) || pass_.state != nullptr;
 
   // 1. Blocks of particles, each by one thread in index order (pair_blocks.hpp, pair_batch.hpp).
   const std::size_t nb = blocks.num_blocks();
@@ -176,7 +177,7 @@ void ParticleContacts::run_blocks(Particles& p, const NeighborSearch& search) {
 PairStats ParticleContacts::finish() {
   // 3. Totals in block order (independent of the thread count).
   PairStats st;
-  st.energies = pass_.energies || pass_.state != nullptr;  // the cohesive kernel's always (pair_batch.cpp)
+  st.energies = pass_.energies;
   deepest_ = OverlapReport{};
   for (const PairBlockSums& s : block_sums_) {
     st.contacts += static_cast<std::size_t>(s.contacts);

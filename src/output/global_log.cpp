@@ -37,7 +37,7 @@ GlobalLogLayout::GlobalLogLayout(const Model& model, const Barriers& barriers,
     switch (kStats[k].logged) {
       case StatLogged::never: logged_[k] = false; break;
       case StatLogged::always: logged_[k] = true; break;
-      case StatLogged::ledger: logged_[k] = model.params.checks.energy_ledger; break;
+      case StatLogged::ledger: logged_[k] = ledger_; break;
       case StatLogged::near_field: logged_[k] = near_field_enabled(model.params.near_field); break;
       case StatLogged::driven_barriers: logged_[k] = driven; break;
       case StatLogged::thermal: logged_[k] = thermal_; break;

@@ -48,9 +48,11 @@ std::string reference_text(const RunSummary& s) {
 
 std::string summary_line(const RunSummary& s) {
   const RunRecord& r = s.record;
-  std::string line = fmt::format("energy balance drift {:+.3g}% {}", 100.0 * energy_drift(s), reference_text(s));
-  if (!s.drift_unchecked.empty()) line += fmt::format(" (not checked: {})", s.drift_unchecked);
-  if (!s.booked) line = "energy balance not booked ([checks] energy_ledger = false)";
+  std::string line = "energy balance not booked ([checks] energy_ledger = false)";
+  if (s.booked) {
+    line = fmt::format("energy balance drift {:+.3g}% {}", 100.0 * energy_drift(s), reference_text(s));
+    if (!s.drift_unchecked.empty()) line += fmt::format(" (not checked: {})", s.drift_unchecked);
+  }
   if (r.deepest.particle < 0) return line + "; no contacts";
   return line + fmt::format("; largest overlap {:.3g}% of the radius between {} at t = {:.9g} s",
                             100.0 * r.deepest.ratio, contact_text(r.deepest), r.deepest_time);

@@ -35,7 +35,9 @@ struct HealthScan {
   std::size_t outside = 0;    // particles outside the domain (0 when it is unbounded)
 };
 
-HealthScan scan_state(const Particles& p, const FieldParams& fields, const DomainParams& domain);
+// energies = false: the particles' energy sums are skipped and stay zero ([checks] energy_ledger =
+// false books no balance); the counts are the same.
+HealthScan scan_state(const Particles& p, const FieldParams& fields, const DomainParams& domain, bool energies = true);
 
 inline constexpr int kScanSums = 6;  // kinetic, rotational, potential, electric, non-finite, outside
 
@@ -43,8 +45,9 @@ inline constexpr int kScanSums = 6;  // kinetic, rotational, potential, electric
 // interleaved lanes (a fixed order, so still independent of the thread count) so that the loop
 // vectorises. Integrators fuse it into their last pass over a block of particles (one pass less
 // of memory traffic per step), with deterministic_block_sums<kScanSums> as in scan_state().
+// energies as in scan_state().
 void scan_range(const Particles& p, std::size_t lo, std::size_t hi, const FieldParams& fields,
-                const DomainParams& domain, std::array<double, kScanSums>& acc);
+                const DomainParams& domain, std::array<double, kScanSums>& acc, bool energies = true);
 
 // The clump bodies' energies (kinetic, rotational, potential: their members add none in
 // scan_range) and non-finite states added to acc; serial, in body order. The potentials take the

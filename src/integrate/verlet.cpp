@@ -104,6 +104,7 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
   // neighbour-list check (the drift of a step of the same length) in the same pass.
   const FieldParams& fields = params_.fields;
   const DomainParams& domain = params_.domain;
+  const bool ledger = params_.checks.energy_ledger;  // without it no energy sum is read (health_scan.hpp)
   Interactions::DriftCheck next;
   const auto kick_scan = [&](std::size_t lo, std::size_t hi, std::array<double, kScanSums + 1>& acc) {
     // A block at a time: the kick vectorises, and the scan then reads what is still in cache.
@@ -118,7 +119,7 @@ StepReport VerletIntegrator::step(Particles& p, Barriers& b, Interactions& f, do
       acc[kScanSums] += static_cast<double>(drift_beyond(p.x.data(), next.x_build, p.v.data(), p.force.data(),
                                                          p.mass.data(), fixed, lo, hi, dt, next.lim2));
     std::array<double, kScanSums> s{};
-    scan_range(p, lo, hi, fields, domain, s);
+    scan_range(p, lo, hi, fields, domain, s, ledger);
     for (int k = 0; k < kScanSums; ++k) acc[k] += s[k];
   };
   std::size_t fast = 0;  // particles whose rotation increment is too large for the series

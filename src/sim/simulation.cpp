@@ -173,7 +173,8 @@ void Simulation::check_state(const StepReport& rep, double h) {
   Particles& p = scene_.particles;
   const Params& prm = scene_.model.params;
   // One pass (or none, when the integrator fused it into its own); culprits searched only if needed.
-  const StepCollective& totals = reduce_step(rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain), h);
+  const StepCollective& totals = reduce_step(
+      rep.scanned ? rep.scan : scan_state(p, prm.fields, prm.domain, prm.checks.energy_ledger), h);
   const HealthScan scan = totals.scan;
   const OverlapReport deepest = totals.deepest;
   if (scan.nonfinite > 0 && comm_) {

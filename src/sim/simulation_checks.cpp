@@ -21,6 +21,8 @@ double Simulation::energy_balance(const HealthScan& s) const {
 }
 
 void Simulation::record_state(const HealthScan& s) {
+  // Without the ledger no balance is booked, and the step's scan summed no energies.
+  if (!scene_.model.params.checks.energy_ledger) return;
   const double balance = energy_balance(s);
   const double active = active_energy(s.energy, stats().elastic_energy + stats().bond_energy,
                                       stats().elastic_magnitude);
